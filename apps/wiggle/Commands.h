@@ -1,0 +1,14 @@
+#pragma once
+// One registration function per subcommand, each in its own file. A command's callback throws
+// wiggle::Error on bad input; main() turns that into a one-line message and exit status 2.
+#include <CLI/CLI.hpp>
+
+namespace wiggle::cli {
+
+void addRunCommand(CLI::App& app);
+void addSweepCommand(CLI::App& app);
+void addModelCommand(CLI::App& app);
+void addPlotCommand(CLI::App& app);
+void addExportLammpsCommand(CLI::App& app);
+
+}  // namespace wiggle::cli

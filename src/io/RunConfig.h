@@ -1,0 +1,84 @@
+#pragma once
+// A run's configuration: one struct per TOML section, one field per key (SPEC 9). The defaults
+// here ARE the embedded default case of `wiggle run` (docs/CONFIG.md lists them with units).
+// Parsing, validation, `--set` overrides and writing back to TOML live in io/Config.h.
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "physics/ContactLaw.h"
+#include "physics/ParticleStore.h"
+
+namespace wiggle {
+
+struct BoxDef {
+  double width = 60.0;        // box.width: W, periodic in x, a whole number [d]
+  double bedHeight = 50.0;    // box.bed_height: target height of the free surface [d]
+  std::uint64_t seed = 1;     // box.seed: seed of the grain diameters and pouring
+};
+
+struct GrainsDef {
+  double dMin = 0.9;          // grains.d_min [d]
+  double dMax = 1.1;          // grains.d_max [d]
+  MassModel massModel = MassModel::Sphere;  // grains.mass_model: "sphere" | "disc"
+};
+
+struct IntruderDef {
+  std::string shape = "disk";  // intruder.shape: disk|square|rect_narrow|rect_wide|triangle|polygon
+  std::vector<std::array<double, 2>> vertices;  // intruder.vertices: outline for "polygon" [d]
+  double angle = 0.0;          // intruder.angle: rotation, counter-clockwise [degrees]
+  double y0 = 25.0;            // intruder.y0: centre height at t = 0 [d]; x0 is the box centre
+  double mass = 0.0;           // intruder.mass: 0 means SPEC 4's default (disk area x mass/area)
+};
+
+struct DriveDef {
+  double amplitude = 3.0;      // drive.amplitude: A [d]
+  double period = 5.0;         // drive.period: T [sqrt(d/g)]
+};
+
+struct BedDef {
+  double batchHeight = 12.0;   // bed.batch_height: height of each poured layer [d]
+  double settleSpeed = 0.05;   // bed.settle_speed: a batch has settled when no grain is faster [sqrt(g d)]
+  double restEnergy = 1e-8;    // bed.rest_energy: final relax until kinetic energy per grain below [m g d]
+  double maxTime = 2000.0;     // bed.max_time: give up making the bed after this simulated time
+  std::string cacheDir;        // bed.cache_dir: where beds are cached ("" = $WIGGLE_CACHE or ~/.cache/wiggle)
+};
+
+struct RunDef {
+  double dt = 1e-4;                // run.dt [sqrt(d/g)]
+  double duration = 100.0;         // run.duration: t_total [sqrt(d/g)]
+  double sampleInterval = 0.05;    // run.sample_interval: trajectory sampling [sqrt(d/g)]
+  double checkpointInterval = 300; // run.checkpoint_interval: wall-clock seconds between checkpoints
+  double dumpInterval = 10.0;      // run.dump_interval: LAMMPS dump frames every ... (0 = none) [sqrt(d/g)]
+  bool plot = true;                // run.plot: draw the run's figures at the end
+};
+
+struct FieldsDef {
+  bool enabled = true;                                  // fields.enabled
+  std::vector<double> phases = {0, 5, 10, 15, 19};      // fields.phases: 10 phi / pi values
+  double radius = 15.0;                                 // fields.radius: half-size of the grid [d]
+  double spacing = 0.5;                                 // fields.spacing: grid spacing [d]
+  double width = 1.0;                                   // fields.width: Gaussian w [d]
+  bool kinetic = false;                                 // fields.kinetic: add the kinetic stress
+};
+
+struct EngineDef {
+  double skin = 0.2;            // engine.skin: Verlet skin of the grain list [d]
+  double intruderSkin = 1.0;    // engine.intruder_skin [d]
+  std::uint64_t sortInterval = 2000;  // engine.sort_interval: steps between spatial re-sorts
+};
+
+struct RunConfig {
+  BoxDef box;
+  GrainsDef grains;
+  ContactParams contact;
+  IntruderDef intruder;
+  DriveDef drive;
+  BedDef bed;
+  RunDef run;
+  FieldsDef fields;
+  EngineDef engine;
+};
+
+}  // namespace wiggle

@@ -1,0 +1,39 @@
+#pragma once
+// The intruder as the engine sees it (SPEC 4): a rigid clump of small atoms that does not rotate.
+// Its horizontal position is prescribed; its vertical position is either held or integrated from
+// the sum of the contact forces on its atoms plus gravity on its total mass. Atoms do not interact
+// with each other. Shapes (how atoms fill an outline) live in scenario/.
+#include <cstdint>
+#include <vector>
+
+namespace wiggle {
+
+struct ClumpDef {
+  std::vector<double> offsetX, offsetY;  // atom centres relative to the clump's centre [d]
+  double atomRadius = 0.25;              // [d]
+  double mass = 0.0;                     // total mass M, used for gravity, inertia and meff [rho d^3]
+};
+
+enum class HorizontalMotion : std::uint8_t {
+  Held,              // x = x0, vx = 0
+  Sinusoid,          // x = x0 + A sin(2 pi t / T), vx = (2 pi A / T) cos(2 pi t / T)
+  ConstantVelocity,  // x = x0 + v t, vx = v
+};
+
+struct ClumpMotion {
+  HorizontalMotion kind = HorizontalMotion::Held;
+  double x0 = 0.0;         // centre of the motion [d]
+  double amplitude = 0.0;  // A [d] (Sinusoid)
+  double period = 1.0;     // T [sqrt(d/g)] (Sinusoid)
+  double velocity = 0.0;   // [sqrt(g d)] (ConstantVelocity)
+  bool verticalFree = false;  // false: y held, vy = 0 (while the bed is made)
+};
+
+struct ClumpState {
+  double x = 0.0, y = 0.0;    // centre [d]
+  double vx = 0.0, vy = 0.0;  // [sqrt(g d)]
+  double contactFx = 0.0;     // sum of contact forces on the atoms [m g]
+  double contactFy = 0.0;
+};
+
+}  // namespace wiggle

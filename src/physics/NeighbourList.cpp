@@ -1,0 +1,180 @@
+#include "physics/NeighbourList.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include <omp.h>
+
+#include "core/Assert.h"
+#include "core/Error.h"
+#include "physics/ParticleStore.h"
+
+namespace wiggle {
+
+namespace {
+
+constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+
+// Particles binned into square-ish cells at least `cutoff` wide, periodic in x.
+struct CellGrid {
+  int nx = 0, ny = 0;
+  double cellWidth = 0, cellHeight = 0, yMin = 0;
+  std::vector<std::uint32_t> cellStart;  // nx * ny + 1
+  std::vector<std::uint32_t> items;      // particle indices, by cell, ascending within a cell
+
+  int cellX(double x) const { return std::clamp(static_cast<int>(x / cellWidth), 0, nx - 1); }
+  int cellY(double y) const { return std::clamp(static_cast<int>((y - yMin) / cellHeight), 0, ny - 1); }
+};
+
+CellGrid binParticles(const ParticleStore& s, double boxWidth, double cutoff) {
+  CellGrid grid;
+  grid.nx = static_cast<int>(std::floor(boxWidth / cutoff));
+  if (grid.nx < 3)
+    throw Error("box width " + std::to_string(boxWidth) + " is too small for the neighbour grid: need at least 3 x " +
+                std::to_string(cutoff));
+  grid.cellWidth = boxWidth / grid.nx;
+  double yMin = std::numeric_limits<double>::infinity(), yMax = -yMin;
+  for (std::uint32_t i = 0; i < s.size(); ++i) {
+    yMin = std::min(yMin, s.y[i]);
+    yMax = std::max(yMax, s.y[i]);
+  }
+  if (s.size() == 0) yMin = yMax = 0.0;
+  const double rows = (yMax - yMin) / cutoff;
+  if (!(rows < 1e7))
+    throw Error("particles spread over a height of " + std::to_string(yMax - yMin) +
+                " d: the simulation has blown up or the input is wrong");
+  grid.yMin = yMin;
+  grid.cellHeight = cutoff;
+  grid.ny = static_cast<int>(rows) + 1;
+  const std::size_t cells = static_cast<std::size_t>(grid.nx) * grid.ny;
+  grid.cellStart.assign(cells + 1, 0);
+  std::vector<std::uint32_t> cellOf(s.size());
+  for (std::uint32_t i = 0; i < s.size(); ++i) {
+    cellOf[i] = static_cast<std::uint32_t>(grid.cellY(s.y[i]) * grid.nx + grid.cellX(s.x[i]));
+    ++grid.cellStart[cellOf[i] + 1];
+  }
+  for (std::size_t c = 0; c < cells; ++c) grid.cellStart[c + 1] += grid.cellStart[c];
+  grid.items.resize(s.size());
+  std::vector<std::uint32_t> fill(grid.cellStart.begin(), grid.cellStart.end() - 1);
+  for (std::uint32_t i = 0; i < s.size(); ++i) grid.items[fill[cellOf[i]]++] = i;
+  return grid;
+}
+
+// Partners j > i of grain i within radI + radJ + skin, appended to `out` in ascending order.
+void findPartners(const ParticleStore& s, const CellGrid& grid, double boxWidth, double skin,
+                  std::uint32_t i, std::vector<std::uint32_t>& out) {
+  const double halfWidth = 0.5 * boxWidth;
+  const std::size_t first = out.size();
+  const int cx = grid.cellX(s.x[i]);
+  const int cy = grid.cellY(s.y[i]);
+  for (int oy = -1; oy <= 1; ++oy) {
+    const int ny = cy + oy;
+    if (ny < 0 || ny >= grid.ny) continue;
+    for (int ox = -1; ox <= 1; ++ox) {
+      const int nx = (cx + ox + grid.nx) % grid.nx;  // nx >= 3: the three columns are distinct
+      const std::size_t cell = static_cast<std::size_t>(ny) * grid.nx + nx;
+      for (std::uint32_t c = grid.cellStart[cell]; c < grid.cellStart[cell + 1]; ++c) {
+        const std::uint32_t j = grid.items[c];
+        if (j <= i) continue;
+        double dx = s.x[i] - s.x[j];
+        if (dx > halfWidth) dx -= boxWidth;
+        else if (dx < -halfWidth) dx += boxWidth;
+        const double dy = s.y[i] - s.y[j];
+        const double reach = s.radius[i] + s.radius[j] + skin;
+        if (dx * dx + dy * dy < reach * reach) out.push_back(j);
+      }
+    }
+  }
+  std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.end());
+}
+
+}  // namespace
+
+void NeighbourList::build(const ParticleStore& s, double boxWidth, double skin,
+                          const NeighbourList& old, const std::vector<std::uint32_t>& newToOld) {
+  WIGGLE_ASSERT(newToOld.empty() || newToOld.size() == s.size());
+  double rMax = 0.0;
+  for (double r : s.radius) rMax = std::max(rMax, r);
+  const CellGrid grid = binParticles(s, boxWidth, 2.0 * rMax + skin);
+
+  // Rows are found per thread over contiguous grain ranges and concatenated in range order, so the
+  // list is the same for any thread count.
+  const std::uint32_t rows = s.grainCount;
+  std::vector<std::vector<std::uint32_t>> partnersOf;
+  std::vector<std::vector<std::uint32_t>> rowSizesOf;
+#pragma omp parallel
+  {
+#pragma omp single
+    {
+      partnersOf.resize(omp_get_num_threads());
+      rowSizesOf.resize(omp_get_num_threads());
+    }
+    const int t = omp_get_thread_num();
+    auto& local = partnersOf[t];
+    auto& sizes = rowSizesOf[t];
+#pragma omp for schedule(static)
+    for (std::uint32_t i = 0; i < rows; ++i) {
+      const std::size_t before = local.size();
+      findPartners(s, grid, boxWidth, skin, i, local);
+      sizes.push_back(static_cast<std::uint32_t>(local.size() - before));
+    }
+  }
+  rowStart.assign(rows + 1, 0);
+  partner.clear();
+  std::uint32_t row = 0;
+  for (std::size_t t = 0; t < partnersOf.size(); ++t) {
+    partner.insert(partner.end(), partnersOf[t].begin(), partnersOf[t].end());
+    for (std::uint32_t count : rowSizesOf[t]) {
+      rowStart[row + 1] = rowStart[row] + count;
+      ++row;
+    }
+  }
+  WIGGLE_ASSERT(row == rows);
+
+  // Carry the history of pairs that existed before, matching them by their old indices.
+  const std::uint32_t pairs = pairCount();
+  shearX.assign(pairs, 0.0);
+  shearY.assign(pairs, 0.0);
+  const std::uint32_t oldRows = old.rowStart.empty() ? 0 : static_cast<std::uint32_t>(old.rowStart.size() - 1);
+#pragma omp parallel for schedule(static)
+  for (std::uint32_t i = 0; i < rows; ++i) {
+    for (std::uint32_t k = rowStart[i]; k < rowStart[i + 1]; ++k) {
+      const std::uint32_t j = partner[k];
+      const std::uint32_t oi = newToOld.empty() ? i : newToOld[i];
+      const std::uint32_t oj = newToOld.empty() ? j : newToOld[j];
+      if (oi == kNone || oj == kNone) continue;
+      const std::uint32_t a = std::min(oi, oj), b = std::max(oi, oj);
+      if (a >= oldRows) continue;
+      for (std::uint32_t m = old.rowStart[a]; m < old.rowStart[a + 1]; ++m) {
+        if (old.partner[m] != b) continue;
+        // History is stored in the owner's frame: swapping owner and partner flips its sign.
+        const double sign = oi < oj ? 1.0 : -1.0;
+        shearX[k] = sign * old.shearX[m];
+        shearY[k] = sign * old.shearY[m];
+        break;
+      }
+    }
+  }
+  forceX.assign(pairs, 0.0);
+  forceY.assign(pairs, 0.0);
+  torqueArm.assign(pairs, 0.0);
+  deriveIndex(s.size());
+}
+
+void NeighbourList::deriveIndex(std::uint32_t particleCount) {
+  const std::uint32_t rows = static_cast<std::uint32_t>(rowStart.size() - 1);
+  const std::uint32_t pairs = pairCount();
+  owner.resize(pairs);
+  for (std::uint32_t i = 0; i < rows; ++i)
+    for (std::uint32_t k = rowStart[i]; k < rowStart[i + 1]; ++k) owner[k] = i;
+  revStart.assign(particleCount + 1, 0);
+  for (std::uint32_t k = 0; k < pairs; ++k) ++revStart[partner[k] + 1];
+  for (std::uint32_t p = 0; p < particleCount; ++p) revStart[p + 1] += revStart[p];
+  revPair.resize(pairs);
+  std::vector<std::uint32_t> fill(revStart.begin(), revStart.end() - 1);
+  for (std::uint32_t k = 0; k < pairs; ++k) revPair[fill[partner[k]]++] = k;
+}
+
+}  // namespace wiggle

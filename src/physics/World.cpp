@@ -1,0 +1,719 @@
+#include "physics/World.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <sstream>
+
+#include "core/Assert.h"
+#include "core/Hash.h"
+
+namespace wiggle {
+
+namespace {
+
+constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+
+std::string fmt(double v) {
+  std::ostringstream s;
+  s.precision(6);
+  s << v;
+  return s.str();
+}
+
+void requireFinite(double v, const char* what) {
+  if (!std::isfinite(v)) throw Error(std::string(what) + " is not a finite number");
+}
+
+}  // namespace
+
+double hertzContactTime(double kn, double radius, double mass, double speed) {
+  const double meff = 0.5 * mass;
+  const double reff = 0.5 * radius;
+  const double k = kn * std::sqrt(reff);
+  const double deltaMax = std::pow(5.0 * meff * speed * speed / (4.0 * k), 0.4);
+  return 2.9433 * deltaMax / speed;
+}
+
+World::World(const WorldDef& def) : def_(def) {
+  requireFinite(def.boxWidth, "box width");
+  if (def.boxWidth <= 0) throw Error("box width must be > 0, got " + fmt(def.boxWidth));
+  if (!(def.dt > 0) || !std::isfinite(def.dt)) throw Error("time step must be > 0, got " + fmt(def.dt));
+  if (!(def.density > 0) || !std::isfinite(def.density)) throw Error("density must be > 0");
+  if (!std::isfinite(def.gravity) || def.gravity < 0) throw Error("gravity must be >= 0");
+  const ContactParams& c = def.contact;
+  if (!(c.kn > 0) || !(c.kt > 0) || !std::isfinite(c.kn) || !std::isfinite(c.kt))
+    throw Error("contact stiffnesses kn, kt must be > 0");
+  if (!(c.gammaN >= 0) || !(c.gammaT >= 0) || !(c.mu >= 0) || !std::isfinite(c.gammaN) ||
+      !std::isfinite(c.gammaT) || !std::isfinite(c.mu))
+    throw Error("contact damping and friction must be >= 0");
+  if (!(def.skin > 0) || !(def.intruderSkin > 0.5 * def.skin))
+    throw Error("neighbour skins must be > 0 and intruder_skin > skin / 2");
+  if (def.healthInterval == 0 || def.sortInterval == 0) throw Error("intervals must be >= 1 step");
+}
+
+// ---------------------------------------------------------------- set-up
+
+void World::invalidate() {
+  if (pendingNewToOld_.empty()) {
+    pendingNewToOld_.resize(store_.size());
+    for (std::uint32_t i = 0; i < store_.size(); ++i) pendingNewToOld_[i] = i;
+  }
+  listsStale_ = true;
+}
+
+std::uint32_t World::addGrain(double x, double y, double radius, double vx, double vy, double omega) {
+  requireFinite(x, "grain x");
+  requireFinite(y, "grain y");
+  requireFinite(vx, "grain vx");
+  requireFinite(vy, "grain vy");
+  requireFinite(omega, "grain omega");
+  if (!(radius > 0) || !std::isfinite(radius)) throw Error("grain radius must be > 0, got " + fmt(radius));
+  if (x < 0 || x >= def_.boxWidth)
+    throw Error("grain at x = " + fmt(x) + " is outside the periodic box [0, " + fmt(def_.boxWidth) + ")");
+  if (y < 0) throw Error("grain at y = " + fmt(y) + " is below the base (y = 0)");
+  invalidate();
+  const double mass = particleMass(def_.massModel, def_.density, radius);
+  const double invInertia = 1.0 / (inertiaCoefficient(def_.massModel) * mass * radius * radius);
+  // Grains come before the frozen base: insert at grainCount (only the short base tail moves).
+  const std::uint32_t at = store_.grainCount;
+  store_.append(x, y, vx, vy, omega, radius, mass, 1.0 / mass, invInertia, nextTag_++);
+  if (at + 1 != store_.size()) {
+    std::vector<std::uint32_t> order(store_.size());
+    for (std::uint32_t k = 0; k < order.size(); ++k) order[k] = k < at ? k : (k == at ? store_.size() - 1 : k - 1);
+    store_.permute(order);
+  }
+  pendingNewToOld_.insert(pendingNewToOld_.begin() + at, kNone);
+  ++store_.grainCount;
+  return at;
+}
+
+void World::addFrozen(double x, double y, double radius) {
+  requireFinite(x, "frozen particle x");
+  requireFinite(y, "frozen particle y");
+  if (!(radius > 0) || !std::isfinite(radius)) throw Error("frozen particle radius must be > 0");
+  if (x < 0 || x >= def_.boxWidth)
+    throw Error("frozen particle at x = " + fmt(x) + " is outside the periodic box");
+  invalidate();
+  const double mass = particleMass(def_.massModel, def_.density, radius);
+  store_.append(x, y, 0.0, 0.0, 0.0, radius, mass, 0.0, 0.0, nextTag_++);
+  pendingNewToOld_.push_back(kNone);
+}
+
+void World::setIntruder(const ClumpDef& clump, double x, double y) {
+  requireFinite(x, "intruder x");
+  requireFinite(y, "intruder y");
+  if (clump.offsetX.empty() || clump.offsetX.size() != clump.offsetY.size())
+    throw Error("intruder needs at least one atom and as many x as y offsets");
+  if (!(clump.mass > 0) || !std::isfinite(clump.mass)) throw Error("intruder mass must be > 0");
+  if (!(clump.atomRadius > 0)) throw Error("intruder atom radius must be > 0");
+  for (std::size_t a = 0; a < clump.offsetX.size(); ++a) {
+    requireFinite(clump.offsetX[a], "intruder atom offset");
+    requireFinite(clump.offsetY[a], "intruder atom offset");
+  }
+  clump_ = clump;
+  hasIntruder_ = true;
+  clumpState_ = ClumpState{x, y, 0.0, 0.0, 0.0, 0.0};
+  motion_ = ClumpMotion{};
+  motion_.x0 = x;
+  intruderPairs_ = IntruderPairs{};
+  invalidate();
+}
+
+void World::setIntruderMotion(const ClumpMotion& motion) {
+  if (!hasIntruder_) throw Error("set an intruder before its motion");
+  if (motion.kind == HorizontalMotion::Sinusoid && !(motion.period > 0))
+    throw Error("drive period must be > 0");
+  requireFinite(motion.x0, "drive centre");
+  requireFinite(motion.amplitude, "drive amplitude");
+  requireFinite(motion.velocity, "drive velocity");
+  motion_ = motion;
+  if (!motion_.verticalFree) clumpState_.vy = 0.0;
+  placeIntruder();
+  prepared_ = false;  // the drive velocity enters the contact forces: re-evaluate them
+}
+
+void World::removeGrains(const std::vector<bool>& remove) {
+  if (remove.size() != store_.grainCount) throw Error("removeGrains: one flag per grain expected");
+  invalidate();
+  std::vector<std::uint32_t> order;
+  order.reserve(store_.size());
+  std::uint32_t kept = 0;
+  for (std::uint32_t i = 0; i < store_.grainCount; ++i)
+    if (!remove[i]) {
+      order.push_back(i);
+      ++kept;
+    }
+  for (std::uint32_t i = store_.grainCount; i < store_.size(); ++i) order.push_back(i);
+  std::vector<std::uint32_t> map(order.size());
+  for (std::size_t k = 0; k < order.size(); ++k) map[k] = pendingNewToOld_[order[k]];
+  store_.permute(order);
+  store_.grainCount = kept;
+  pendingNewToOld_.swap(map);
+}
+
+void World::resetClock() {
+  step_ = 0;
+  lastSortStep_ = 0;
+  prepared_ = false;
+  placeIntruder();
+}
+
+// ---------------------------------------------------------------- the step
+
+void World::run(std::uint64_t steps) {
+  for (std::uint64_t s = 0; s < steps; ++s) step();
+}
+
+void World::step() {
+  if (!prepared_) prepare();
+  initialIntegrate();
+  ++step_;
+  placeIntruder();
+  if (listsStale_ || maxDisplacementSq_ > 0.25 * def_.skin * def_.skin) rebuildNeighbours();
+  else if (hasIntruder_ && intruderPairsStale()) rebuildIntruderPairs({});
+  computeForces(true);
+  finalIntegrate();
+  if (step_ % def_.healthInterval == 0) checkHealth();
+}
+
+void World::prepare() {
+  checkTimeStep();
+  placeIntruder();
+  rebuildNeighbours();
+  computeForces(false);
+  prepared_ = true;
+}
+
+void World::placeIntruder() {
+  if (!hasIntruder_) return;
+  const double t = time();
+  switch (motion_.kind) {
+    case HorizontalMotion::Held:
+      clumpState_.x = motion_.x0;
+      clumpState_.vx = 0.0;
+      break;
+    case HorizontalMotion::Sinusoid: {
+      const double omega = 2.0 * std::numbers::pi / motion_.period;
+      clumpState_.x = motion_.x0 + motion_.amplitude * std::sin(omega * t);
+      clumpState_.vx = motion_.amplitude * omega * std::cos(omega * t);
+      break;
+    }
+    case HorizontalMotion::ConstantVelocity:
+      clumpState_.x = motion_.x0 + motion_.velocity * t;
+      clumpState_.vx = motion_.velocity;
+      break;
+  }
+}
+
+void World::initialIntegrate() {
+  const double dt = def_.dt;
+  const double halfDt = 0.5 * dt;
+  ParticleStore& s = store_;
+  const std::uint32_t n = s.grainCount;
+  const bool track = !listsStale_;
+  double maxSq = 0.0;
+#pragma omp parallel for schedule(static) reduction(max : maxSq)
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const double kick = halfDt * s.invMass[i];
+    const double vx = s.vx[i] + kick * s.fx[i];
+    const double vy = s.vy[i] + kick * s.fy[i];
+    const double x = s.x[i] + dt * vx;
+    const double y = s.y[i] + dt * vy;
+    s.vx[i] = vx;
+    s.vy[i] = vy;
+    s.x[i] = x;
+    s.y[i] = y;
+    s.omega[i] += halfDt * s.invInertia[i] * s.torque[i];
+    if (track) {
+      const double dx = x - xAtBuild_[i];
+      const double dy = y - yAtBuild_[i];
+      maxSq = std::max(maxSq, dx * dx + dy * dy);
+    }
+  }
+  maxDisplacementSq_ = maxSq;
+  if (hasIntruder_ && motion_.verticalFree) {
+    clumpState_.vy += halfDt * (clumpState_.contactFy - clump_.mass * def_.gravity) / clump_.mass;
+    clumpState_.y += dt * clumpState_.vy;
+  }
+}
+
+void World::rebuildNeighbours() {
+  ParticleStore& s = store_;
+  const double width = def_.boxWidth;
+  for (std::uint32_t i = 0; i < s.grainCount; ++i) {
+    // Grains move far less than a box width between rebuilds; the loops only guard blow-ups.
+    while (s.x[i] < 0.0) s.x[i] += width;
+    while (s.x[i] >= width) s.x[i] -= width;
+  }
+  std::vector<std::uint32_t> newToOld = std::move(pendingNewToOld_);
+  pendingNewToOld_.clear();
+  if (newToOld.empty()) {
+    newToOld.resize(s.size());
+    for (std::uint32_t i = 0; i < s.size(); ++i) newToOld[i] = i;
+  }
+
+  // Spatial re-sort of the grains (cells of about one diameter, row by row) keeps contact
+  // partners close in memory. Done at deterministic steps only, so results stay reproducible.
+  if (rebuilds_ == 0 || step_ >= lastSortStep_ + def_.sortInterval) {
+    const double cell = 1.0;
+    const auto columns = static_cast<std::uint64_t>(std::max(1.0, std::floor(width / cell)));
+    std::vector<std::uint64_t> key(s.grainCount);
+    double yMin = 0.0;
+    for (std::uint32_t i = 0; i < s.grainCount; ++i) yMin = std::min(yMin, s.y[i]);
+    for (std::uint32_t i = 0; i < s.grainCount; ++i) {
+      const auto cx = std::min(columns - 1, static_cast<std::uint64_t>(s.x[i] / cell));
+      const auto cy = static_cast<std::uint64_t>((s.y[i] - yMin) / cell);
+      key[i] = cy * columns + cx;
+    }
+    std::vector<std::uint32_t> order(s.size());
+    for (std::uint32_t i = 0; i < s.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.begin() + s.grainCount,
+                     [&](std::uint32_t a, std::uint32_t b) { return key[a] < key[b]; });
+    s.permute(order);
+    std::vector<std::uint32_t> composed(s.size());
+    for (std::uint32_t k = 0; k < s.size(); ++k) composed[k] = newToOld[order[k]];
+    newToOld.swap(composed);
+    lastSortStep_ = step_;
+  }
+
+  NeighbourList fresh;
+  fresh.build(s, width, def_.skin, list_, newToOld);
+  list_ = std::move(fresh);
+  xAtBuild_.assign(s.x.begin(), s.x.begin() + s.grainCount);
+  yAtBuild_.assign(s.y.begin(), s.y.begin() + s.grainCount);
+  maxDisplacementSq_ = 0.0;
+  listsStale_ = false;
+  ++rebuilds_;
+  if (hasIntruder_) rebuildIntruderPairs(newToOld);
+}
+
+bool World::intruderPairsStale() const {
+  const double dx = clumpState_.x - clumpXAtBuild_;
+  const double dy = clumpState_.y - clumpYAtBuild_;
+  // A pair outside the list was farther than radI + radJ + intruderSkin at the build. Since then
+  // the clump moved by |d| and the grain by at most skin/2 + (its displacement bound at the build).
+  const double margin = def_.intruderSkin - 0.5 * def_.skin - grainDisplacementAtIntruderBuild_;
+  return dx * dx + dy * dy > margin * margin || margin <= 0.0;
+}
+
+void World::rebuildIntruderPairs(const std::vector<std::uint32_t>& newToOld) {
+  const ParticleStore& s = store_;
+  const IntruderPairs old = std::move(intruderPairs_);
+  intruderPairs_ = IntruderPairs{};
+  IntruderPairs& pairs = intruderPairs_;
+  const double width = def_.boxWidth, halfWidth = 0.5 * width;
+  const double cx = clumpState_.x, cy = clumpState_.y;
+  const double ra = clump_.atomRadius, skin = def_.intruderSkin;
+  double minX = 0, maxX = 0, minY = 0, maxY = 0, rMax = 0;
+  for (std::size_t a = 0; a < clump_.offsetX.size(); ++a) {
+    minX = std::min(minX, clump_.offsetX[a]);
+    maxX = std::max(maxX, clump_.offsetX[a]);
+    minY = std::min(minY, clump_.offsetY[a]);
+    maxY = std::max(maxY, clump_.offsetY[a]);
+  }
+  for (double r : s.radius) rMax = std::max(rMax, r);
+  const double reach = rMax + ra + skin;
+  for (std::uint32_t p = 0; p < s.size(); ++p) {
+    double dx = s.x[p] - cx;
+    if (dx > halfWidth) dx -= width;
+    else if (dx < -halfWidth) dx += width;
+    const double dy = s.y[p] - cy;
+    if (dx < minX - reach || dx > maxX + reach || dy < minY - reach || dy > maxY + reach) continue;
+    const std::uint32_t op = newToOld.empty() ? p : newToOld[p];
+    // Old pairs are sorted by grain: find this grain's block once.
+    auto first = op == kNone ? old.grain.end() : std::lower_bound(old.grain.begin(), old.grain.end(), op);
+    for (std::uint32_t a = 0; a < clump_.offsetX.size(); ++a) {
+      const double ex = dx - clump_.offsetX[a];
+      const double ey = dy - clump_.offsetY[a];
+      const double cut = s.radius[p] + ra + skin;
+      if (ex * ex + ey * ey >= cut * cut) continue;
+      double hx = 0.0, hy = 0.0;
+      for (auto it = first; it != old.grain.end() && *it == op; ++it) {
+        const auto m = static_cast<std::size_t>(it - old.grain.begin());
+        if (old.atom[m] == a) {
+          hx = old.shearX[m];
+          hy = old.shearY[m];
+          break;
+        }
+      }
+      pairs.grain.push_back(p);
+      pairs.atom.push_back(a);
+      pairs.shearX.push_back(hx);
+      pairs.shearY.push_back(hy);
+    }
+  }
+  pairs.forceX.assign(pairs.size(), 0.0);
+  pairs.forceY.assign(pairs.size(), 0.0);
+  clumpXAtBuild_ = cx;
+  clumpYAtBuild_ = cy;
+  grainDisplacementAtIntruderBuild_ = std::sqrt(maxDisplacementSq_);
+}
+
+void World::computeForces(bool updateShear) {
+  ParticleStore& s = store_;
+  NeighbourList& list = list_;
+  const ContactParams params = def_.contact;
+  const double dt = def_.dt;
+  const double width = def_.boxWidth, halfWidth = 0.5 * width;
+
+  // 1. Every pair once: force, torque arm and updated history into the pair's own slot.
+  const std::uint32_t pairs = list.pairCount();
+#pragma omp parallel for schedule(static)
+  for (std::uint32_t k = 0; k < pairs; ++k) {
+    const std::uint32_t i = list.owner[k], j = list.partner[k];
+    double dx = s.x[i] - s.x[j];
+    if (dx > halfWidth) dx -= width;
+    else if (dx < -halfWidth) dx += width;
+    const double meff = 1.0 / (s.invMass[i] + s.invMass[j]);  // frozen j: invMass 0, meff = m_i
+    const ContactForce c = hertzHistoryContact(params, dt, dx, s.y[i] - s.y[j], s.vx[i] - s.vx[j],
+                                               s.vy[i] - s.vy[j], s.radius[i], s.radius[j],
+                                               s.omega[i], s.omega[j], meff, list.shearX[k],
+                                               list.shearY[k], updateShear);
+    list.forceX[k] = c.fx;
+    list.forceY[k] = c.fy;
+    list.torqueArm[k] = c.torqueArm;
+  }
+
+  // 2. Every grain sums its own pairs in list order (own row, then as partner), then gravity.
+  const double gravity = def_.gravity;
+  const std::uint32_t n = s.grainCount;
+#pragma omp parallel for schedule(static)
+  for (std::uint32_t i = 0; i < n; ++i) {
+    double fx = 0.0, fy = 0.0, arm = 0.0;
+    for (std::uint32_t k = list.rowStart[i]; k < list.rowStart[i + 1]; ++k) {
+      fx += list.forceX[k];
+      fy += list.forceY[k];
+      arm += list.torqueArm[k];
+    }
+    for (std::uint32_t r = list.revStart[i]; r < list.revStart[i + 1]; ++r) {
+      const std::uint32_t k = list.revPair[r];
+      fx -= list.forceX[k];
+      fy -= list.forceY[k];
+      arm += list.torqueArm[k];
+    }
+    s.fx[i] = fx;
+    s.fy[i] = fy - s.mass[i] * gravity;
+    s.torque[i] = -s.radius[i] * arm;
+  }
+
+  // 3. Intruder contacts, serially in list order (a few hundred pairs): force on the grain, the
+  //    opposite on the clump, whose mass enters meff (as LAMMPS does for rigid bodies).
+  if (!hasIntruder_) return;
+  IntruderPairs& ip = intruderPairs_;
+  ClumpState& clump = clumpState_;
+  const double invClumpMass = 1.0 / clump_.mass;
+  double clumpFx = 0.0, clumpFy = 0.0;
+  for (std::uint32_t p = 0; p < ip.size(); ++p) {
+    const std::uint32_t g = ip.grain[p], a = ip.atom[p];
+    double dx = s.x[g] - (clump.x + clump_.offsetX[a]);
+    if (dx > halfWidth) dx -= width;
+    else if (dx < -halfWidth) dx += width;
+    const double dy = s.y[g] - (clump.y + clump_.offsetY[a]);
+    const double meff = 1.0 / (s.invMass[g] + invClumpMass);
+    const ContactForce c =
+        hertzHistoryContact(params, dt, dx, dy, s.vx[g] - clump.vx, s.vy[g] - clump.vy, s.radius[g],
+                            clump_.atomRadius, s.omega[g], 0.0, meff, ip.shearX[p], ip.shearY[p],
+                            updateShear);
+    ip.forceX[p] = c.fx;
+    ip.forceY[p] = c.fy;
+    if (g < n) {
+      s.fx[g] += c.fx;
+      s.fy[g] += c.fy;
+      s.torque[g] -= s.radius[g] * c.torqueArm;
+    }
+    clumpFx -= c.fx;
+    clumpFy -= c.fy;
+  }
+  clump.contactFx = clumpFx;
+  clump.contactFy = clumpFy;
+}
+
+void World::finalIntegrate() {
+  const double halfDt = 0.5 * def_.dt;
+  ParticleStore& s = store_;
+  const std::uint32_t n = s.grainCount;
+#pragma omp parallel for schedule(static)
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const double kick = halfDt * s.invMass[i];
+    s.vx[i] += kick * s.fx[i];
+    s.vy[i] += kick * s.fy[i];
+    s.omega[i] += halfDt * s.invInertia[i] * s.torque[i];
+  }
+  if (hasIntruder_ && motion_.verticalFree)
+    clumpState_.vy += halfDt * (clumpState_.contactFy - clump_.mass * def_.gravity) / clump_.mass;
+}
+
+// ---------------------------------------------------------------- checks
+
+void World::checkTimeStep() const {
+  const ParticleStore& s = store_;
+  if (s.grainCount == 0) return;
+  std::uint32_t lightest = 0;
+  for (std::uint32_t i = 1; i < s.grainCount; ++i)
+    if (s.mass[i] < s.mass[lightest]) lightest = i;
+  double speed = def_.referenceImpactSpeed;
+  if (hasIntruder_ && motion_.kind == HorizontalMotion::Sinusoid)
+    speed = std::max(speed, 2.0 * std::numbers::pi * motion_.amplitude / motion_.period);
+  if (hasIntruder_ && motion_.kind == HorizontalMotion::ConstantVelocity)
+    speed = std::max(speed, std::fabs(motion_.velocity));
+  const double contactTime = hertzContactTime(def_.contact.kn, s.radius[lightest], s.mass[lightest], speed);
+  const double limit = contactTime / def_.minStepsPerContact;
+  if (def_.dt > limit)
+    throw Error("run.dt = " + fmt(def_.dt) + " is too large: a Hertz contact between the lightest grains (d = " +
+                fmt(2 * s.radius[lightest]) + ") at impact speed " + fmt(speed) + " lasts " + fmt(contactTime) +
+                ", which needs dt <= " + fmt(limit) + " (" + fmt(def_.minStepsPerContact) + " steps per contact)");
+}
+
+void World::checkHealth() const {
+  const ParticleStore& s = store_;
+  const std::string at = "step " + std::to_string(step_) + " (t = " + fmt(time()) + "): ";
+  for (std::uint32_t i = 0; i < s.grainCount; ++i) {
+    const bool finite = std::isfinite(s.x[i]) && std::isfinite(s.y[i]) && std::isfinite(s.vx[i]) &&
+                        std::isfinite(s.vy[i]) && std::isfinite(s.omega[i]);
+    if (!finite)
+      throw SimulationError(at + "grain " + std::to_string(s.tag[i]) +
+                            " has a non-finite position or velocity (the simulation blew up: reduce run.dt)");
+    if (s.y[i] < 0.0)
+      throw SimulationError(at + "grain " + std::to_string(s.tag[i]) + " fell through the base (y = " +
+                            fmt(s.y[i]) + "): reduce run.dt");
+  }
+  const double width = def_.boxWidth, halfWidth = 0.5 * width;
+  auto checkOverlap = [&](double dx, double dy, double ri, double rj, std::uint32_t tag, const char* what) {
+    if (dx > halfWidth) dx -= width;
+    else if (dx < -halfWidth) dx += width;
+    const double overlap = ri + rj - std::sqrt(dx * dx + dy * dy);
+    const double allowed = def_.maxOverlapFraction * 2.0 * std::min(ri, rj);
+    if (overlap > allowed)
+      throw SimulationError(at + "grain " + std::to_string(tag) + " overlaps " + what + " by " + fmt(overlap) +
+                            " d, more than " + fmt(def_.maxOverlapFraction) +
+                            " of the smaller diameter (the simulation blew up: reduce run.dt)");
+  };
+  for (std::uint32_t k = 0; k < list_.pairCount(); ++k) {
+    const std::uint32_t i = list_.owner[k], j = list_.partner[k];
+    checkOverlap(s.x[i] - s.x[j], s.y[i] - s.y[j], s.radius[i], s.radius[j], s.tag[i],
+                 j < s.grainCount ? "another grain" : "a base particle");
+  }
+  if (!hasIntruder_) return;
+  if (!std::isfinite(clumpState_.y) || !std::isfinite(clumpState_.vy))
+    throw SimulationError(at + "the intruder's height or velocity is not finite (reduce run.dt)");
+  for (std::uint32_t p = 0; p < intruderPairs_.size(); ++p) {
+    const std::uint32_t g = intruderPairs_.grain[p], a = intruderPairs_.atom[p];
+    checkOverlap(s.x[g] - (clumpState_.x + clump_.offsetX[a]), s.y[g] - (clumpState_.y + clump_.offsetY[a]),
+                 s.radius[g], clump_.atomRadius, s.tag[g], "the intruder");
+  }
+}
+
+// ---------------------------------------------------------------- observations
+
+double World::kineticEnergy() const {
+  // Serial on purpose: bed making compares it with a threshold, so its bits must not depend on
+  // the thread count.
+  const ParticleStore& s = store_;
+  double energy = 0.0;
+  for (std::uint32_t i = 0; i < s.grainCount; ++i) {
+    const double inertia = 1.0 / s.invInertia[i];
+    energy += 0.5 * s.mass[i] * (s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i]) + 0.5 * inertia * s.omega[i] * s.omega[i];
+  }
+  return energy;
+}
+
+double World::maxGrainSpeed() const {
+  const ParticleStore& s = store_;
+  double maxSq = 0.0;
+  for (std::uint32_t i = 0; i < s.grainCount; ++i)
+    maxSq = std::max(maxSq, s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i]);
+  return std::sqrt(maxSq);
+}
+
+std::string World::stateHash() const {
+  Hasher h;
+  const ParticleStore& s = store_;
+  h.addValue(step_);
+  h.add(s.tag);
+  for (const auto* v : {&s.x, &s.y, &s.vx, &s.vy, &s.omega, &s.fx, &s.fy, &s.torque, &s.radius}) h.add(*v);
+  h.add(list_.partner);
+  h.add(list_.shearX);
+  h.add(list_.shearY);
+  h.add(intruderPairs_.shearX);
+  h.add(intruderPairs_.shearY);
+  h.addValue(clumpState_);
+  return h.hex();
+}
+
+// ---------------------------------------------------------------- persistence
+
+void World::save(BinaryWriter& out) const {
+  out.value(def_.boxWidth);
+  out.value(def_.dt);
+  out.value(def_.gravity);
+  out.value(def_.density);
+  out.value(static_cast<std::uint8_t>(def_.massModel));
+  out.value(def_.contact.kn);
+  out.value(def_.contact.kt);
+  out.value(def_.contact.gammaN);
+  out.value(def_.contact.gammaT);
+  out.value(def_.contact.mu);
+  out.value(def_.skin);
+  out.value(def_.intruderSkin);
+  out.value(def_.sortInterval);
+  out.value(def_.healthInterval);
+  out.value(def_.maxOverlapFraction);
+  out.value(def_.referenceImpactSpeed);
+  out.value(def_.minStepsPerContact);
+
+  const ParticleStore& s = store_;
+  out.value(s.grainCount);
+  for (const auto* v : {&s.x, &s.y, &s.vx, &s.vy, &s.omega, &s.fx, &s.fy, &s.torque, &s.radius, &s.invMass,
+                        &s.invInertia, &s.mass})
+    out.array(*v);
+  out.array(s.tag);
+
+  out.array(list_.rowStart);
+  out.array(list_.partner);
+  out.array(list_.shearX);
+  out.array(list_.shearY);
+  out.array(intruderPairs_.grain);
+  out.array(intruderPairs_.atom);
+  out.array(intruderPairs_.shearX);
+  out.array(intruderPairs_.shearY);
+
+  out.value(static_cast<std::uint8_t>(hasIntruder_));
+  out.array(clump_.offsetX);
+  out.array(clump_.offsetY);
+  out.value(clump_.atomRadius);
+  out.value(clump_.mass);
+  out.value(clumpState_.x);
+  out.value(clumpState_.y);
+  out.value(clumpState_.vx);
+  out.value(clumpState_.vy);
+  out.value(clumpState_.contactFx);
+  out.value(clumpState_.contactFy);
+  out.value(static_cast<std::uint8_t>(motion_.kind));
+  out.value(motion_.x0);
+  out.value(motion_.amplitude);
+  out.value(motion_.period);
+  out.value(motion_.velocity);
+  out.value(static_cast<std::uint8_t>(motion_.verticalFree));
+
+  out.value(step_);
+  out.value(rebuilds_);
+  out.value(lastSortStep_);
+  out.value(nextTag_);
+  out.value(static_cast<std::uint8_t>(prepared_));
+  out.value(static_cast<std::uint8_t>(listsStale_));
+  out.array(xAtBuild_);
+  out.array(yAtBuild_);
+  out.value(maxDisplacementSq_);
+  out.value(clumpXAtBuild_);
+  out.value(clumpYAtBuild_);
+  out.value(grainDisplacementAtIntruderBuild_);
+  out.array(pendingNewToOld_);
+}
+
+World World::load(BinaryReader& in) {
+  WorldDef def;
+  def.boxWidth = in.value<double>();
+  def.dt = in.value<double>();
+  def.gravity = in.value<double>();
+  def.density = in.value<double>();
+  const auto massModel = in.value<std::uint8_t>();
+  if (massModel > 1) throw Error(in.what() + " is corrupt: unknown mass model");
+  def.massModel = static_cast<MassModel>(massModel);
+  def.contact.kn = in.value<double>();
+  def.contact.kt = in.value<double>();
+  def.contact.gammaN = in.value<double>();
+  def.contact.gammaT = in.value<double>();
+  def.contact.mu = in.value<double>();
+  def.skin = in.value<double>();
+  def.intruderSkin = in.value<double>();
+  def.sortInterval = in.value<std::uint64_t>();
+  def.healthInterval = in.value<std::uint64_t>();
+  def.maxOverlapFraction = in.value<double>();
+  def.referenceImpactSpeed = in.value<double>();
+  def.minStepsPerContact = in.value<double>();
+  World w(def);
+
+  ParticleStore& s = w.store_;
+  s.grainCount = in.value<std::uint32_t>();
+  for (auto* v : {&s.x, &s.y, &s.vx, &s.vy, &s.omega, &s.fx, &s.fy, &s.torque, &s.radius, &s.invMass,
+                  &s.invInertia, &s.mass})
+    *v = in.array<double>();
+  s.tag = in.array<std::uint32_t>();
+  const std::size_t n = s.x.size();
+  for (const auto* v : {&s.y, &s.vx, &s.vy, &s.omega, &s.fx, &s.fy, &s.torque, &s.radius, &s.invMass,
+                        &s.invInertia, &s.mass})
+    if (v->size() != n) throw Error(in.what() + " is corrupt: particle arrays differ in length");
+  if (s.tag.size() != n || s.grainCount > n) throw Error(in.what() + " is corrupt: particle counts disagree");
+
+  NeighbourList& list = w.list_;
+  list.rowStart = in.array<std::uint32_t>();
+  list.partner = in.array<std::uint32_t>();
+  list.shearX = in.array<double>();
+  list.shearY = in.array<double>();
+  const std::size_t pairs = list.partner.size();
+  bool listOk = list.rowStart.size() == s.grainCount + 1 && list.shearX.size() == pairs &&
+                list.shearY.size() == pairs && list.rowStart.front() == 0 && list.rowStart.back() == pairs;
+  for (std::size_t i = 0; listOk && i + 1 < list.rowStart.size(); ++i)
+    listOk = list.rowStart[i] <= list.rowStart[i + 1];
+  for (std::size_t k = 0; listOk && k < pairs; ++k) listOk = list.partner[k] < n;
+  if (!listOk) throw Error(in.what() + " is corrupt: the neighbour list is inconsistent");
+  list.forceX.assign(pairs, 0.0);
+  list.forceY.assign(pairs, 0.0);
+  list.torqueArm.assign(pairs, 0.0);
+  list.deriveIndex(static_cast<std::uint32_t>(n));
+
+  IntruderPairs& ip = w.intruderPairs_;
+  ip.grain = in.array<std::uint32_t>();
+  ip.atom = in.array<std::uint32_t>();
+  ip.shearX = in.array<double>();
+  ip.shearY = in.array<double>();
+  ip.forceX.assign(ip.grain.size(), 0.0);
+  ip.forceY.assign(ip.grain.size(), 0.0);
+
+  w.hasIntruder_ = in.value<std::uint8_t>() != 0;
+  w.clump_.offsetX = in.array<double>();
+  w.clump_.offsetY = in.array<double>();
+  w.clump_.atomRadius = in.value<double>();
+  w.clump_.mass = in.value<double>();
+  if (ip.atom.size() != ip.grain.size() || ip.shearX.size() != ip.grain.size() ||
+      ip.shearY.size() != ip.grain.size() || w.clump_.offsetX.size() != w.clump_.offsetY.size())
+    throw Error(in.what() + " is corrupt: intruder arrays differ in length");
+  for (std::size_t p = 0; p < ip.grain.size(); ++p)
+    if (ip.grain[p] >= n || ip.atom[p] >= w.clump_.offsetX.size())
+      throw Error(in.what() + " is corrupt: an intruder pair points outside the arrays");
+  w.clumpState_.x = in.value<double>();
+  w.clumpState_.y = in.value<double>();
+  w.clumpState_.vx = in.value<double>();
+  w.clumpState_.vy = in.value<double>();
+  w.clumpState_.contactFx = in.value<double>();
+  w.clumpState_.contactFy = in.value<double>();
+  const auto kind = in.value<std::uint8_t>();
+  if (kind > 2) throw Error(in.what() + " is corrupt: unknown intruder motion");
+  w.motion_.kind = static_cast<HorizontalMotion>(kind);
+  w.motion_.x0 = in.value<double>();
+  w.motion_.amplitude = in.value<double>();
+  w.motion_.period = in.value<double>();
+  w.motion_.velocity = in.value<double>();
+  w.motion_.verticalFree = in.value<std::uint8_t>() != 0;
+
+  w.step_ = in.value<std::uint64_t>();
+  w.rebuilds_ = in.value<std::uint64_t>();
+  w.lastSortStep_ = in.value<std::uint64_t>();
+  w.nextTag_ = in.value<std::uint32_t>();
+  w.prepared_ = in.value<std::uint8_t>() != 0;
+  w.listsStale_ = in.value<std::uint8_t>() != 0;
+  w.xAtBuild_ = in.array<double>();
+  w.yAtBuild_ = in.array<double>();
+  w.maxDisplacementSq_ = in.value<double>();
+  w.clumpXAtBuild_ = in.value<double>();
+  w.clumpYAtBuild_ = in.value<double>();
+  w.grainDisplacementAtIntruderBuild_ = in.value<double>();
+  w.pendingNewToOld_ = in.array<std::uint32_t>();
+  if (!w.listsStale_ && (w.xAtBuild_.size() != s.grainCount || w.yAtBuild_.size() != s.grainCount))
+    throw Error(in.what() + " is corrupt: build positions do not match the grains");
+  return w;
+}
+
+}  // namespace wiggle

@@ -1,0 +1,125 @@
+#pragma once
+// The DEM engine: grains, a frozen base, an optional rigid intruder, and the step pipeline
+// (ARCHITECTURE.md lists the stages). World owns all simulation state; observers read it through
+// const accessors and never change it.
+//
+// Determinism: every force is a sum over a particle's contacts in the fixed order of the
+// neighbour list, never an order that depends on threads, so results are bitwise identical for
+// any thread count and across save/load.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "io/BinaryStream.h"
+#include "physics/ContactLaw.h"
+#include "physics/Intruder.h"
+#include "physics/NeighbourList.h"
+#include "physics/ParticleStore.h"
+
+namespace wiggle {
+
+struct WorldDef {
+  double boxWidth = 0.0;     // W: the box is periodic in x over [0, W) [d]
+  double dt = 1e-4;          // time step [sqrt(d/g)]
+  double gravity = 1.0;      // acceleration along -y [g]
+  double density = 1.0;      // material density rho
+  MassModel massModel = MassModel::Sphere;
+  ContactParams contact;
+  double skin = 0.2;          // Verlet skin of the grain list [d]
+  double intruderSkin = 1.0;  // skin of the intruder-grain list [d]; larger, as the intruder is fast
+  std::uint64_t sortInterval = 2000;   // steps between spatial re-sorts of the grains (at a rebuild)
+  std::uint64_t healthInterval = 100;  // steps between blow-up checks
+  double maxOverlapFraction = 0.1;     // blow-up: overlap above this fraction of the smaller diameter
+  double referenceImpactSpeed = 1.0;   // for the time-step check [sqrt(g d)]
+  double minStepsPerContact = 5.0;     // refuse dt above (Hertz contact time) / this
+};
+
+// Thrown when the simulation blows up; the message names the step, the particle and the quantity.
+class SimulationError : public Error {
+ public:
+  using Error::Error;
+};
+
+// Hertz contact duration of two grains of radius `radius` and mass `mass` colliding head-on at
+// `speed`, with F = kn sqrt(Reff) delta^(3/2) (no damping): t_c = 2.9433 * delta_max / speed,
+// delta_max = (5 meff v^2 / (4 kn sqrt(Reff)))^(2/5), meff = m/2, Reff = r/2.
+double hertzContactTime(double kn, double radius, double mass, double speed);
+
+class World {
+ public:
+  explicit World(const WorldDef& def);
+
+  // --- set-up (throws wiggle::Error on bad input) ---
+  std::uint32_t addGrain(double x, double y, double radius, double vx = 0.0, double vy = 0.0,
+                         double omega = 0.0);
+  void addFrozen(double x, double y, double radius);
+  void setIntruder(const ClumpDef& clump, double x, double y);
+  void setIntruderMotion(const ClumpMotion& motion);
+  // Removes the grains whose index is flagged; contact history of the others is kept.
+  void removeGrains(const std::vector<bool>& remove);
+  // Time and step count back to zero: t = 0 of the drive. Forces are recomputed at the next step.
+  void resetClock();
+
+  // --- stepping ---
+  void step();
+  void run(std::uint64_t steps);
+
+  // --- state (read-only) ---
+  const WorldDef& def() const { return def_; }
+  const ParticleStore& particles() const { return store_; }
+  std::uint32_t grainCount() const { return store_.grainCount; }
+  bool hasIntruder() const { return hasIntruder_; }
+  const ClumpDef& clump() const { return clump_; }
+  const ClumpState& intruder() const { return clumpState_; }
+  const ClumpMotion& intruderMotion() const { return motion_; }
+  std::uint64_t stepCount() const { return step_; }
+  double time() const { return static_cast<double>(step_) * def_.dt; }
+  std::uint64_t rebuildCount() const { return rebuilds_; }
+  const NeighbourList& neighbours() const { return list_; }
+  const IntruderPairs& intruderPairs() const { return intruderPairs_; }
+  double kineticEnergy() const;   // translational + rotational, grains only
+  double maxGrainSpeed() const;
+  std::string stateHash() const;  // hash of the bits of the whole dynamic state
+
+  // --- persistence: the full state, so that a loaded world continues bit for bit ---
+  void save(BinaryWriter& out) const;
+  static World load(BinaryReader& in);
+
+ private:
+  void prepare();                 // first force evaluation (history not advanced), as LAMMPS's setup
+  void initialIntegrate();        // half kick + drift of grains and intruder; tracks max displacement
+  void placeIntruder();           // prescribed x, vx at the current time
+  void rebuildNeighbours();       // wrap, maybe re-sort, rebuild both lists carrying history
+  void rebuildIntruderPairs(const std::vector<std::uint32_t>& newToOld);
+  bool intruderPairsStale() const;
+  void computeForces(bool updateShear);
+  void finalIntegrate();
+  void checkHealth() const;
+  void checkTimeStep() const;
+  void invalidate();              // structure changed: rebuild and re-prepare before the next step
+
+  WorldDef def_;
+  ParticleStore store_;
+  NeighbourList list_;
+  IntruderPairs intruderPairs_;
+  bool hasIntruder_ = false;
+  ClumpDef clump_;
+  ClumpState clumpState_;
+  ClumpMotion motion_;
+
+  std::uint64_t step_ = 0;
+  std::uint64_t rebuilds_ = 0;
+  std::uint64_t lastSortStep_ = 0;
+  std::uint32_t nextTag_ = 0;
+  bool prepared_ = false;
+  bool listsStale_ = true;     // structure changed since the last build: rebuild before the next forces
+  // Neighbour-list validity: positions at the last build, the largest squared displacement since.
+  std::vector<double> xAtBuild_, yAtBuild_;
+  double maxDisplacementSq_ = 0.0;
+  // Intruder list validity: clump position at its build and the grains' displacement bound then.
+  double clumpXAtBuild_ = 0.0, clumpYAtBuild_ = 0.0, grainDisplacementAtIntruderBuild_ = 0.0;
+  // Old-index map for structural changes between prepare() calls (identity when empty).
+  std::vector<std::uint32_t> pendingNewToOld_;
+};
+
+}  // namespace wiggle
