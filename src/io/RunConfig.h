@@ -38,9 +38,9 @@ struct DriveDef {
 };
 
 struct BedDef {
-  double batchHeight = 12.0;   // bed.batch_height: height of each poured layer [d]
-  double settleSpeed = 0.05;   // bed.settle_speed: a batch has settled when no grain is faster [sqrt(g d)]
-  double restEnergy = 1e-8;    // bed.rest_energy: final relax until kinetic energy per grain below [m g d]
+  double batchHeight = 20.0;   // bed.batch_height: height of each poured layer [d]
+  double settleSpeed = 0.05;   // bed.settle_speed: pour the next batch when the rms grain speed is below [sqrt(g d)]
+  double restEnergy = 1e-6;    // bed.rest_energy: relax until kinetic energy per grain (1-time-unit mean) below [m g d]
   double maxTime = 2000.0;     // bed.max_time: give up making the bed after this simulated time
   std::string cacheDir;        // bed.cache_dir: where beds are cached ("" = $WIGGLE_CACHE or ~/.cache/wiggle)
 };

@@ -30,26 +30,29 @@ struct ContactParams {
 };
 
 struct ContactForce {
-  double fx, fy;      // force on i
-  double torqueArm;   // rinv (dx fs_y - dy fs_x); torque_i -= radI * torqueArm
-  double overlap;     // radI + radJ - r when touching, else <= 0 [d]
+  double fx, fy;          // force on i
+  double torqueArm;       // rinv (dx fs_y - dy fs_x); torque_i -= radI * torqueArm
+  double overlap;         // radI + radJ - r when touching, else <= 0 [d]
+  double shearX, shearY;  // the pair's history after this step (0 when not touching) [d]
 };
 
-// Returns the force; updates (shearX, shearY) in place. When the pair does not touch the force is
+// Returns the force and the pair's new history (shearX, shearY are the history before the step). When the pair does not touch the force is
 // zero and the history is reset, as LAMMPS does for a neighbour that stopped touching.
 // `updateShear` is false only for the set-up force evaluation before the first step (LAMMPS does
 // not advance the history while update->setupflag is set).
+//
+// Written without branches: every quantity is computed and the cases (touching or not, capped or
+// not, history update or not) are selected afterwards, so that the pair loop vectorises. Each
+// selected value is produced by exactly the operations LAMMPS performs in that case, so the result
+// is bitwise the same as the branching form. Lanes of pairs that do not touch compute NaN (sqrt of
+// a negative overlap) that is never selected.
 inline ContactForce hertzHistoryContact(const ContactParams& p, double dt, double dx, double dy,
                                         double dvx, double dvy, double radI, double radJ,
                                         double omegaI, double omegaJ, double meff,
-                                        double& shearX, double& shearY, bool updateShear) {
+                                        double shearX, double shearY, bool updateShear) {
   const double rsq = dx * dx + dy * dy;
   const double radsum = radI + radJ;
-  if (rsq >= radsum * radsum) {
-    shearX = 0.0;
-    shearY = 0.0;
-    return {0.0, 0.0, 0.0, radsum - std::sqrt(rsq)};
-  }
+  const bool touching = rsq < radsum * radsum;
   const double r = std::sqrt(rsq);
   const double rinv = 1.0 / r;
   const double rsqinv = 1.0 / rsq;
@@ -64,48 +67,41 @@ inline ContactForce hertzHistoryContact(const ContactParams& p, double dt, doubl
 
   // Normal force: Hertz spring plus velocity damping, scaled by sqrt(delta Reff).
   const double damp = meff * p.gammaN * vnnr * rsqinv;
-  double ccel = p.kn * (radsum - r) * rinv - damp;
   const double polyhertz = std::sqrt((radsum - r) * radI * radJ / radsum);
-  ccel *= polyhertz;
+  const double ccel = (p.kn * (radsum - r) * rinv - damp) * polyhertz;
 
   // Relative tangential velocity at the contact point, rotation included.
   const double vtr1 = vt1 + dy * wr3;
   const double vtr2 = vt2 - dx * wr3;
 
-  if (updateShear) {
-    shearX += vtr1 * dt;
-    shearY += vtr2 * dt;
-  }
-  const double shrmagSq = shearX * shearX + shearY * shearY;
-
-  // Project the history onto the current tangent plane (its length is not restored).
-  const double rsht = (shearX * dx + shearY * dy) * rsqinv;
-  if (updateShear) {
-    shearX -= rsht * dx;
-    shearY -= rsht * dy;
-  }
+  // History: accumulate, then project onto the current tangent plane (length not restored).
+  const double accX = updateShear ? shearX + vtr1 * dt : shearX;
+  const double accY = updateShear ? shearY + vtr2 * dt : shearY;
+  const double shrmagSq = accX * accX + accY * accY;
+  const double rsht = (accX * dx + accY * dy) * rsqinv;
+  double sx = updateShear ? accX - rsht * dx : accX;
+  double sy = updateShear ? accY - rsht * dy : accY;
 
   const double dampT = meff * p.gammaT;
-  double fs1 = -polyhertz * (p.kt * shearX + dampT * vtr1);
-  double fs2 = -polyhertz * (p.kt * shearY + dampT * vtr2);
+  double fs1 = -polyhertz * (p.kt * sx + dampT * vtr1);
+  double fs2 = -polyhertz * (p.kt * sy + dampT * vtr2);
 
   // Coulomb cap: |Ft| <= mu |Fn|, with the history rescaled to give exactly the capped force.
   const double fs = std::sqrt(fs1 * fs1 + fs2 * fs2);
   const double fn = p.mu * std::fabs(ccel * r);
-  if (fs > fn) {
-    if (shrmagSq != 0.0) {
-      const double ratio = fn / fs;
-      shearX = ratio * (shearX + dampT * vtr1 / p.kt) - dampT * vtr1 / p.kt;
-      shearY = ratio * (shearY + dampT * vtr2 / p.kt) - dampT * vtr2 / p.kt;
-      fs1 *= ratio;
-      fs2 *= ratio;
-    } else {
-      fs1 = 0.0;
-      fs2 = 0.0;
-    }
-  }
+  const bool capped = fs > fn;
+  const bool rescale = capped && shrmagSq != 0.0;
+  const double ratio = fn / fs;
+  const double cappedX = ratio * (sx + dampT * vtr1 / p.kt) - dampT * vtr1 / p.kt;
+  const double cappedY = ratio * (sy + dampT * vtr2 / p.kt) - dampT * vtr2 / p.kt;
+  sx = rescale ? cappedX : sx;
+  sy = rescale ? cappedY : sy;
+  fs1 = capped ? (rescale ? fs1 * ratio : 0.0) : fs1;
+  fs2 = capped ? (rescale ? fs2 * ratio : 0.0) : fs2;
 
-  return {dx * ccel + fs1, dy * ccel + fs2, rinv * (dx * fs2 - dy * fs1), radsum - r};
+  return {touching ? dx * ccel + fs1 : 0.0, touching ? dy * ccel + fs2 : 0.0,
+          touching ? rinv * (dx * fs2 - dy * fs1) : 0.0, radsum - r,
+          touching ? sx : 0.0, touching ? sy : 0.0};
 }
 
 }  // namespace wiggle

@@ -1,0 +1,295 @@
+// `wiggle model`: the cavity model's geometry (l, l', T_rise, h, T_max) and V_y(T) for the paper's
+// shapes or a user polygon, the clump's atom statistics, and a JSON file with the outline and atoms
+// for the plotting package (paper figure 13). docs/MODEL.md documents the output.
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "Commands.h"
+#include "core/Error.h"
+#include "model/CavityModel.h"
+#include "scenario/Shape.h"
+
+namespace wiggle::cli {
+
+namespace {
+
+struct ModelOptions {
+  std::string shape;
+  std::string vertices;
+  double angle = 0.0;           // [degrees]
+  std::string format = "text";
+  std::string periods;
+  double amplitude = 5.0;       // [d] the paper's Table 1 is for A/d = 5
+  std::string geometryPath;
+  bool clump = false;
+};
+
+// The paper's Table 1 as printed (truncated, not rounded), shown beside the computed values only.
+struct PaperRow {
+  double l, tRise;
+};
+const std::map<std::string, PaperRow>& paperTable() {
+  static const std::map<std::string, PaperRow> rows = {{"disk", {3.50, 2.82}},
+                                                       {"square", {6.50, 3.74}},
+                                                       {"rect_narrow", {9.50, 4.47}},
+                                                       {"rect_wide", {4.50, 3.16}},
+                                                       {"triangle", {8.22, 4.17}}};
+  return rows;
+}
+
+double parseNumber(const std::string& text, const std::string& what) {
+  const char* begin = text.c_str();
+  while (*begin == ' ') ++begin;
+  char* end = nullptr;
+  errno = 0;
+  const double value = std::strtod(begin, &end);
+  while (end && *end == ' ') ++end;
+  if (end == begin || *end != '\0' || errno == ERANGE || !std::isfinite(value))
+    throw Error(what + ": '" + text + "' is not a finite number");
+  return value;
+}
+
+std::vector<std::string> split(const std::string& text, char sep) {
+  std::vector<std::string> parts;
+  std::string part;
+  std::istringstream in(text);
+  while (std::getline(in, part, sep)) parts.push_back(part);
+  if (!text.empty() && text.back() == sep) parts.emplace_back();
+  return parts;
+}
+
+Outline parseVertices(const std::string& text) {
+  Outline vertices;
+  const std::vector<std::string> items = split(text, ';');
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    const std::vector<std::string> xy = split(items[i], ',');
+    if (xy.size() != 2)
+      throw Error("--vertices: vertex " + std::to_string(i + 1) + " '" + items[i] +
+                  "' is not of the form x,y");
+    const std::string what = "--vertices: vertex " + std::to_string(i + 1);
+    vertices.push_back({parseNumber(xy[0], what), parseNumber(xy[1], what)});
+  }
+  return vertices;
+}
+
+std::vector<double> parsePeriods(const std::string& text) {
+  std::vector<double> periods;
+  for (const std::string& item : split(text, ',')) {
+    const double t = parseNumber(item, "--periods");
+    if (!(t > 0.0)) throw Error("--periods: periods must be positive, got '" + item + "'");
+    periods.push_back(t);
+  }
+  if (periods.empty()) throw Error("--periods: empty list");
+  return periods;
+}
+
+// One reported row: a shape, or one side of an asymmetric shape ("name:left" / "name:right").
+struct Row {
+  std::string label;
+  std::string shapeName;
+  bool wholeShape = true;  // false for a :left / :right row
+  CavityGeometry geometry;
+  CavitySide side;
+};
+
+std::vector<Row> rowsFor(const Shape& shape) {
+  const CavityGeometry g = cavityGeometry(shape.outline);
+  if (!g.sidesDiffer()) return {Row{shape.name, shape.name, true, g, g.left}};
+  return {Row{shape.name + ":left", shape.name, false, g, g.left},
+          Row{shape.name + ":right", shape.name, false, g, g.right}};
+}
+
+std::string formatted(const char* format, double value) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, format, value);
+  return buf;
+}
+
+void printGeometryTable(const std::vector<Row>& rows, const ModelOptions& opt) {
+  if (opt.format == "csv") {
+    std::printf("shape,l,l_prime,T_rise,h,T_max\n");
+    for (const Row& r : rows)
+      std::printf("%s,%.6f,%.6f,%.6f,%.6f,%.6f\n", r.label.c_str(), r.side.l, r.side.lPrime,
+                  r.side.tRise, r.geometry.h, r.geometry.tMax);
+    return;
+  }
+  // The paper's values stand beside unrotated paper shapes only.
+  bool showPaper = false;
+  for (const Row& r : rows)
+    showPaper = showPaper || (opt.angle == 0.0 && r.wholeShape && paperTable().count(r.shapeName));
+  std::printf("Cavity model (paper section 3.5), d = 1, g = 1%s\n",
+              opt.angle != 0.0 ? (", rotated by " + formatted("%g", opt.angle) + " deg").c_str()
+                               : "");
+  std::printf("%-18s %8s %8s %8s %8s %8s", "shape", "l", "l'", "T_rise", "h", "T_max");
+  if (showPaper) std::printf("   %8s %8s", "paper l", "T_rise");
+  std::printf("\n");
+  for (const Row& r : rows) {
+    std::printf("%-18s %8.3f %8.3f %8.3f %8.3f %8.3f", r.label.c_str(), r.side.l, r.side.lPrime,
+                r.side.tRise, r.geometry.h, r.geometry.tMax);
+    const auto paper = paperTable().find(r.shapeName);
+    if (showPaper && r.wholeShape && paper != paperTable().end())
+      std::printf("   %8.2f %8.2f", paper->second.l, paper->second.tRise);
+    std::printf("\n");
+  }
+  if (showPaper)
+    std::printf("(the paper truncates: e.g. T_rise = sqrt(8) = 2.828 is printed 2.82)\n");
+}
+
+void printRateTable(const std::vector<Row>& rows, const std::vector<double>& periods,
+                    const ModelOptions& opt) {
+  if (opt.format == "csv") {
+    std::printf("shape,T,vy\n");
+    for (const Row& r : rows)
+      for (double t : periods)
+        std::printf("%s,%.6g,%.6f\n", r.label.c_str(), t,
+                    cavityRiseRate(r.geometry, r.side, t, opt.amplitude));
+    return;
+  }
+  std::printf("\nV_y(T) [sqrt(g d)] at A = %g (A_min = %g)\n", opt.amplitude, minimumAmplitude());
+  std::printf("%8s", "T");
+  for (const Row& r : rows) std::printf(" %14s", r.label.c_str());
+  std::printf("\n");
+  for (double t : periods) {
+    std::printf("%8.3g", t);
+    for (const Row& r : rows)
+      std::printf(" %14.4f", cavityRiseRate(r.geometry, r.side, t, opt.amplitude));
+    std::printf("\n");
+  }
+}
+
+void printClumpTable(const std::vector<Shape>& shapes, const ModelOptions& opt) {
+  const bool csv = opt.format == "csv";
+  if (csv)
+    std::printf("shape,atoms,surface_atoms,guard_atoms,max_overshoot,max_outline_gap,"
+                "max_envelope_depth,max_surface_spacing,max_lodge_depth,min_corner_deg\n");
+  else
+    std::printf("%-12s %6s %8s %6s %9s %9s %9s %8s %8s %8s\n", "shape", "atoms", "surface",
+                "guard", "overshoot", "out.gap", "env.depth", "spacing", "lodge", "corner");
+  for (const Shape& shape : shapes) {
+    const ClumpAtoms atoms = buildClumpAtoms(shape);
+    const ClumpQuality q = measureClump(shape, atoms);
+    std::printf(csv ? "%s,%zu,%zu,%zu,%.4f,%.4f,%.4f,%.4f,%.4f,%.1f\n"
+                    : "%-12s %6zu %8zu %6zu %9.4f %9.4f %9.4f %8.4f %8.4f %8.1f\n",
+                shape.name.c_str(), q.surfaceAtoms + q.guardAtoms, q.surfaceAtoms, q.guardAtoms,
+                std::max(0.0, q.maxOvershoot), q.maxOutlineGap, q.maxEnvelopeDepth,
+                q.maxSurfaceSpacing, q.maxLodgeDepth, q.minInteriorAngle);
+  }
+  if (!csv)
+    std::printf("(lengths in d: atoms' reach beyond the outline, outline's distance from the "
+                "atoms, deepest cusp of the envelope, neighbour spacing, how deep a 0.9 grain "
+                "sinks between two surface atoms; sharpest convex corner in degrees)\n");
+}
+
+void writeGeometryJson(const Shape& shape, const std::string& path) {
+  const ClumpAtoms atoms = buildClumpAtoms(shape);
+  const CavityGeometry g = cavityGeometry(shape.outline);
+  nlohmann::json j;
+  j["shape"] = shape.name;
+  j["outline"] = shape.outline;
+  std::vector<OutlinePoint> all = atoms.surface;
+  all.insert(all.end(), atoms.guard.begin(), atoms.guard.end());
+  j["atoms"] = all;
+  j["n_surface_atoms"] = atoms.surface.size();  // atoms[0 .. n) are the shell, the rest guards
+  j["atom_radius"] = atoms.atomRadius;
+  j["y0"] = g.y0;
+  j["y_nr_left"] = g.left.yNoReturn;
+  j["y_nr_right"] = g.right.yNoReturn;
+  j["l_left"] = g.left.l;
+  j["l_right"] = g.right.l;
+  j["h"] = g.h;
+  j["T_rise_left"] = g.left.tRise;
+  j["T_rise_right"] = g.right.tRise;
+  j["T_max"] = g.tMax;
+  // Written next to the target and renamed, so a reader never sees half a file.
+  const std::filesystem::path target(path);
+  std::filesystem::path tmp = target;
+  tmp += ".tmp";
+  {
+    std::ofstream out(tmp);
+    if (!out) throw Error("--geometry: cannot write '" + tmp.string() + "'");
+    out << j.dump() << "\n";
+    if (!out) throw Error("--geometry: error while writing '" + tmp.string() + "'");
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, target, ec);
+  if (ec) throw Error("--geometry: cannot rename to '" + path + "': " + ec.message());
+}
+
+void runModel(const ModelOptions& opt) {
+  if (!std::isfinite(opt.angle)) throw Error("--angle: not a finite number");
+  if (!std::isfinite(opt.amplitude) || opt.amplitude < 0.0)
+    throw Error("--amplitude: must be a finite number >= 0");
+  std::vector<Shape> shapes;
+  if (!opt.vertices.empty()) {
+    if (!opt.shape.empty() && opt.shape != "polygon")
+      throw Error("--vertices: only with --shape polygon (or no --shape), not '" + opt.shape + "'");
+    const Outline vertices = parseVertices(opt.vertices);
+    requireValidPolygon(vertices, "--vertices");  // the same check as makeShape, named for the CLI
+    shapes.push_back(makeShape("polygon", vertices, opt.angle));
+  } else if (!opt.shape.empty()) {
+    if (opt.shape == "polygon") throw Error("--shape polygon: needs --vertices \"x1,y1;x2,y2;...\"");
+    shapes.push_back(makeShape(opt.shape, {}, opt.angle));
+  } else {
+    if (!opt.geometryPath.empty())
+      throw Error("--geometry: choose one shape with --shape or --vertices");
+    for (const std::string& name : paperShapeNames()) shapes.push_back(makeShape(name, {}, opt.angle));
+  }
+  std::vector<double> periods;
+  if (!opt.periods.empty()) periods = parsePeriods(opt.periods);
+
+  std::vector<Row> rows;
+  for (const Shape& shape : shapes)
+    for (Row& row : rowsFor(shape)) rows.push_back(std::move(row));
+
+  if (opt.clump) {
+    printClumpTable(shapes, opt);
+  } else if (opt.format == "csv" && !periods.empty()) {
+    printRateTable(rows, periods, opt);  // one csv table per invocation: the rates replace Table 1
+  } else {
+    printGeometryTable(rows, opt);
+    if (!periods.empty()) printRateTable(rows, periods, opt);
+  }
+  if (!opt.geometryPath.empty()) writeGeometryJson(shapes.front(), opt.geometryPath);
+}
+
+}  // namespace
+
+void addModelCommand(CLI::App& app) {
+  auto opt = std::make_shared<ModelOptions>();
+  auto* cmd = app.add_subcommand(
+      "model",
+      "The cavity model (paper section 3.5): l, l', T_rise, h and T_max of a shape; with no shape, "
+      "all five paper shapes (the paper's Table 1). Shapes whose two sides give different l (not "
+      "mirror-symmetric) get one row per side, named shape:left / shape:right (the cavity on "
+      "that side).");
+  cmd->add_option("--shape", opt->shape,
+                  "disk | square | rect_narrow | rect_wide | triangle | polygon");
+  cmd->add_option("--vertices", opt->vertices,
+                  "polygon outline \"x1,y1;x2,y2;...\" [d], either orientation, convex or concave");
+  cmd->add_option("--angle", opt->angle, "rotation about the centroid, counter-clockwise [degrees]");
+  cmd->add_option("--format", opt->format, "text (default) or csv")
+      ->check(CLI::IsMember({"text", "csv"}));
+  cmd->add_option("--periods", opt->periods,
+                  "also print V_y(T) at these periods \"0.5,1,2,...\" [sqrt(d/g)]; with csv, "
+                  "only the V_y table (columns shape,T,vy)");
+  cmd->add_option("--amplitude", opt->amplitude,
+                  "amplitude A for --periods [d] (default 5; V_y = 0 for A <= A_min = 0.5)");
+  cmd->add_option("--geometry", opt->geometryPath,
+                  "write the chosen shape's outline, atoms and model points to this JSON file");
+  cmd->add_flag("--clump", opt->clump,
+                "print the atom clump's statistics (counts, envelope deviation, lodge depth) "
+                "instead of the model table");
+  cmd->callback([opt] { runModel(*opt); });
+}
+
+}  // namespace wiggle::cli

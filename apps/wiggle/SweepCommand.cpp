@@ -1,0 +1,70 @@
+// `wiggle sweep SWEEP.toml [--out DIR] [--jobs N] [--threads T] [--dry-run]`, also under
+// `mpirun -np N wiggle sweep ...` (docs/SWEEPS.md). The hidden `--make-bed CONFIG.toml` is the
+// bed task the sweep runs in a child process.
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+
+#include "Commands.h"
+#include "core/Error.h"
+#include "sweep/SweepRunner.h"
+
+namespace wiggle::cli {
+
+namespace {
+
+struct SweepArgs {
+  std::string file;
+  std::string out;
+  int jobs = 0;
+  int threads = 0;
+  bool dryRun = false;
+  bool local = false;
+  std::string makeBed;
+};
+
+}  // namespace
+
+void addSweepCommand(CLI::App& app) {
+  auto args = std::make_shared<SweepArgs>();
+  auto* cmd = app.add_subcommand("sweep", "Run every case of a sweep file (locally, or under mpirun/srun), resumably");
+  cmd->add_option("sweep", args->file, "Sweep file (TOML: [sweep], [base], [grid], [[case]]; docs/CONFIG.md)");
+  cmd->add_option("--out", args->out, "Sweep directory (default: sweep-<sweep name>)");
+  cmd->add_option("--jobs", args->jobs,
+                  "Cases at once (default: sweep.jobs, else one per core); under MPI: per worker rank (default 1)")
+      ->check(CLI::Range(1, 100000));
+  cmd->add_option("--threads", args->threads,
+                  "Threads per case (default: sweep.threads_per_case, else cores / jobs)")
+      ->check(CLI::Range(1, 1024));
+  cmd->add_flag("--dry-run", args->dryRun, "List the cases and the estimated cost; run nothing");
+  cmd->add_flag("--local", args->local, "Ignore an MPI launcher: run every case from this process");
+  cmd->add_option("--make-bed", args->makeBed, "(internal) make and cache the bed of a run config")->group("");
+  cmd->footer(
+      "Each case runs in DIR/cases/<case name>/ as `wiggle run ... --resume`; DIR/results.csv is rewritten after\n"
+      "every case, DIR/sweep.log records what happened. Run the same command again to resume: finished cases\n"
+      "are skipped, interrupted ones continue from their checkpoints, failed ones are retried.\n"
+      "Exit status: 0 when every case is ok, 1 when some failed or did not finish, 2 for bad input.");
+  cmd->callback([args] {
+    if (!args->makeBed.empty()) {
+      makeSweepBed(args->makeBed, args->threads);
+      return;
+    }
+    if (args->file.empty()) throw Error("sweep: no sweep file given (wiggle sweep SWEEP.toml)");
+    SweepOptions options;
+    options.outDir = args->out;
+    options.jobs = args->jobs;
+    options.threads = args->threads;
+    options.dryRun = args->dryRun;
+    options.allowMpi = !args->local;
+    const SweepOutcome outcome = runSweep(args->file, options);
+    if (outcome.worker || args->dryRun) return;
+    if (outcome.failed || outcome.pending) {
+      std::fprintf(stderr, "wiggle: %s\n", outcome.summary.c_str());
+      std::fflush(nullptr);
+      std::exit(1);
+    }
+    std::printf("%s; results in %s/results.csv\n", outcome.summary.c_str(), outcome.outDir.c_str());
+  });
+}
+
+}  // namespace wiggle::cli

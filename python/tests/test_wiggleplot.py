@@ -1,0 +1,305 @@
+"""Tests of wiggleplot on synthetic inputs with known numbers (tests/synthetic.py): the data behind
+each figure first, then that every figure file is written and non-empty."""
+import contextlib
+import io
+import math
+import os
+import shutil
+import tempfile
+import unittest
+
+import numpy as np
+
+from tests import synthetic
+from wiggleplot import cli, geomplots, prepare, readers, runplots, sweepplots
+from wiggleplot.report import Report
+
+
+def quiet_report():
+    return Report(quiet=True)
+
+
+class DataDirs(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.mkdtemp(prefix="wiggleplot-test-")
+        cls.run_dir = os.path.join(cls.tmp, "run")
+        cls.summary = synthetic.write_run(cls.run_dir)
+        cls.sweep_dir = os.path.join(cls.tmp, "sweep")
+        synthetic.write_sweep(cls.sweep_dir)
+        cls.sweep_mu_dir = os.path.join(cls.tmp, "sweep_mu")
+        synthetic.write_sweep(cls.sweep_mu_dir, with_runs=False, mus=(0.0, 0.1, 0.3))
+        cls.geometry = synthetic.write_geometries(os.path.join(cls.tmp, "geometry"))
+
+    @classmethod
+    def tearDownClass(cls):
+        shutil.rmtree(cls.tmp, ignore_errors=True)
+
+
+class ReaderTest(DataDirs):
+    def test_table_parses_numbers_and_empty_cells(self):
+        rates = readers.read_phase_rates(self.run_dir)
+        self.assertEqual(len(rates["bin"]), 20)
+        self.assertTrue(math.isnan(rates["vy_mean"][synthetic.EMPTY_BIN]))
+        self.assertAlmostEqual(rates["vy_mean"][2], synthetic.phase_rate(2.5), places=9)
+
+    def test_results_keep_strings(self):
+        results = readers.read_results(self.sweep_dir)
+        self.assertEqual(results["status"][-1], "failed")
+        self.assertTrue(math.isnan(results["vy"][-1]))
+        self.assertEqual(set(results[prepare.SHAPE].tolist()), {"disk", "triangle"})
+
+    def test_dump_index_and_frames_sorted_by_id(self):
+        dump = readers.Dump(os.path.join(self.run_dir, "dumps", "dump.lammpstrj"))
+        self.assertEqual(dump.steps, [round(t / synthetic.DT) for t in synthetic.DUMP_TIMES])
+        frame = dump.frame(1)
+        ids, types, x, y, r = synthetic.dump_frame_atoms(synthetic.DUMP_TIMES[1])
+        np.testing.assert_array_equal(frame["id"], ids)
+        np.testing.assert_array_equal(frame["type"], types)
+        np.testing.assert_allclose(frame["x"], x, atol=1e-6)
+        np.testing.assert_allclose(frame["radius"], r, atol=1e-4)
+
+    def test_truncated_dump_is_a_format_error(self):
+        path = os.path.join(self.tmp, "bad.lammpstrj")
+        with open(os.path.join(self.run_dir, "dumps", "dump.lammpstrj")) as f:
+            lines = f.readlines()
+        with open(path, "w") as f:
+            f.writelines(lines[:40])
+        with self.assertRaises(readers.FormatError):
+            readers.Dump(path).frame(0)
+
+
+class RunDataTest(DataDirs):
+    def test_rate_lines_follow_summary(self):
+        traj = readers.read_trajectory(self.run_dir)
+        lines = prepare.rate_lines(self.summary, traj)
+        tt, yy, v = lines["vy"]
+        self.assertAlmostEqual(v, synthetic.SLOPE, places=9)
+        self.assertAlmostEqual((yy[1] - yy[0]) / (tt[1] - tt[0]), synthetic.SLOPE, places=9)
+        y0 = synthetic.traj_xy(0.0)[1]
+        self.assertAlmostEqual(yy[0], self.summary["y_initial"] - y0, places=9)
+        tt, yy, v = lines["slope"]
+        self.assertAlmostEqual((yy[1] - yy[0]) / (tt[1] - tt[0]), synthetic.SLOPE * 1.01, places=9)
+        # The least-squares line of the given slope passes through the mean of the fitted samples.
+        t, dy = prepare.displacement(traj)
+        inside = (t >= 10) & (t <= 100)
+        at_mean = yy[0] + v * (t[inside].mean() - tt[0])
+        self.assertAlmostEqual(at_mean, dy[inside].mean(), places=9)
+
+    def test_model_rate_interpolates_the_curve_and_stays_silent_below_t_rise(self):
+        model = readers.read_model(self.run_dir)
+        self.assertAlmostEqual(prepare.model_rate_at(model, 5.0), 0.15, places=12)
+        self.assertIsNone(prepare.model_rate_at(model, 2.0))
+        self.assertIsNone(prepare.model_rate_at(model, 20.0))
+
+    def test_model_rate_prefers_the_value_written_for_the_run(self):
+        model = dict(readers.read_model(self.run_dir), vy_at_period=0.123)
+        self.assertEqual(prepare.model_rate_at(model, 5.0), 0.123)
+        self.assertIsNone(prepare.model_rate_at(model, 2.0))  # below T_rise: no rise drawn
+
+    def test_phase_bars_blank_empty_bins(self):
+        centers, vy, empty = prepare.phase_bars(readers.read_phase_rates(self.run_dir))
+        np.testing.assert_allclose(centers, np.arange(20) + 0.5)
+        self.assertTrue(empty[synthetic.EMPTY_BIN] and empty.sum() == 1)
+        self.assertTrue(np.isnan(vy[synthetic.EMPTY_BIN]))
+        np.testing.assert_allclose(vy[~empty], synthetic.phase_rate(centers[~empty]), atol=1e-9)
+
+    def test_field_grids_values_and_masks(self):
+        fields = readers.read_fields(self.run_dir)
+        outline = prepare.envelope_of_atoms(synthetic.disk_atoms(), synthetic.ATOM_R)
+        grids = prepare.field_grids(fields, radius=15.0, outline=outline)
+        np.testing.assert_array_equal(grids["phases"], synthetic.FIELD_PHASES)
+        xs, ys = grids["x"], grids["y"]
+        gx, gy = np.meshgrid(xs, ys)
+        r = np.hypot(gx, gy)
+        for k, p in enumerate(synthetic.FIELD_PHASES):
+            phi, vx, vy, sxx, _, syy = synthetic.field_values(p, gx, gy)
+            ok = ~grids["phi"].mask[k]
+            np.testing.assert_allclose(grids["phi"][k][ok], phi[ok], atol=1e-6)
+            np.testing.assert_allclose(grids["speed"][k][ok], np.hypot(vx, vy)[ok], atol=1e-6)
+            np.testing.assert_allclose(grids["pressure"][k][ok], (-(sxx + syy) / 2)[ok], atol=1e-5)
+            for name in ("phi", "speed", "pressure"):
+                mask = grids[name].mask[k]
+                self.assertTrue(mask[r > 15.0].all(), "points beyond r = 15 must be masked")
+                self.assertTrue(mask[r < synthetic.DISK_RADIUS - 0.01].all(), "intruder must be masked")
+                self.assertFalse(mask[(r > synthetic.DISK_RADIUS + 0.5) & (r <= 15.0)].any())
+        self.assertTrue(np.all(grids["frames"] == 50))
+
+    def test_envelope_of_atoms_matches_outer_radius(self):
+        hull = prepare.envelope_of_atoms(synthetic.disk_atoms(), synthetic.ATOM_R)
+        radii = np.hypot(hull[:, 0], hull[:, 1])
+        self.assertLess(radii.max(), synthetic.DISK_RADIUS + 1e-9)
+        self.assertGreater(radii.min(), synthetic.DISK_RADIUS - 0.1)
+
+    def test_outline_from_dump_is_centred_on_the_trajectory(self):
+        run = runplots.Run(self.run_dir, quiet_report())
+        outline, source = run.intruder_outline()
+        self.assertEqual(source, "dump atoms")
+        np.testing.assert_allclose(outline.mean(axis=0), [0, 0], atol=0.15)
+        self.assertAlmostEqual(np.hypot(outline[:, 0], outline[:, 1]).max(), synthetic.DISK_RADIUS, places=6)
+
+    def test_frame_choice(self):
+        self.assertEqual(prepare.spread_frames(3), [0, 1, 2])
+        self.assertEqual(prepare.spread_frames(11, 6), [0, 2, 4, 6, 8, 10])
+        self.assertEqual(prepare.frames_near([0, 50, 100], [40, 100, 90]), [1, 2])
+
+
+class SweepDataTest(DataDirs):
+    def test_aggregate_averages_seeds_and_drops_failed(self):
+        results = readers.read_results(self.sweep_dir)
+        records = prepare.aggregate(results, [prepare.SHAPE, prepare.AMPLITUDE, prepare.PERIOD])
+        self.assertEqual(len(records), 2 * 2 * 4)
+        for rec in records:
+            j = synthetic.SWEEP_PERIODS.index(rec[prepare.PERIOD])
+            expected = synthetic.BASE[rec[prepare.SHAPE]][rec[prepare.AMPLITUDE]][j]
+            self.assertAlmostEqual(rec["vy"], expected, places=12)
+            self.assertAlmostEqual(rec["std"], synthetic.SEED_OFFSET * math.sqrt(2), places=12)
+            self.assertEqual(rec["n"], 2)
+            self.assertNotIn(synthetic.FAILED_CASE, rec["cases"])
+
+    def test_t_rising_interpolates_the_zero_crossing(self):
+        self.assertAlmostEqual(prepare.t_rising([1, 2, 4, 8], [-0.02, -0.01, 0.03, 0.05])[0], 2.5)
+        t, lo, hi, note = prepare.t_rising([1, 2, 4, 8], [-0.04, -0.03, -0.02, -0.01])
+        self.assertTrue(math.isnan(t) and lo == 8 and note == "never rises")
+        t, lo, hi, note = prepare.t_rising([1, 2], [0.01, 0.02])
+        self.assertTrue(math.isnan(t) and hi == 1)
+        # The first crossing counts, not a later one after a dip.
+        self.assertAlmostEqual(prepare.t_rising([1, 2, 3, 4], [-1, 1, -1, 3])[0], 1.5)
+
+    def test_table1(self):
+        sweep = sweepplots.Sweep(self.sweep_dir, quiet_report())
+        rows = {r["shape"]: r for r in sweepplots.table1(sweep)}
+        self.assertAlmostEqual(rows["disk"]["T_rising_observed"], synthetic.DISK_T_RISING, places=12)
+        self.assertEqual(rows["disk"]["A"], 5.0)
+        self.assertEqual((rows["disk"]["T_below"], rows["disk"]["T_above"]), (2.0, 4.0))
+        self.assertAlmostEqual(rows["disk"]["T_rise_model"], synthetic.T_RISE)
+        self.assertTrue(math.isnan(rows["triangle"]["T_rising_observed"]))
+        self.assertTrue(math.isnan(rows["triangle"]["T_rise_model"]))  # no model.json for it
+        self.assertEqual(sweep.model("disk")["amplitude"], 5.0)  # the largest amplitude's model
+
+    def test_rate_map_grid(self):
+        sweep = sweepplots.Sweep(self.sweep_dir, quiet_report())
+        amps, periods, grid, counts = sweepplots.rate_map(sweep, "triangle", sweep.rows)
+        np.testing.assert_array_equal(amps, synthetic.SWEEP_AMPS)
+        np.testing.assert_array_equal(periods, synthetic.SWEEP_PERIODS)
+        for i, a in enumerate(amps):
+            np.testing.assert_allclose(grid[i], synthetic.BASE["triangle"][a], atol=1e-12)
+        self.assertTrue((counts == 2).all())
+
+    def test_curves_and_friction_selection(self):
+        sweep = sweepplots.Sweep(self.sweep_mu_dir, quiet_report())
+        rows, mu = sweep.main_mu_rows()
+        self.assertIn(mu, (0.0, 0.1, 0.3))
+        self.assertEqual(int(rows.sum()), 2 * 2 * 4 * 2)
+        rows, amplitude = sweepplots.mu_rows(sweep)
+        self.assertEqual(amplitude, 5.0)  # every A has all three mu: the larger wins
+        curves = sweepplots.curves_by(sweep, rows, prepare.MU)
+        T, vy, std, n = curves["disk"][0.3]
+        np.testing.assert_allclose(vy, np.array(synthetic.BASE["disk"][5.0]) + 0.3, atol=1e-12)
+        np.testing.assert_array_equal(n, 2)
+        # The failed case (mu = 0.0, disk, A = 5, T = 4) is absent from the count.
+        T, vy, std, n = curves["disk"][0.0]
+        self.assertEqual(list(n), [2, 2, 2, 2])
+
+    def test_pooled_phase_rates_weight_by_samples(self):
+        d = os.path.join(self.tmp, "pool")
+        for k, (v, n) in enumerate(((1.0, 10), (4.0, 30))):
+            os.makedirs(os.path.join(d, str(k)), exist_ok=True)
+            with open(os.path.join(d, str(k), "phase_rates.csv"), "w") as f:
+                f.write("bin,phase_center,vy_mean,samples\n")
+                for b in range(20):
+                    f.write(f"{b},{b + 0.5},{v if b else ''},{n if b else 0}\n")
+        centers, vy = sweepplots.pooled_phase_rates([os.path.join(d, "0"), os.path.join(d, "1")])
+        self.assertTrue(np.isnan(vy[0]))
+        np.testing.assert_allclose(vy[1:], (1.0 * 10 + 4.0 * 30) / 40)
+
+    def test_geometry_marks(self):
+        g = readers.read_geometry(self.geometry[1])
+        marks = geomplots.geometry_marks(g)
+        self.assertAlmostEqual(marks["y0"], g["y0"])
+        self.assertEqual([m[2] for m in marks["nr"]], ["left", "right"])
+        self.assertAlmostEqual(marks["nr"][0][0], -4.75)
+        self.assertAlmostEqual(marks["l"][0], g["l_left"])
+
+
+class FigureFilesTest(DataDirs):
+    def run_cli(self, *args):
+        out, err = io.StringIO(), io.StringIO()
+        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+            code = cli.main(list(args))
+        return code, out.getvalue(), err.getvalue()
+
+    def assert_files(self, directory, names):
+        for name in names:
+            path = os.path.join(directory, name)
+            self.assertTrue(os.path.isfile(path), f"{path} missing")
+            self.assertGreater(os.path.getsize(path), 1000, f"{path} is (nearly) empty")
+
+    def test_run_directory(self):
+        code, out, err = self.run_cli(self.run_dir)
+        self.assertEqual(code, 0, err)
+        figures = os.path.join(self.run_dir, "figures")
+        self.assert_files(figures, [f"{n}.{e}" for n in ("trajectory", "snapshots", "phase_rates", "fields")
+                                    for e in ("png", "pdf")])
+
+    def test_movie(self):
+        if not (shutil.which("ffmpeg") or os.path.exists("/usr/bin/ffmpeg")):
+            self.skipTest("no ffmpeg")
+        out_dir = os.path.join(self.tmp, "movie")
+        run = runplots.Run(self.run_dir, quiet_report())
+        runplots.write_movie(run, out_dir)
+        self.assert_files(out_dir, ["movie.mp4"])
+
+    def test_snapshot_times(self):
+        out_dir = os.path.join(self.tmp, "snap")
+        code, _, err = self.run_cli(self.run_dir, "--times", "0,100", "--format", "png", "--out", out_dir)
+        self.assertEqual(code, 0, err)
+        self.assert_files(out_dir, ["snapshots.png"])
+
+    def test_sweep_directory(self):
+        code, out, err = self.run_cli(self.sweep_mu_dir, "--format", "png")
+        self.assertEqual(code, 0, err)
+        figures = os.path.join(self.sweep_mu_dir, "figures")
+        self.assert_files(figures, ["rate_vs_period.png", "rate_vs_period_mu.png", "rate_map.png",
+                                    "table1.png"])
+        code, out, err = self.run_cli(self.sweep_dir)
+        self.assertEqual(code, 0, err)
+        figures = os.path.join(self.sweep_dir, "figures")
+        self.assert_files(figures, [f"{n}.{e}" for n in ("rate_vs_period", "rate_map", "table1",
+                                                         "trajectories", "phase_rates")
+                                    for e in ("png", "pdf")])
+        self.assertIn("contact.mu does not vary", out)
+        table = readers.read_table(os.path.join(figures, "table1.csv"))
+        disk = list(table["shape"]).index("disk")
+        self.assertAlmostEqual(table["T_rising_observed"][disk], synthetic.DISK_T_RISING)
+
+    def test_geometry(self):
+        out_dir = os.path.join(self.tmp, "geom")
+        code, _, err = self.run_cli("--geometry", *self.geometry, "--out", out_dir)
+        self.assertEqual(code, 0, err)
+        self.assert_files(out_dir, ["geometry.png", "geometry.pdf"])
+
+    def test_missing_optional_inputs_are_notes(self):
+        d = os.path.join(self.tmp, "bare")
+        synthetic.write_run(d, with_fields=False, with_dump=False, with_model=False)
+        os.remove(os.path.join(d, "phase_rates.csv"))
+        code, out, err = self.run_cli(d, "--format", "png", "--movie")
+        self.assertEqual(code, 0, err)
+        self.assert_files(os.path.join(d, "figures"), ["trajectory.png"])
+        for skipped in ("snapshots skipped", "phase-rate figure skipped", "field maps skipped",
+                        "movie skipped"):
+            self.assertIn(skipped, out)
+
+    def test_bad_input_is_one_line_and_status_2(self):
+        code, _, err = self.run_cli(os.path.join(self.tmp, "nowhere"))
+        self.assertEqual(code, 2)
+        self.assertEqual(len(err.strip().splitlines()), 1)
+        code, _, err = self.run_cli(self.tmp)  # a directory that is neither kind
+        self.assertEqual(code, 2)
+        self.assertIn("neither a run directory", err)
+        code, _, err = self.run_cli(self.run_dir, "--format", "gif")
+        self.assertEqual(code, 2)
+
+
+if __name__ == "__main__":
+    unittest.main()

@@ -1,0 +1,23 @@
+"""What a plotting call did: the files it wrote and the notes on what it skipped and why."""
+import sys
+
+
+class Report:
+    def __init__(self, stream=None, quiet=False):
+        self.written = []
+        self.notes = []
+        self._stream = stream
+        self._quiet = quiet
+
+    def wrote(self, paths):
+        for p in paths:
+            self.written.append(p)
+            self._say(f"wrote {p}")
+
+    def note(self, message):
+        self.notes.append(message)
+        self._say(f"note: {message}")
+
+    def _say(self, line):
+        if not self._quiet:
+            print(line, file=self._stream or sys.stdout)

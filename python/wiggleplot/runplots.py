@@ -1,0 +1,391 @@
+"""Figures of one run directory: y(t) with the rates (paper fig. 2), snapshots (figs 3-4), the
+phase-resolved rate (fig. 8), the coarse-grained fields (figs 9-11) and an optional movie."""
+import os
+import shutil
+
+import numpy as np
+from matplotlib.collections import EllipseCollection
+from matplotlib.patches import Polygon
+
+from wiggleplot import prepare, readers, style
+from wiggleplot.style import plt
+
+
+class Run:
+    """A run directory's inputs, each read once and None when absent or unreadable."""
+
+    def __init__(self, run_dir, report):
+        self.dir = run_dir
+        self.report = report
+        self.config = self._try(readers.read_config, "config.toml") or {}
+        self.summary = self._try(readers.read_summary, "summary.json") or {}
+        self.trajectory = self._try(readers.read_trajectory, "trajectory.csv")
+        self.model = self._try(readers.read_model, "model.json")
+        self.dt = float(readers.config_value(self.config, "run.dt", 1e-4))
+        self._dump = None
+        self._dump_tried = False
+
+    def _try(self, reader, name):
+        try:
+            return reader(self.dir)
+        except FileNotFoundError:
+            return None
+        except (readers.FormatError, ValueError, KeyError) as e:
+            self.report.note(f"{name} unreadable, skipped: {e}")
+            return None
+
+    def meta(self, key, config_key):
+        """A case parameter from summary.json, else from config.toml."""
+        if key in self.summary:
+            return self.summary[key]
+        return readers.config_value(self.config, config_key)
+
+    @property
+    def period(self):
+        v = self.meta("period", "drive.period")
+        return None if v is None else float(v)
+
+    def label(self):
+        """'disk, A = 3 d, T = 5, mu = 0.1' from whatever parameters are known."""
+        parts = []
+        shape = self.meta("shape", "intruder.shape")
+        if shape is not None:
+            parts.append(str(shape))
+        for key, ckey, fmt in (("amplitude", "drive.amplitude", r"$A$ = {:g}"),
+                               ("period", "drive.period", r"$T$ = {:g}"),
+                               ("mu", "contact.mu", r"$\mu$ = {:g}")):
+            v = self.meta(key, ckey)
+            if v is not None:
+                parts.append(fmt.format(float(v)))
+        return ", ".join(parts)
+
+    def dump(self):
+        if not self._dump_tried:
+            self._dump_tried = True
+            path = os.path.join(self.dir, "dumps", "dump.lammpstrj")
+            if os.path.exists(path):
+                try:
+                    self._dump = readers.Dump(path)
+                except (readers.FormatError, ValueError) as e:
+                    self.report.note(f"dump unreadable, skipped: {e}")
+        return self._dump
+
+    def frame_times(self):
+        return np.array(self.dump().steps, dtype=float) * self.dt
+
+    def intruder_outline(self):
+        """The intruder's outline in its own frame (relative to the centre the trajectory and the
+        fields use): geometry.json's outline when the run directory has one, else the envelope of
+        the intruder atoms (type 3) of the first dump frame shifted by the trajectory's centre."""
+        path = os.path.join(self.dir, "geometry.json")
+        if os.path.exists(path):
+            try:
+                return readers.read_geometry(path)["outline"], "geometry.json"
+            except (readers.FormatError, ValueError, KeyError) as e:
+                self.report.note(f"geometry.json unreadable: {e}")
+        dump = self.dump()
+        if dump is None or self.trajectory is None:
+            return None, None
+        frame = dump.frame(0)
+        mine = frame["type"] == 3
+        if not mine.any():
+            return None, None
+        t0 = dump.steps[0] * self.dt
+        traj = self.trajectory
+        cx = float(np.interp(t0, traj["t"], traj["x"]))
+        cy = float(np.interp(t0, traj["t"], traj["y"]))
+        atoms = np.column_stack([frame["x"][mine] - cx, frame["y"][mine] - cy])
+        # Undo a periodic wrap in x (the box is periodic; the intruder may straddle the seam).
+        width = frame.box[0][1] - frame.box[0][0]
+        atoms[:, 0] -= width * np.round(atoms[:, 0] / width)
+        radius = float(np.median(frame["radius"][mine]))
+        return prepare.envelope_of_atoms(atoms, radius), "dump atoms"
+
+
+# --- fig. 2: y(t) - y(0) --------------------------------------------------------------------------
+
+def plot_trajectory(run, out_dir, formats):
+    if run.trajectory is None:
+        run.report.note("no trajectory.csv: y(t) figure skipped")
+        return
+    t, dy = prepare.displacement(run.trajectory)
+    fig, ax = plt.subplots(figsize=(style.COLUMN_WIDTH * 1.3, 2.7))
+    ax.plot(t, dy, color="0.25", lw=0.9, label="intruder")
+    lines = prepare.rate_lines(run.summary, run.trajectory)
+    if "vy" in lines:
+        tt, yy, v = lines["vy"]
+        ax.plot(tt, yy, color="#d95f02", lw=1.8, label=rf"$V_y$ = {v:.3g} (paper rule)")
+        ax.plot(tt, yy, "o", color="#d95f02", ms=3.5)
+    if "slope" in lines:
+        tt, yy, v = lines["slope"]
+        ax.plot(tt, yy, "--", color="#1b9e77", lw=1.2, label=rf"least squares: {v:.3g}")
+    vm = prepare.model_rate_at(run.model, run.period)
+    if vm is not None and "vy" in lines:
+        tt, yy, _ = lines["vy"]
+        ax.plot(tt, yy[0] + vm * (tt - tt[0]), ":", color=style.MODEL_COLOUR, lw=1.4,
+                label=rf"cavity model: {vm:.3g}")
+    elif run.model is not None and run.period is not None:
+        t_rise = run.model.get("T_rise")
+        if t_rise is not None and run.period <= t_rise:
+            ax.plot([], [], " ", label=rf"cavity model: no rise ($T \leq T_{{rise}}$ = {t_rise:.3g})")
+    ti = run.summary.get("t_i")
+    if ti is not None:
+        ax.axvline(ti, color="0.6", lw=0.6, ls="-")
+        ax.annotate(r"$t_i$", xy=(ti, 0.0), xycoords=("data", "axes fraction"), xytext=(2, 2),
+                    textcoords="offset points", fontsize=7, color="0.4")
+    ax.set_xlabel(style.T_LABEL)
+    ax.set_ylabel(style.DY_LABEL)
+    status = run.summary.get("status")
+    title = run.label() + ("" if status in (None, "ok") else f" [{status}]")
+    ax.set_title(title)
+    ax.legend(loc="best")
+    run.report.wrote(style.save(fig, out_dir, "trajectory", formats))
+
+
+# --- figs 3-4: snapshots ---------------------------------------------------------------------------
+
+def _discs(ax, x, y, r, colours, rasterize=True):
+    coll = EllipseCollection(2 * r, 2 * r, np.zeros_like(r), units="xy",
+                             offsets=np.column_stack([x, y]), offset_transform=ax.transData,
+                             facecolors=colours, edgecolors="none")
+    coll.set_rasterized(rasterize)
+    ax.add_collection(coll)
+    return coll
+
+
+def _colours(frame, band_of_id, band_height=10.0):
+    """Per-atom colours: grains in alternating bands of their initial height (so mixing shows),
+    base and intruder in their own colours."""
+    types = frame["type"]
+    if band_of_id is not None and "id" in frame.columns:
+        ids = frame["id"].astype(np.int64)
+        band = band_of_id.get_many(ids)
+    else:
+        band = np.floor(frame["y"] / band_height).astype(int) % 2
+    colours = np.where(band[:, None] == 0, _rgba(style.GRAIN_COLOURS[0]), _rgba(style.GRAIN_COLOURS[1]))
+    colours[types == 2] = _rgba(style.BASE_COLOUR)
+    colours[types == 3] = _rgba(style.INTRUDER_COLOUR)
+    return colours
+
+
+def _rgba(c):
+    import matplotlib.colors as mc
+    return np.array(mc.to_rgba(c))
+
+
+class _Bands:
+    """Initial height band (0/1) of each grain id, taken from the dump's first frame."""
+
+    def __init__(self, frame, band_height=10.0):
+        ids = frame["id"].astype(np.int64)
+        self.lookup = dict(zip(ids.tolist(), (np.floor(frame["y"] / band_height).astype(int) % 2).tolist()))
+
+    def get_many(self, ids):
+        return np.array([self.lookup.get(i, 0) for i in ids.tolist()], dtype=int)
+
+
+def _system_limits(frame, top):
+    (xlo, xhi), (ylo, _yhi) = frame.box[0], frame.box[1]
+    return (xlo, xhi), (min(ylo, -0.6), top)
+
+
+def plot_snapshots(run, out_dir, formats, times=None, count=6):
+    dump = run.dump()
+    if dump is None:
+        run.report.note("no dumps/dump.lammpstrj: snapshots skipped")
+        return
+    ftimes = run.frame_times()
+    indices = prepare.frames_near(ftimes, times) if times else prepare.spread_frames(len(dump), count)
+    first = dump.frame(0)
+    bands = _Bands(first) if "id" in first.columns else None
+    frames = [dump.frame(i) for i in indices]
+    top = max(float(np.max(f["y"] + f["radius"])) for f in frames) + 1.0
+    (xlo, xhi), (ylo, yhi) = _system_limits(first, top)
+    aspect = (xhi - xlo) / (yhi - ylo)
+    ncols = 2 if aspect > 1.15 else 3
+    ncols = min(ncols, len(frames))
+    nrows = -(-len(frames) // ncols)
+    panel_w = style.FULL_WIDTH / ncols
+    fig, axes = plt.subplots(nrows, ncols, figsize=(style.FULL_WIDTH, nrows * panel_w / aspect + 0.45 * nrows),
+                             squeeze=False, sharex=True, sharey=True)
+    for k, (ax, frame, i) in enumerate(zip(axes.flat, frames, indices)):
+        _discs(ax, frame["x"], frame["y"], frame["radius"], _colours(frame, bands))
+        ax.set_xlim(xlo, xhi)
+        ax.set_ylim(ylo, yhi)
+        ax.set_aspect("equal")
+        ax.grid(False)
+        ax.set_title(f"({chr(97 + k)}) $t$ = {ftimes[i]:g}")
+    for ax in axes.flat[len(frames):]:
+        ax.set_visible(False)
+    for ax in axes[-1, :]:
+        ax.set_xlabel(style.X_LABEL)
+    for ax in axes[:, 0]:
+        ax.set_ylabel(style.Y_LABEL)
+    fig.suptitle(run.label() + r"   (time in $\sqrt{d/g}$; intruder red, base blue)", y=1.0)
+    fig.tight_layout()
+    run.report.wrote(style.save(fig, out_dir, "snapshots", formats))
+
+
+# --- fig. 8: phase-resolved rate --------------------------------------------------------------------
+
+def plot_phase_rates(run, out_dir, formats):
+    try:
+        rates = readers.read_phase_rates(run.dir)
+    except FileNotFoundError:
+        run.report.note("no phase_rates.csv: phase-rate figure skipped")
+        return
+    except readers.FormatError as e:
+        run.report.note(f"phase_rates.csv unreadable, skipped: {e}")
+        return
+    centers, vy, empty = prepare.phase_bars(rates)
+    fig, ax = plt.subplots(figsize=(style.COLUMN_WIDTH * 1.3, 2.6))
+    colours = np.where(np.nan_to_num(vy) >= 0, "#1b7837", "#b2182b")
+    ax.bar(centers, np.nan_to_num(vy), width=0.85, color=colours, alpha=0.85)
+    ax.plot(centers, vy, "-", color="0.2", lw=0.8)
+    if empty.any():
+        ax.plot(centers[empty], np.zeros(empty.sum()), "x", color="0.4", label="no samples")
+        ax.legend(loc="lower left")
+    ax.axhline(0.0, color="0.3", lw=0.6)
+    for c in (5, 10, 15):
+        ax.axvline(c, color="0.6", lw=0.5, ls=":")
+    ax.set_xlim(0, 20)
+    ax.set_xticks(range(0, 21, 5))
+    # Where the intruder is at each phase (x = x0 + A sin(phi)), on a top axis.
+    top = ax.secondary_xaxis("top")
+    top.set_xticks([0, 5, 10, 15, 20])
+    top.set_xticklabels(["centre →", "right end", "centre ←", "left end", "centre →"], fontsize=6.5)
+    top.tick_params(length=2, colors="0.35")
+    ax.set_xlabel(style.PHASE_LABEL)
+    ax.set_ylabel(r"mean $v_y$ [$\sqrt{g d}$]")
+    ax.set_title(run.label())
+    run.report.wrote(style.save(fig, out_dir, "phase_rates", formats))
+
+
+# --- figs 9-11: fields --------------------------------------------------------------------------------
+
+FIELD_ROWS = (
+    ("phi", r"$\Phi$", "viridis", False),
+    ("speed", r"$|\mathbf{v}|$ [$\sqrt{g d}$]", "magma", False),
+    ("pressure", r"$P$ [$\rho g d^2$]", "cividis", False),
+)
+
+
+def field_data(run):
+    """(grids, outline, outline source) for the field maps, or None when there is no fields.csv."""
+    try:
+        fields = readers.read_fields(run.dir)
+    except FileNotFoundError:
+        return None
+    radius = float(readers.config_value(run.config, "fields.radius", 15.0))
+    outline, source = run.intruder_outline()
+    return prepare.field_grids(fields, radius=radius, outline=outline), outline, source
+
+
+def plot_fields(run, out_dir, formats):
+    try:
+        data = field_data(run)
+    except readers.FormatError as e:
+        run.report.note(f"fields.csv unreadable, skipped: {e}")
+        return
+    if data is None:
+        run.report.note("no fields.csv: field maps skipped")
+        return
+    grids, outline, source = data
+    if outline is None:
+        run.report.note("field maps: intruder outline unknown (no geometry.json, no dump); "
+                        "only r > radius is masked")
+    phases = grids["phases"]
+    xs, ys = grids["x"], grids["y"]
+    n = len(phases)
+    dx = xs[1] - xs[0] if len(xs) > 1 else 1.0
+    dy = ys[1] - ys[0] if len(ys) > 1 else 1.0
+    extent = (xs[0] - dx / 2, xs[-1] + dx / 2, ys[0] - dy / 2, ys[-1] + dy / 2)
+    panel = min(1.35, (style.FULL_WIDTH - 0.9) / n)
+    fig, axes = plt.subplots(3, n, figsize=(panel * n + 0.9, 3 * panel + 0.6), squeeze=False,
+                             sharex=True, sharey=True, constrained_layout=True)
+    for row, (name, label, cmap, symmetric) in enumerate(FIELD_ROWS):
+        vmin, vmax = prepare.shared_limits(grids[name], symmetric=symmetric)
+        image = None
+        for j in range(n):
+            ax = axes[row, j]
+            cm = plt.get_cmap(cmap).copy()
+            cm.set_bad("white")
+            image = ax.imshow(grids[name][j], origin="lower", extent=extent, cmap=cm, vmin=vmin,
+                              vmax=vmax, interpolation="nearest")
+            if outline is not None:
+                ax.add_patch(Polygon(outline, closed=True, facecolor="0.55", edgecolor="black", lw=0.6))
+            ax.set_aspect("equal")
+            ax.grid(False)
+            ax.tick_params(labelsize=7)
+            if row == 0:
+                frames = grids["frames"][j]
+                extra = f"\n{int(frames)} frames" if np.isfinite(frames) else ""
+                ax.set_title(rf"$10\varphi/\pi$ = {phases[j]:g}" + extra, fontsize=8)
+            if row == 2:
+                ax.set_xlabel(r"$x - x_c$ [$d$]", fontsize=8)
+            if j == 0:
+                ax.set_ylabel(r"$y - y_c$ [$d$]", fontsize=8)
+        bar = fig.colorbar(image, ax=axes[row, :].tolist(), shrink=0.9, pad=0.02)
+        bar.set_label(label)
+        bar.ax.tick_params(labelsize=7)
+    fig.suptitle(run.label(), fontsize=9)
+    run.report.wrote(style.save(fig, out_dir, "fields", formats))
+
+
+# --- movie ------------------------------------------------------------------------------------------
+
+def write_movie(run, out_dir, fps=10):
+    ffmpeg = shutil.which("ffmpeg") or ("/usr/bin/ffmpeg" if os.path.exists("/usr/bin/ffmpeg") else None)
+    if ffmpeg is None:
+        run.report.note("ffmpeg not found: movie skipped (apt-get install ffmpeg)")
+        return
+    dump = run.dump()
+    if dump is None:
+        run.report.note("no dumps/dump.lammpstrj: movie skipped")
+        return
+    from matplotlib import animation
+    plt.rcParams["animation.ffmpeg_path"] = ffmpeg
+    ftimes = run.frame_times()
+    first = dump.frame(0)
+    bands = _Bands(first) if "id" in first.columns else None
+    top = float(np.max(first["y"] + first["radius"])) + 2.0
+    (xlo, xhi), (ylo, yhi) = _system_limits(first, top)
+    aspect = (xhi - xlo) / (yhi - ylo)
+    width = 6.4
+    fig, ax = plt.subplots(figsize=(width, width / aspect + 0.5))
+    ax.set_xlim(xlo, xhi)
+    ax.set_ylim(ylo, yhi)
+    ax.set_aspect("equal")
+    ax.grid(False)
+    ax.set_xlabel(style.X_LABEL)
+    ax.set_ylabel(style.Y_LABEL)
+    coll = _discs(ax, first["x"], first["y"], first["radius"], _colours(first, bands), rasterize=False)
+    title = ax.set_title("")
+    os.makedirs(out_dir, exist_ok=True)
+    path = os.path.join(out_dir, "movie.mp4")
+    writer = animation.FFMpegWriter(fps=fps, metadata={"title": run.label()})
+    with writer.saving(fig, path, dpi=120):
+        for i in range(len(dump)):
+            frame = first if i == 0 else dump.frame(i)
+            if len(frame["x"]) != len(first["x"]):
+                coll.remove()
+                coll = _discs(ax, frame["x"], frame["y"], frame["radius"], _colours(frame, bands),
+                              rasterize=False)
+            else:
+                coll.set_offsets(np.column_stack([frame["x"], frame["y"]]))
+            title.set_text(f"{run.label()}   $t$ = {ftimes[i]:g}")
+            writer.grab_frame()
+    plt.close(fig)
+    run.report.wrote([path])
+
+
+def plot_run(run_dir, out_dir, formats, report, times=None, movie=False):
+    style.apply()
+    run = Run(run_dir, report)
+    plot_trajectory(run, out_dir, formats)
+    plot_snapshots(run, out_dir, formats, times=times)
+    plot_phase_rates(run, out_dir, formats)
+    plot_fields(run, out_dir, formats)
+    if movie:
+        write_movie(run, out_dir)
+    return run

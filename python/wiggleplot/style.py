@@ -1,0 +1,76 @@
+"""One look for every figure: sizes for a printed page (a full-width figure is 7 in wide), fonts
+readable at that size, colours chosen once, and the saver that writes each requested format."""
+import os
+
+import matplotlib
+
+matplotlib.use(os.environ.get("MPLBACKEND", "Agg"))
+import matplotlib.pyplot as plt  # noqa: E402
+
+FULL_WIDTH = 7.0    # inches: a page-wide figure
+COLUMN_WIDTH = 3.4  # inches: a one-column figure
+
+# Axis labels with units (d = 1, g = 1: lengths in d, times in sqrt(d/g), speeds in sqrt(g d)).
+T_LABEL = r"$t$ [$\sqrt{d/g}$]"
+PERIOD_LABEL = r"$T$ [$\sqrt{d/g}$]"
+AMPLITUDE_LABEL = r"$A$ [$d$]"
+DY_LABEL = r"$y(t) - y(0)$ [$d$]"
+VY_LABEL = r"$V_y$ [$\sqrt{g d}$]"
+PHASE_LABEL = r"phase $10\varphi/\pi$"
+X_LABEL = r"$x$ [$d$]"
+Y_LABEL = r"$y$ [$d$]"
+
+GRAIN_COLOURS = ("#d9c9a3", "#b8a57a")  # alternating bands of grains (by initial height)
+BASE_COLOUR = "#2b4c9b"                 # the frozen base row (blue, as in the paper's fig. 1)
+INTRUDER_COLOUR = "#c8102e"             # intruder atoms
+MODEL_COLOUR = "black"
+
+RC = {
+    "font.size": 9,
+    "axes.labelsize": 9,
+    "axes.titlesize": 9,
+    "legend.fontsize": 7.5,
+    "xtick.labelsize": 8,
+    "ytick.labelsize": 8,
+    "lines.linewidth": 1.2,
+    "lines.markersize": 4,
+    "axes.grid": True,
+    "grid.alpha": 0.3,
+    "grid.linewidth": 0.5,
+    "legend.frameon": False,
+    "figure.dpi": 100,
+    "savefig.dpi": 200,
+    "savefig.bbox": "tight",
+    "pdf.fonttype": 42,
+    "image.cmap": "viridis",
+}
+
+
+def apply():
+    plt.rcParams.update(RC)
+
+
+def series_colours(n, cmap="viridis"):
+    """n colours along a perceptually uniform map, dark to light but never the pale end."""
+    if n <= 1:
+        return [plt.get_cmap(cmap)(0.25)]
+    return [plt.get_cmap(cmap)(0.9 * i / (n - 1)) for i in range(n)]
+
+
+def save(fig, out_dir, name, formats):
+    """Write fig as out_dir/name.<fmt> for each format; returns the paths written."""
+    os.makedirs(out_dir, exist_ok=True)
+    paths = []
+    for fmt in formats:
+        path = os.path.join(out_dir, f"{name}.{fmt}")
+        fig.savefig(path, format=fmt)
+        paths.append(path)
+    plt.close(fig)
+    return paths
+
+
+def fmt_value(v):
+    """3 -> '3', 0.25 -> '0.25', 'disk' -> 'disk'."""
+    if isinstance(v, float):
+        return f"{v:g}"
+    return str(v)

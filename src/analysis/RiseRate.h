@@ -1,0 +1,33 @@
+#pragma once
+// The intruder's rise rate from its sampled trajectory (SPEC 6; docs/OUTPUT-FORMATS.md states the
+// rule for users).
+//
+// Paper rule: V_y = (y_f - y_i) / (t_f - t_i), t_i = 0.1 t_total, t_f = t_total unless the intruder
+// reached its final height earlier (a plateau, e.g. at the free surface). Plateau detection, made
+// explicit here: average y over a window of max(T, 1) to remove the in-cycle wiggle; call y_end
+// the averaged height at the end; t_plateau is the earliest time after t_i from which the averaged
+// height stays within `plateauTolerance` (0.5 d) of y_end. It is used as t_f only when the intruder
+// travelled at least 4 tolerances (2 d) between t_i and the end and the plateau lasts at least 10 %
+// of the run; otherwise a slow or noisy trajectory would get a spuriously short window.
+// y_i and y_f are the raw sampled heights at t_i and t_f. The least-squares slope of y(t) over
+// [t_i, t_f] is reported beside it.
+#include <vector>
+
+namespace wiggle {
+
+struct TrajectorySample {
+  double t, x, y, vx, vy, fy;  // time, intruder centre, velocity, vertical contact force
+};
+
+struct RiseRate {
+  double vy = 0.0;        // paper's rule [sqrt(g d)]
+  double slope = 0.0;     // least-squares slope over [t_i, t_f]
+  double tInitial = 0.0, tFinal = 0.0;
+  double yInitial = 0.0, yFinal = 0.0;
+  bool plateau = false;   // t_f was moved before the end by the plateau rule
+};
+
+RiseRate measureRiseRate(const std::vector<TrajectorySample>& samples, double totalTime, double period,
+                         double plateauTolerance = 0.5);
+
+}  // namespace wiggle

@@ -1,0 +1,14 @@
+#pragma once
+// Files that are never seen half-written: content goes to a temporary file in the same directory,
+// is flushed to disk, and is renamed over the target (rename is atomic on POSIX file systems).
+// A failure (full disk, no permission) throws wiggle::Error naming the file; the old file, if any,
+// is left as it was.
+#include <string>
+
+namespace wiggle {
+
+void writeFileAtomically(const std::string& path, const std::string& content);
+// Whole file as bytes; throws wiggle::Error naming the file when it cannot be read.
+std::string readFile(const std::string& path);
+
+}  // namespace wiggle

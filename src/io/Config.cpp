@@ -1,0 +1,873 @@
+#include "io/Config.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+#include "core/Error.h"
+
+namespace wiggle {
+namespace {
+
+// ---------------------------------------------------------------------------------------------
+// The key table
+// ---------------------------------------------------------------------------------------------
+
+enum class Kind { Number, Integer, Boolean, Text, Choice, NumberList, PointList };
+
+struct Bound {
+  bool present = false;
+  double value = 0.0;
+  bool inclusive = false;
+};
+constexpr Bound noBound{};
+constexpr Bound above(double v) { return {true, v, false}; }
+constexpr Bound atLeast(double v) { return {true, v, true}; }
+constexpr Bound below(double v) { return {true, v, false}; }
+
+using Points = std::vector<std::array<double, 2>>;
+
+// One TOML key. The accessors take a mutable config; reading a const config goes through
+// `mut()` below, which is safe because a read accessor only forms a reference.
+struct KeyInfo {
+  std::string_view name;   // "section.key"
+  Kind kind;
+  std::string_view unit;   // "" for a pure number
+  std::string_view help;   // one line
+  Bound lower, upper;      // Number, Integer, and each NumberList element
+  std::vector<std::string_view> choices;  // Choice
+  double& (*number)(RunConfig&) = nullptr;
+  std::uint64_t& (*integer)(RunConfig&) = nullptr;
+  bool& (*boolean)(RunConfig&) = nullptr;
+  std::string& (*text)(RunConfig&) = nullptr;
+  std::string (*getChoice)(const RunConfig&) = nullptr;
+  void (*setChoice)(RunConfig&, const std::string&) = nullptr;
+  std::vector<double>& (*numberList)(RunConfig&) = nullptr;
+  Points& (*pointList)(RunConfig&) = nullptr;
+
+  std::string_view section() const { return name.substr(0, name.find('.')); }
+  std::string_view leaf() const { return name.substr(name.find('.') + 1); }
+};
+
+RunConfig& mut(const RunConfig& c) { return const_cast<RunConfig&>(c); }
+
+KeyInfo number(std::string_view name, double& (*f)(RunConfig&), Bound lo, Bound hi,
+               std::string_view unit, std::string_view help) {
+  KeyInfo k{name, Kind::Number, unit, help, lo, hi, {}};
+  k.number = f;
+  return k;
+}
+KeyInfo integer(std::string_view name, std::uint64_t& (*f)(RunConfig&), Bound lo,
+                std::string_view unit, std::string_view help) {
+  KeyInfo k{name, Kind::Integer, unit, help, lo, noBound, {}};
+  k.integer = f;
+  return k;
+}
+KeyInfo boolean(std::string_view name, bool& (*f)(RunConfig&), std::string_view help) {
+  KeyInfo k{name, Kind::Boolean, "", help, noBound, noBound, {}};
+  k.boolean = f;
+  return k;
+}
+KeyInfo text(std::string_view name, std::string& (*f)(RunConfig&), std::string_view help) {
+  KeyInfo k{name, Kind::Text, "", help, noBound, noBound, {}};
+  k.text = f;
+  return k;
+}
+KeyInfo choice(std::string_view name, std::vector<std::string_view> choices,
+               std::string (*get)(const RunConfig&), void (*set)(RunConfig&, const std::string&),
+               std::string_view help) {
+  KeyInfo k{name, Kind::Choice, "", help, noBound, noBound, std::move(choices)};
+  k.getChoice = get;
+  k.setChoice = set;
+  return k;
+}
+KeyInfo numberList(std::string_view name, std::vector<double>& (*f)(RunConfig&), Bound lo,
+                   Bound hi, std::string_view unit, std::string_view help) {
+  KeyInfo k{name, Kind::NumberList, unit, help, lo, hi, {}};
+  k.numberList = f;
+  return k;
+}
+KeyInfo pointList(std::string_view name, Points& (*f)(RunConfig&), std::string_view unit,
+                  std::string_view help) {
+  KeyInfo k{name, Kind::PointList, unit, help, noBound, noBound, {}};
+  k.pointList = f;
+  return k;
+}
+
+using C = RunConfig;
+
+const std::vector<KeyInfo>& keyTable() {
+  static const std::vector<KeyInfo> table = {
+      // [box]
+      number("box.width", [](C& c) -> double& { return c.box.width; }, above(0), noBound, "d",
+             "box width W, periodic in x; a whole number"),
+      number("box.bed_height", [](C& c) -> double& { return c.box.bedHeight; }, above(0), noBound,
+             "d", "target height of the bed's free surface"),
+      integer("box.seed", [](C& c) -> std::uint64_t& { return c.box.seed; }, atLeast(0), "",
+              "seed of the grain diameters and the pouring (same seed, same bed)"),
+      // [grains]
+      number("grains.d_min", [](C& c) -> double& { return c.grains.dMin; }, above(0), noBound, "d",
+             "smallest grain diameter (diameters are uniform in [d_min, d_max])"),
+      number("grains.d_max", [](C& c) -> double& { return c.grains.dMax; }, above(0), noBound, "d",
+             "largest grain diameter; >= d_min"),
+      choice(
+          "grains.mass_model", {"sphere", "disc"},
+          [](const C& c) -> std::string {
+            return c.grains.massModel == MassModel::Sphere ? "sphere" : "disc";
+          },
+          [](C& c, const std::string& v) {
+            c.grains.massModel = v == "sphere" ? MassModel::Sphere : MassModel::Disc;
+          },
+          "grain mass and inertia: sphere m = (4/3) pi r^3, I = (2/5) m r^2; "
+          "disc m = pi r^2, I = (1/2) m r^2"),
+      // [contact]
+      number("contact.kn", [](C& c) -> double& { return c.contact.kn; }, above(0), noBound,
+             "m g / d^2", "normal stiffness K_n of the Hertz law"),
+      number("contact.kt", [](C& c) -> double& { return c.contact.kt; }, above(0), noBound,
+             "m g / d^2", "tangential stiffness K_t"),
+      number("contact.gamma_n", [](C& c) -> double& { return c.contact.gammaN; }, atLeast(0),
+             noBound, "1/(d sqrt(d/g))", "normal viscoelastic damping gamma_n"),
+      number("contact.gamma_t", [](C& c) -> double& { return c.contact.gammaT; }, atLeast(0),
+             noBound, "1/(d sqrt(d/g))", "tangential viscoelastic damping gamma_t"),
+      number("contact.mu", [](C& c) -> double& { return c.contact.mu; }, atLeast(0), noBound, "",
+             "Coulomb friction coefficient"),
+      // [intruder]
+      choice(
+          "intruder.shape", {"disk", "square", "rect_narrow", "rect_wide", "triangle", "polygon"},
+          [](const C& c) -> std::string { return c.intruder.shape; },
+          [](C& c, const std::string& v) { c.intruder.shape = v; },
+          "outline: the paper's OS1..OS5 (SPEC 4) or \"polygon\" given by intruder.vertices"),
+      pointList("intruder.vertices", [](C& c) -> Points& { return c.intruder.vertices; }, "d",
+                "outer outline for shape = \"polygon\": at least 3 [x, y] pairs; "
+                "empty for the other shapes"),
+      number("intruder.angle", [](C& c) -> double& { return c.intruder.angle; }, noBound, noBound,
+             "degrees", "rotation of the outline, counter-clockwise"),
+      number("intruder.y0", [](C& c) -> double& { return c.intruder.y0; }, above(0), noBound, "d",
+             "centre height at t = 0 (x0 is the box centre); < box.bed_height"),
+      number("intruder.mass", [](C& c) -> double& { return c.intruder.mass; }, atLeast(0), noBound,
+             "rho d^3", "intruder mass; 0 = SPEC 4's default (disk outline area x grain mass per area)"),
+      // [drive]
+      number("drive.amplitude", [](C& c) -> double& { return c.drive.amplitude; }, atLeast(0),
+             noBound, "d", "A in x(t) = x0 + A sin(2 pi t / T)"),
+      number("drive.period", [](C& c) -> double& { return c.drive.period; }, above(0), noBound,
+             "sqrt(d/g)", "T in x(t) = x0 + A sin(2 pi t / T); a whole number of run.dt steps"),
+      // [bed]
+      number("bed.batch_height", [](C& c) -> double& { return c.bed.batchHeight; }, above(0),
+             noBound, "d", "height of each poured layer"),
+      number("bed.settle_speed", [](C& c) -> double& { return c.bed.settleSpeed; }, above(0),
+             noBound, "sqrt(g d)", "the next batch is poured when the rms grain speed is below this"),
+      number("bed.rest_energy", [](C& c) -> double& { return c.bed.restEnergy; }, above(0), noBound,
+             "m g d", "final relaxation ends when the kinetic energy per grain, averaged over one time unit, is below this"),
+      number("bed.max_time", [](C& c) -> double& { return c.bed.maxTime; }, above(0), noBound,
+             "sqrt(d/g)", "give up making the bed after this much simulated time"),
+      text("bed.cache_dir", [](C& c) -> std::string& { return c.bed.cacheDir; },
+           "directory of cached beds (\"\" = $WIGGLE_CACHE or ~/.cache/wiggle)"),
+      // [run]
+      number("run.dt", [](C& c) -> double& { return c.run.dt; }, above(0), noBound, "sqrt(d/g)",
+             "time step"),
+      number("run.duration", [](C& c) -> double& { return c.run.duration; }, above(0), noBound,
+             "sqrt(d/g)", "simulated time t_total of the run; >= run.dt"),
+      number("run.sample_interval", [](C& c) -> double& { return c.run.sampleInterval; }, above(0),
+             noBound, "sqrt(d/g)", "trajectory sampling interval; a whole number of run.dt steps"),
+      number("run.checkpoint_interval", [](C& c) -> double& { return c.run.checkpointInterval; },
+             above(0), noBound, "s", "wall-clock time between checkpoints"),
+      number("run.dump_interval", [](C& c) -> double& { return c.run.dumpInterval; }, atLeast(0),
+             noBound, "sqrt(d/g)",
+             "interval of LAMMPS text dump frames (0 = none); a whole number of run.dt steps"),
+      boolean("run.plot", [](C& c) -> bool& { return c.run.plot; },
+              "draw the run's figures at the end"),
+      // [fields]
+      boolean("fields.enabled", [](C& c) -> bool& { return c.fields.enabled; },
+              "measure the coarse-grained fields (area fraction, velocity, stress)"),
+      numberList("fields.phases", [](C& c) -> std::vector<double>& { return c.fields.phases; },
+                 atLeast(0), below(20), "10 phi / pi",
+                 "drive phases at which fields are averaged, each in [0, 20)"),
+      number("fields.radius", [](C& c) -> double& { return c.fields.radius; }, above(0), noBound,
+             "d", "half-size of the field grid around the intruder centre"),
+      number("fields.spacing", [](C& c) -> double& { return c.fields.spacing; }, above(0), noBound,
+             "d", "field grid spacing"),
+      number("fields.width", [](C& c) -> double& { return c.fields.width; }, above(0), noBound, "d",
+             "width w of the Gaussian coarse-graining function"),
+      boolean("fields.kinetic", [](C& c) -> bool& { return c.fields.kinetic; },
+              "add the kinetic stress to the contact stress"),
+      // [engine]
+      number("engine.skin", [](C& c) -> double& { return c.engine.skin; }, above(0), noBound, "d",
+             "Verlet skin of the grain neighbour list"),
+      number("engine.intruder_skin", [](C& c) -> double& { return c.engine.intruderSkin; },
+             above(0), noBound, "d", "Verlet skin of the intruder's neighbour list"),
+      integer("engine.sort_interval", [](C& c) -> std::uint64_t& { return c.engine.sortInterval; },
+              atLeast(1), "steps", "steps between spatial re-sorts of the grains"),
+  };
+  return table;
+}
+
+const KeyInfo* findKey(std::string_view key) {
+  for (const KeyInfo& k : keyTable()) {
+    if (k.name == key) return &k;
+  }
+  return nullptr;
+}
+
+std::vector<std::string_view> sectionNames() {
+  std::vector<std::string_view> out;
+  for (const KeyInfo& k : keyTable()) {
+    if (std::find(out.begin(), out.end(), k.section()) == out.end()) out.push_back(k.section());
+  }
+  return out;
+}
+
+bool isSection(std::string_view name) {
+  const auto s = sectionNames();
+  return std::find(s.begin(), s.end(), name) != s.end();
+}
+
+// ---------------------------------------------------------------------------------------------
+// Formatting
+// ---------------------------------------------------------------------------------------------
+
+// Shortest text that reads back to the same double. Whole numbers below 1e15 are written without
+// an exponent (2000000, not 2e+06) because people read them; they are exact either way.
+std::string formatNumber(double v, bool tomlStyle) {
+  if (std::isnan(v)) return "nan";
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  std::string s;
+  if (v == std::floor(v) && std::fabs(v) < 1e15) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.0f", v);
+    s = buf;
+    if (tomlStyle) s += ".0";  // a TOML float, so the file says the key is a real number
+    return s;
+  }
+  // Shortest round-trip digits; fixed notation when it stays short (0.0001 reads better than
+  // 1e-04), scientific otherwise (1e-08).
+  char buf[400];
+  auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed);
+  if (r.ec != std::errc() || r.ptr - buf > 9) r = std::to_chars(buf, buf + sizeof buf, v);
+  s.assign(buf, r.ptr);
+  // Large whole numbers may come out as plain digits (12003693070755665920), which TOML would
+  // read as an out-of-range integer.
+  if (tomlStyle && s.find_first_of(".eE") == std::string::npos) s += ".0";
+  return s;
+}
+
+std::string quoteToml(const std::string& s) {
+  std::string out = "\"";
+  for (const char ch : s) {
+    const auto u = static_cast<unsigned char>(ch);
+    switch (ch) {
+      case '"': out += "\\\""; break;
+      case '\\': out += "\\\\"; break;
+      case '\n': out += "\\n"; break;
+      case '\t': out += "\\t"; break;
+      case '\r': out += "\\r"; break;
+      default:
+        if (u < 0x20 || u == 0x7f) {
+          char buf[8];
+          std::snprintf(buf, sizeof buf, "\\u%04x", u);
+          out += buf;
+        } else {
+          out += ch;
+        }
+    }
+  }
+  return out + "\"";
+}
+
+std::string formatNumbers(const std::vector<double>& v, bool tomlStyle) {
+  std::string out = "[";
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    if (i) out += ", ";
+    out += formatNumber(v[i], tomlStyle);
+  }
+  return out + "]";
+}
+
+std::string formatPoints(const Points& v, bool tomlStyle) {
+  std::string out = "[";
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    if (i) out += ", ";
+    out += "[" + formatNumber(v[i][0], tomlStyle) + ", " + formatNumber(v[i][1], tomlStyle) + "]";
+  }
+  return out + "]";
+}
+
+// A key's value in `config`: TOML text (tomlStyle) or short display text.
+std::string valueText(const KeyInfo& k, const RunConfig& config, bool tomlStyle) {
+  RunConfig& c = mut(config);
+  switch (k.kind) {
+    case Kind::Number: return formatNumber(k.number(c), tomlStyle);
+    case Kind::Integer: return std::to_string(k.integer(c));
+    case Kind::Boolean: return k.boolean(c) ? "true" : "false";
+    case Kind::Text: return tomlStyle ? quoteToml(k.text(c)) : k.text(c);
+    case Kind::Choice: return tomlStyle ? quoteToml(k.getChoice(config)) : k.getChoice(config);
+    case Kind::NumberList: return formatNumbers(k.numberList(c), tomlStyle);
+    case Kind::PointList: return formatPoints(k.pointList(c), tomlStyle);
+  }
+  return "";
+}
+
+// Any TOML value as text; strings are quoted when `quote` (always inside arrays and tables).
+std::string nodeText(const toml::node& n, bool quote) {
+  if (const auto* s = n.as_string()) return quote ? quoteToml(s->get()) : s->get();
+  if (const auto* i = n.as_integer()) return std::to_string(i->get());
+  if (const auto* f = n.as_floating_point()) return formatNumber(f->get(), false);
+  if (const auto* b = n.as_boolean()) return b->get() ? "true" : "false";
+  if (const auto* a = n.as_array()) {
+    std::string out = "[";
+    for (std::size_t i = 0; i < a->size(); ++i) {
+      if (i) out += ", ";
+      out += nodeText(*a->get(i), true);
+    }
+    return out + "]";
+  }
+  if (const auto* t = n.as_table()) {
+    std::string out = "{";
+    bool first = true;
+    for (const auto& [key, value] : *t) {
+      out += first ? " " : ", ";
+      first = false;
+      out += std::string(key.str()) + " = " + nodeText(value, true);
+    }
+    return out + (first ? "}" : " }");
+  }
+  std::ostringstream os;  // dates and times: toml++'s own form
+  n.visit([&](const auto& v) { os << v; });
+  return os.str();
+}
+
+std::string typeName(const toml::node& n) {
+  switch (n.type()) {
+    case toml::node_type::string: return "string";
+    case toml::node_type::integer: return "integer";
+    case toml::node_type::floating_point: return "floating-point number";
+    case toml::node_type::boolean: return "boolean";
+    case toml::node_type::array: return "array";
+    case toml::node_type::table: return "table";
+    default: return "date/time";
+  }
+}
+
+std::string boundText(const Bound& lo, const Bound& hi) {
+  std::string out;
+  if (lo.present) out += (lo.inclusive ? ">= " : "> ") + formatNumber(lo.value, false);
+  if (hi.present) {
+    if (!out.empty()) out += " and ";
+    out += (hi.inclusive ? "<= " : "< ") + formatNumber(hi.value, false);
+  }
+  return out;
+}
+
+// "" when v is finite and within the bounds, else what is wrong ("must be > 0").
+std::string rangeProblem(double v, const Bound& lo, const Bound& hi) {
+  if (!std::isfinite(v)) return "must be a finite number";
+  const bool lowOk = !lo.present || (lo.inclusive ? v >= lo.value : v > lo.value);
+  const bool highOk = !hi.present || (hi.inclusive ? v <= hi.value : v < hi.value);
+  if (lowOk && highOk) return "";
+  return "must be " + boundText(lo, hi);
+}
+
+// TOML integers are signed 64-bit, so a seed above this could not be written back.
+constexpr std::uint64_t maxTomlInteger = static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max());
+
+// ---------------------------------------------------------------------------------------------
+// Suggestions
+// ---------------------------------------------------------------------------------------------
+
+std::size_t editDistance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> prev(b.size() + 1), cur(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    cur[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t sub = prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1);
+      cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, sub});
+    }
+    std::swap(prev, cur);
+  }
+  return prev[b.size()];
+}
+
+std::string_view leafOf(std::string_view key) {
+  const auto dot = key.rfind('.');
+  return dot == std::string_view::npos ? key : key.substr(dot + 1);
+}
+
+std::string didYouMean(std::string_view suggestion, std::string_view prefix = "") {
+  if (suggestion.empty()) return "";
+  return " (did you mean '" + std::string(prefix) + std::string(suggestion) + "'?)";
+}
+
+// Closest section name to `name`, or a full key whose leaf is `name` (a key written outside its
+// section), or "".
+std::string suggestSection(std::string_view name) {
+  std::string best;
+  std::size_t bestDistance = 3;
+  for (const std::string_view s : sectionNames()) {
+    const std::size_t d = editDistance(name, s);
+    if (d < bestDistance) {
+      bestDistance = d;
+      best = std::string(s);
+    }
+  }
+  if (!best.empty()) return best;
+  return suggestConfigKey(name);
+}
+
+std::string withPath(const std::string& tablePath, std::string_view key) {
+  return tablePath.empty() ? std::string(key) : tablePath + "." + std::string(key);
+}
+
+std::string lineWhere(const std::string& sourceName, const toml::node& n) {
+  const auto line = n.source().begin.line;
+  return line ? sourceName + ":" + std::to_string(line) : sourceName;
+}
+
+std::string trim(std::string_view s) {
+  const auto b = s.find_first_not_of(" \t\r\n");
+  if (b == std::string_view::npos) return "";
+  const auto e = s.find_last_not_of(" \t\r\n");
+  return std::string(s.substr(b, e - b + 1));
+}
+
+bool wholeSteps(double interval, double dt, double& steps) {
+  steps = interval / dt;
+  const double n = std::round(steps);
+  return n >= 1 && std::fabs(steps - n) <= 1e-9 * steps;
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+// Public functions
+// ---------------------------------------------------------------------------------------------
+
+std::string suggestConfigKey(std::string_view key) {
+  std::string best;
+  std::size_t bestDistance = std::max<std::size_t>(3, key.size() / 4 + 1);
+  for (const KeyInfo& k : keyTable()) {
+    const std::size_t d = editDistance(key, k.name);
+    if (d < bestDistance) {
+      bestDistance = d;
+      best = std::string(k.name);
+    }
+  }
+  if (!best.empty()) return best;
+  // The right key name in the wrong section (box.dt -> run.dt), or no section at all.
+  const std::string_view leaf = leafOf(key);
+  for (const KeyInfo& k : keyTable()) {
+    if (k.leaf() == leaf) return std::string(k.name);
+  }
+  return "";
+}
+
+bool isConfigKey(std::string_view key) { return findKey(key) != nullptr; }
+
+std::vector<std::string> configKeys() {
+  std::vector<std::string> out;
+  for (const KeyInfo& k : keyTable()) out.emplace_back(k.name);
+  return out;
+}
+
+std::string tomlValueString(const toml::node& value) { return nodeText(value, false); }
+
+std::string configValueString(const RunConfig& config, std::string_view key) {
+  const KeyInfo* k = findKey(key);
+  if (!k) throw Error("unknown key '" + std::string(key) + "'" + didYouMean(suggestConfigKey(key)));
+  return valueText(*k, config, false);
+}
+
+void applySetting(RunConfig& config, const std::string& key, const toml::node& value,
+                  const std::string& where) {
+  const KeyInfo* k = findKey(key);
+  if (!k) {
+    throw Error(where + ": unknown key '" + key + "'" + didYouMean(suggestConfigKey(key)));
+  }
+  const std::string head = where + ": " + key + " = " + nodeText(value, true) + ": ";
+  auto typeError = [&](std::string_view expected) {
+    return Error(head + "expected " + std::string(expected) + ", got " + typeName(value));
+  };
+  auto readNumber = [&](const toml::node& n, double& out) {
+    // Integers are accepted where a real number is expected (period = 5).
+    if (const auto* i = n.as_integer()) {
+      out = static_cast<double>(i->get());
+      return true;
+    }
+    if (const auto* f = n.as_floating_point()) {
+      out = f->get();
+      return true;
+    }
+    return false;
+  };
+
+  switch (k->kind) {
+    case Kind::Number: {
+      double v = 0.0;
+      if (!readNumber(value, v)) throw typeError("a number");
+      if (const std::string p = rangeProblem(v, k->lower, k->upper); !p.empty()) throw Error(head + p);
+      k->number(config) = v;
+      return;
+    }
+    case Kind::Integer: {
+      const auto* i = value.as_integer();
+      if (!i) throw typeError("an integer");
+      const std::string p = rangeProblem(static_cast<double>(i->get()), k->lower, k->upper);
+      if (i->get() < 0 || !p.empty()) throw Error(head + (p.empty() ? "must be >= 0" : p));
+      k->integer(config) = static_cast<std::uint64_t>(i->get());
+      return;
+    }
+    case Kind::Boolean: {
+      const auto* b = value.as_boolean();
+      if (!b) throw typeError("true or false");
+      k->boolean(config) = b->get();
+      return;
+    }
+    case Kind::Text: {
+      const auto* s = value.as_string();
+      if (!s) throw typeError("a string");
+      k->text(config) = s->get();
+      return;
+    }
+    case Kind::Choice: {
+      const auto* s = value.as_string();
+      std::string options;
+      for (const std::string_view c : k->choices) options += (options.empty() ? "" : ", ") + std::string(c);
+      if (!s) throw typeError("one of " + options);
+      if (std::find(k->choices.begin(), k->choices.end(), s->get()) == k->choices.end()) {
+        throw Error(head + "must be one of " + options);
+      }
+      k->setChoice(config, s->get());
+      return;
+    }
+    case Kind::NumberList: {
+      const auto* a = value.as_array();
+      if (!a) throw typeError("an array of numbers");
+      std::vector<double> out;
+      for (std::size_t i = 0; i < a->size(); ++i) {
+        double v = 0.0;
+        if (!readNumber(*a->get(i), v)) {
+          throw Error(head + "element " + std::to_string(i + 1) + ": expected a number, got " +
+                      typeName(*a->get(i)));
+        }
+        if (const std::string p = rangeProblem(v, k->lower, k->upper); !p.empty()) {
+          throw Error(head + "element " + std::to_string(i + 1) + " " + p);
+        }
+        out.push_back(v);
+      }
+      k->numberList(config) = std::move(out);
+      return;
+    }
+    case Kind::PointList: {
+      const auto* a = value.as_array();
+      if (!a) throw typeError("an array of [x, y] pairs");
+      Points out;
+      for (std::size_t i = 0; i < a->size(); ++i) {
+        const auto* pair = a->get(i)->as_array();
+        std::array<double, 2> p{};
+        if (!pair || pair->size() != 2 || !readNumber(*pair->get(0), p[0]) ||
+            !readNumber(*pair->get(1), p[1])) {
+          throw Error(head + "element " + std::to_string(i + 1) + ": expected an [x, y] pair of numbers");
+        }
+        if (!std::isfinite(p[0]) || !std::isfinite(p[1])) {
+          throw Error(head + "element " + std::to_string(i + 1) + " must be finite");
+        }
+        out.push_back(p);
+      }
+      k->pointList(config) = std::move(out);
+      return;
+    }
+  }
+}
+
+toml::table parseTomlText(const std::string& tomlText, const std::string& sourceName) {
+  try {
+    return toml::parse(tomlText, sourceName);
+  } catch (const toml::parse_error& e) {
+    const auto& b = e.source().begin;
+    throw Error(sourceName + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) +
+                ": TOML syntax error: " + std::string(e.description()));
+  }
+}
+
+std::vector<ConfigEntry> configEntries(const toml::table& table, const std::string& sourceName,
+                                       const std::string& tablePath,
+                                       const std::vector<std::string>& skipNames) {
+  // toml++ keeps a table's keys sorted by name; walk them in file order so that the first problem
+  // reported is the first one in the file and sweep grids vary in the order written.
+  auto byPosition = [](const toml::node* a, const toml::node* b) {
+    const auto pa = a->source().begin, pb = b->source().begin;
+    return pa.line != pb.line ? pa.line < pb.line : pa.column < pb.column;
+  };
+  std::vector<std::pair<std::string, const toml::node*>> sections;
+  for (const auto& [name, node] : table) {
+    if (std::find(skipNames.begin(), skipNames.end(), name.str()) == skipNames.end()) {
+      sections.emplace_back(std::string(name.str()), &node);
+    }
+  }
+  std::stable_sort(sections.begin(), sections.end(),
+                   [&](const auto& a, const auto& b) { return byPosition(a.second, b.second); });
+
+  std::vector<ConfigEntry> out;
+  for (const auto& [section, node] : sections) {
+    const std::string where = lineWhere(sourceName, *node);
+    if (!isSection(section)) {
+      const std::string s = suggestSection(section);
+      const bool isKey = !s.empty() && s.find('.') != std::string::npos;
+      throw Error(where + ": unknown " + (node->is_table() && !isKey ? "section" : "key") + " '" +
+                  withPath(tablePath, section) + "'" +
+                  didYouMean(s, tablePath.empty() ? "" : tablePath + "."));
+    }
+    const toml::table* keys = node->as_table();
+    if (!keys) {
+      throw Error(where + ": '" + withPath(tablePath, section) + "' must be a table ([" +
+                  withPath(tablePath, section) + "]), got " + typeName(*node));
+    }
+    std::vector<ConfigEntry> inSection;
+    for (const auto& [key, value] : *keys) {
+      const std::string full = section + "." + std::string(key.str());
+      if (!isConfigKey(full)) {
+        throw Error(lineWhere(sourceName, value) + ": unknown key '" + withPath(tablePath, full) +
+                    "'" + didYouMean(suggestConfigKey(full), tablePath.empty() ? "" : tablePath + "."));
+      }
+      inSection.push_back({full, &value, value.source().begin.line});
+    }
+    std::stable_sort(inSection.begin(), inSection.end(),
+                     [&](const ConfigEntry& a, const ConfigEntry& b) { return byPosition(a.value, b.value); });
+    out.insert(out.end(), inSection.begin(), inSection.end());
+  }
+  return out;
+}
+
+void applyConfigTable(RunConfig& config, const toml::table& table, const std::string& sourceName,
+                      const std::string& tablePath) {
+  for (const ConfigEntry& e : configEntries(table, sourceName, tablePath)) {
+    applySetting(config, e.key, *e.value,
+                 e.line ? sourceName + ":" + std::to_string(e.line) : sourceName);
+  }
+}
+
+void validateRunConfig(const RunConfig& c) {
+  // Each key's own range, from the table (the same check applySetting makes).
+  for (const KeyInfo& k : keyTable()) {
+    auto fail = [&](const std::string& problem) {
+      throw Error(std::string(k.name) + " = " + valueText(k, c, true) + ": " + problem);
+    };
+    RunConfig& m = mut(c);
+    switch (k.kind) {
+      case Kind::Number:
+        if (const std::string p = rangeProblem(k.number(m), k.lower, k.upper); !p.empty()) fail(p);
+        break;
+      case Kind::Integer: {
+        const std::uint64_t v = k.integer(m);
+        if (v > maxTomlInteger) fail("must be <= " + std::to_string(maxTomlInteger));
+        if (const std::string p = rangeProblem(static_cast<double>(v), k.lower, k.upper); !p.empty()) fail(p);
+        break;
+      }
+      case Kind::Choice: {
+        const std::string v = k.getChoice(c);
+        if (std::find(k.choices.begin(), k.choices.end(), v) == k.choices.end()) {
+          std::string options;
+          for (const std::string_view o : k.choices) options += (options.empty() ? "" : ", ") + std::string(o);
+          fail("must be one of " + options);
+        }
+        break;
+      }
+      case Kind::NumberList: {
+        const auto& v = k.numberList(m);
+        for (std::size_t i = 0; i < v.size(); ++i) {
+          if (const std::string p = rangeProblem(v[i], k.lower, k.upper); !p.empty()) {
+            fail("element " + std::to_string(i + 1) + " " + p);
+          }
+        }
+        break;
+      }
+      case Kind::PointList:
+        for (const auto& p : k.pointList(m)) {
+          if (!std::isfinite(p[0]) || !std::isfinite(p[1])) fail("every coordinate must be finite");
+        }
+        break;
+      case Kind::Boolean:
+      case Kind::Text: break;
+    }
+  }
+
+  // Checks that involve more than one key.
+  auto num = [](double v) { return formatNumber(v, false); };
+  if (c.box.width != std::floor(c.box.width)) {
+    throw Error("box.width = " + num(c.box.width) + ": must be a whole number (the base is a row of "
+                "unit spheres spaced 1 apart)");
+  }
+  if (c.grains.dMax < c.grains.dMin) {
+    throw Error("grains.d_max = " + num(c.grains.dMax) + ": must be >= grains.d_min (" +
+                num(c.grains.dMin) + ")");
+  }
+  const bool polygon = c.intruder.shape == "polygon";
+  if (polygon && c.intruder.vertices.size() < 3) {
+    throw Error("intruder.vertices: shape = \"polygon\" needs at least 3 [x, y] pairs, got " +
+                std::to_string(c.intruder.vertices.size()));
+  }
+  if (!polygon && !c.intruder.vertices.empty()) {
+    throw Error("intruder.vertices: only used with shape = \"polygon\", but shape = \"" +
+                c.intruder.shape + "\" (remove the vertices or set the shape to \"polygon\")");
+  }
+  if (c.intruder.y0 >= c.box.bedHeight) {
+    throw Error("intruder.y0 = " + num(c.intruder.y0) + ": must be < box.bed_height (" +
+                num(c.box.bedHeight) + ")");
+  }
+  double steps = 0.0;
+  if (!wholeSteps(c.drive.period, c.run.dt, steps)) {
+    throw Error("drive.period = " + num(c.drive.period) + ": must be a whole number of run.dt steps (" +
+                num(c.drive.period) + " / " + num(c.run.dt) + " = " + num(steps) + ")");
+  }
+  if (c.run.duration < c.run.dt) {
+    throw Error("run.duration = " + num(c.run.duration) + ": must be >= run.dt (" + num(c.run.dt) + ")");
+  }
+  if (!wholeSteps(c.run.sampleInterval, c.run.dt, steps)) {
+    throw Error("run.sample_interval = " + num(c.run.sampleInterval) +
+                ": must be a whole number of run.dt steps (" + num(c.run.sampleInterval) + " / " +
+                num(c.run.dt) + " = " + num(steps) + ")");
+  }
+  if (c.run.dumpInterval > 0 && !wholeSteps(c.run.dumpInterval, c.run.dt, steps)) {
+    throw Error("run.dump_interval = " + num(c.run.dumpInterval) +
+                ": must be 0 or a whole number of run.dt steps (" + num(c.run.dumpInterval) + " / " +
+                num(c.run.dt) + " = " + num(steps) + ")");
+  }
+}
+
+RunConfig parseRunConfig(const std::string& tomlText, const std::string& sourceName) {
+  RunConfig config;
+  const toml::table table = parseTomlText(tomlText, sourceName);
+  applyConfigTable(config, table, sourceName);
+  try {
+    validateRunConfig(config);
+  } catch (const Error& e) {
+    throw Error(sourceName + ": " + e.what());
+  }
+  return config;
+}
+
+void applyOverride(RunConfig& config, const std::string& assignment) {
+  const auto eq = assignment.find('=');
+  if (eq == std::string::npos) {
+    throw Error("--set '" + assignment + "': expected section.key=value");
+  }
+  const std::string key = trim(std::string_view(assignment).substr(0, eq));
+  const std::string text = trim(std::string_view(assignment).substr(eq + 1));
+  if (!isConfigKey(key)) {
+    throw Error("--set: unknown key '" + key + "'" + didYouMean(suggestConfigKey(key)));
+  }
+  // The value is TOML (5, "disk", [0, 5], true). Shell users drop quotes, so text that is not
+  // TOML is taken as a number if it reads as one (".5"), otherwise as a bare string (triangle).
+  toml::table holder;
+  try {
+    holder = toml::parse("v = " + text, std::string_view("--set"));
+    if (holder.size() != 1 || !holder.contains("v")) throw Error("");
+  } catch (const std::exception& e) {
+    holder = toml::table{};
+    const bool looksStructured = !text.empty() && std::string_view("[{\"'").find(text.front()) !=
+                                                      std::string_view::npos;
+    if (looksStructured) {
+      const auto* pe = dynamic_cast<const toml::parse_error*>(&e);
+      throw Error("--set " + key + "=" + text + ": not a TOML value" +
+                  (pe ? ": " + std::string(pe->description()) : std::string()));
+    }
+    double v = 0.0;
+    const auto r = std::from_chars(text.data(), text.data() + text.size(), v);
+    if (!text.empty() && r.ec == std::errc() && r.ptr == text.data() + text.size()) {
+      holder.insert("v", v);
+    } else {
+      holder.insert("v", text);
+    }
+  }
+  applySetting(config, key, *holder.get("v"), "--set");
+}
+
+RunConfig loadRunConfig(const std::optional<std::string>& path,
+                        const std::vector<std::string>& overrides) {
+  RunConfig config;
+  if (path) {
+    std::ifstream in(*path, std::ios::binary);
+    if (!in) throw Error("cannot read config file '" + *path + "'");
+    std::ostringstream text;
+    text << in.rdbuf();
+    const toml::table table = parseTomlText(text.str(), *path);
+    applyConfigTable(config, table, *path);
+  }
+  for (const std::string& o : overrides) applyOverride(config, o);
+  try {
+    validateRunConfig(config);
+  } catch (const Error& e) {
+    std::string source = path ? *path : std::string("default config");
+    if (!overrides.empty()) source += " with --set";
+    throw Error(source + ": " + e.what());
+  }
+  return config;
+}
+
+bool sameRunConfig(const RunConfig& a, const RunConfig& b) {
+  // TOML text is the shortest round-trip form, so equal text means equal bits (and -0 != 0).
+  for (const KeyInfo& k : keyTable()) {
+    if (valueText(k, a, true) != valueText(k, b, true)) return false;
+  }
+  return true;
+}
+
+std::string toToml(const RunConfig& config) {
+  std::string out =
+      "# wiggle run configuration: every key, as resolved (defaults, then the file, then --set).\n"
+      "# Units: lengths in d (mean grain diameter), times in sqrt(d/g), rho = d = g = 1.\n";
+  std::string_view section;
+  for (const KeyInfo& k : keyTable()) {
+    if (k.section() != section) {
+      section = k.section();
+      out += "\n[" + std::string(section) + "]\n";
+    }
+    std::string line = std::string(k.leaf()) + " = " + valueText(k, config, true);
+    if (line.size() < 32) line.resize(32, ' ');
+    line += "  # " + std::string(k.help);
+    if (!k.unit.empty()) line += " [" + std::string(k.unit) + "]";
+    out += line + "\n";
+  }
+  return out;
+}
+
+std::string configHelp() {
+  const RunConfig defaults;
+  std::string out =
+      "Configuration keys: TOML sections and keys, or --set section.key=value.\n"
+      "Lengths in d (mean grain diameter), times in sqrt(d/g); rho = d = g = 1.\n"
+      "Each line: key = default  [unit]  meaning; allowed values.\n";
+  std::string_view section;
+  for (const KeyInfo& k : keyTable()) {
+    if (k.section() != section) {
+      section = k.section();
+      out += "\n[" + std::string(section) + "]\n";
+    }
+    std::string line = "  " + std::string(k.leaf()) + " = " + valueText(k, defaults, true);
+    if (line.size() < 30) line.resize(30, ' ');
+    line += "  ";
+    std::string unit = k.unit.empty() ? "" : "[" + std::string(k.unit) + "]";
+    if (unit.size() < 11) unit.resize(11, ' ');
+    line += unit + "  " + std::string(k.help);
+    std::string allowed;
+    switch (k.kind) {
+      case Kind::Number:
+      case Kind::Integer:
+        if (k.lower.present || k.upper.present) allowed = "must be " + boundText(k.lower, k.upper);
+        break;
+      case Kind::Choice:
+        for (const std::string_view c : k.choices) allowed += (allowed.empty() ? "one of " : " | ") + std::string(c);
+        break;
+      default: break;
+    }
+    if (!allowed.empty()) line += "; " + allowed;
+    out += line + "\n";
+  }
+  return out;
+}
+
+}  // namespace wiggle

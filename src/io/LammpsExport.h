@@ -1,0 +1,60 @@
+#pragma once
+// `wiggle export-lammps`: the same case as `wiggle run`, written as a LAMMPS data file and input
+// deck, so that LAMMPS (Debian's `lmp`, 29 Sep 2021) can run it from the same settled bed
+// (docs/LAMMPS-EXPORT.md). Conventions are those of tools/lammps_reference/ (which wiggle matches
+// to round-off): units lj, dimension 2, atom_style sphere, pair gran/hertz/history, fix freeze on
+// the base, fix enforce2d; the intruder follows the recipe of LAMMPS-NOTES.md: every intruder atom
+// carries the clump's total mass M (so meff of an intruder contact is m M / (m + M), as in wiggle),
+// no gravity on the atoms, `fix move variable` prescribes x(t) = x0 + A sin(2 pi t / T) and leaves
+// y to be integrated, and `fix setforce` gives every atom the force F_contact,y - M g so all atoms
+// accelerate together with the clump's acceleration.
+//
+// What cannot be carried: the tangential contact history. A data file has no section for it, and
+// LAMMPS restores it only from its own binary restart files. The deck therefore starts every
+// existing contact with zero shear displacement (also what LAMMPS's `fix pour` beds would have
+// after a `read_data`); `withoutContactHistory` gives the wiggle World that starts the same way.
+#include <cstdint>
+#include <string>
+
+#include "io/RunConfig.h"
+#include "physics/World.h"
+
+namespace wiggle {
+
+struct LammpsDeck {
+  std::string data;   // data.lammps: atoms, velocities (read_data, atom_style sphere)
+  std::string input;  // in.wiggle: the deck
+  std::uint64_t steps = 0;       // run length: run.duration / run.dt (override: lmp -var nsteps N)
+  std::uint64_t atoms = 0;       // grains + base + intruder atoms
+  std::uint32_t grains = 0;
+};
+
+// File names inside the export directory, and the trajectory file LAMMPS writes.
+inline constexpr const char* kLammpsDataFile = "data.lammps";
+inline constexpr const char* kLammpsInputFile = "in.wiggle";
+inline constexpr const char* kLammpsTrajectoryFile = "trajectory.csv";
+
+// The deck for `world` at the start of the run: intruder set, its Sinusoid motion with y free,
+// clock at 0 (what runExperiment has just before its first step). Throws wiggle::Error when the
+// world is not in that state (no intruder, another motion, clock not at 0).
+LammpsDeck makeLammpsDeck(const World& world, const RunConfig& config);
+
+// Writes DIR/data.lammps and DIR/in.wiggle, each atomically; creates DIR.
+void writeLammpsDeck(const std::string& dir, const LammpsDeck& deck);
+
+// The world LAMMPS starts from after read_data: the same particles (x wrapped into [0, W) as in the
+// data file), velocities, spins, intruder and motion, but no contact history. For comparing a
+// LAMMPS run of the exported deck with wiggle step by step.
+World withoutContactHistory(const World& world);
+
+struct LammpsExportResult {
+  LammpsDeck deck;
+  std::string bedPath;
+  bool bedFromCache = false;
+};
+
+// The whole command: gets the bed as `wiggle run` does (obtainBed: the cache, or made and cached),
+// starts the drive, and writes the deck into `dir`.
+LammpsExportResult exportLammps(const RunConfig& config, const std::string& dir, bool progressLine = true);
+
+}  // namespace wiggle

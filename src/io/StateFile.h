@@ -1,0 +1,20 @@
+#pragma once
+// Framing of binary state files (checkpoints, cached beds): a versioned header and a checksum, so
+// that a truncated, bit-flipped or foreign file is detected and never loaded.
+//
+// Layout: magic "WIGGLE\x1a\n" (8 bytes) | kind (16 bytes, NUL padded, e.g. "checkpoint", "bed") |
+// format version (u32) | payload size (u64) | payload | FNV-1a 64 of everything before (u64).
+#include <cstdint>
+#include <string>
+
+namespace wiggle {
+
+// Bump when the payload layout of any state file changes: older files are then refused.
+constexpr std::uint32_t kStateFormatVersion = 1;
+
+void writeStateFile(const std::string& path, const std::string& kind, const std::string& payload);
+// The payload; throws wiggle::Error ("<path>: not a wiggle <kind> file", "... is truncated",
+// "... fails its checksum", "... was written by format version N, this wiggle reads M").
+std::string readStateFile(const std::string& path, const std::string& kind);
+
+}  // namespace wiggle

@@ -1,0 +1,264 @@
+#include "io/SweepSpec.h"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "core/Error.h"
+#include "core/Hash.h"
+#include "io/Config.h"
+
+namespace wiggle {
+namespace {
+
+constexpr std::size_t maxCases = 1000000;  // a typo like 1e6 values in a grid should not eat RAM
+
+// Text made safe for a directory name: letters, digits and . + - kept (and _ = when
+// `keepSeparators`), any other run of characters becomes one '_'. Long or empty results become a
+// hash of the text, which is just as stable.
+std::string sanitize(const std::string& text, bool keepSeparators) {
+  std::string out;
+  for (const char ch : text) {
+    const bool ok = std::isalnum(static_cast<unsigned char>(ch)) || ch == '.' || ch == '+' ||
+                    ch == '-' || (keepSeparators && (ch == '_' || ch == '='));
+    if (ok) {
+      out += ch;
+    } else if (!out.empty() && out.back() != '_') {
+      out += '_';
+    }
+  }
+  while (!out.empty() && out.back() == '_') out.pop_back();
+  if (out.empty() || out.size() > 40) {
+    Hasher h;
+    h.addBytes(text.data(), text.size());
+    out = 'h';  // (not "h" + string: GCC 12 warns falsely, -Wrestrict)
+    out += h.hex().substr(0, 8);
+  }
+  return out;
+}
+
+std::string suggestTopLevel(const std::string& name) {
+  for (const char* s : {"sweep", "base", "grid", "case"}) {
+    std::size_t diff = 0;  // tiny edit distance: same length and at most one letter changed,
+    if (name.size() == std::char_traits<char>::length(s)) {  // or a plural
+      for (std::size_t i = 0; i < name.size(); ++i) diff += name[i] != s[i];
+      if (diff <= 1) return s;
+    }
+    if (name == std::string(s) + "s") return s;
+  }
+  // A run-config section at the top level belongs under [base] (or [grid]).
+  for (const std::string& key : configKeys()) {
+    if (key.rfind(name + ".", 0) == 0) return "base." + name;
+  }
+  return "";
+}
+
+struct CaseSource {
+  std::string label;                 // explicit `name`, or built from its own values
+  bool named = false;
+  std::vector<ConfigEntry> entries;  // its keys, file order
+};
+
+std::string lineTag(const ConfigEntry& e, const char* table) {
+  return (e.line ? "line " + std::to_string(e.line) + " " : std::string()) + table;
+}
+
+}  // namespace
+
+SweepSpec parseSweepSpec(const std::string& tomlText, const std::string& sourceName) {
+  const toml::table root = parseTomlText(tomlText, sourceName);
+  SweepSpec spec;
+  spec.settings.name = std::filesystem::path(sourceName).stem().string();
+
+  const toml::table* baseTable = nullptr;
+  const toml::table* gridTable = nullptr;
+  const toml::array* caseArray = nullptr;
+  for (const auto& [keyName, node] : root) {
+    const std::string key(keyName.str());
+    const std::string where = sourceName + ":" + std::to_string(node.source().begin.line);
+    if (key == "base" || key == "grid" || key == "sweep") {
+      if (!node.is_table()) throw Error(where + ": '" + key + "' must be a table ([" + key + "])");
+      if (key == "base") baseTable = node.as_table();
+      if (key == "grid") gridTable = node.as_table();
+    } else if (key == "case") {
+      caseArray = node.as_array();
+      if (!caseArray || !caseArray->is_array_of_tables()) {
+        throw Error(where + ": 'case' must be a list of tables ([[case]])");
+      }
+    } else {
+      const std::string s = suggestTopLevel(key);
+      throw Error(where + ": unknown table '" + key + "'" +
+                  (s.empty() ? " (a sweep file has [sweep], [base], [grid] and [[case]])"
+                             : " (did you mean '" + s + "'?)"));
+    }
+  }
+
+  // [sweep]
+  if (const toml::table* sweep = root["sweep"].as_table()) {
+    for (const auto& [keyName, node] : *sweep) {
+      const std::string key(keyName.str());
+      const std::string where = sourceName + ":" + std::to_string(node.source().begin.line) +
+                                ": sweep." + key + " = " + tomlValueString(node);
+      if (key == "name") {
+        const auto* s = node.as_string();
+        if (!s) throw Error(where + ": expected a string");
+        spec.settings.name = s->get();
+      } else if (key == "jobs" || key == "threads_per_case") {
+        const auto* i = node.as_integer();
+        if (!i) throw Error(where + ": expected an integer");
+        if (i->get() < 0 || i->get() > 1000000) throw Error(where + ": must be >= 0 (0 = automatic)");
+        (key == "jobs" ? spec.settings.jobs : spec.settings.threadsPerCase) = static_cast<int>(i->get());
+      } else {
+        throw Error(sourceName + ":" + std::to_string(node.source().begin.line) +
+                    ": unknown key 'sweep." + key + "' (known: name, jobs, threads_per_case)");
+      }
+    }
+  }
+
+  // [base]
+  RunConfig base;
+  if (baseTable) applyConfigTable(base, *baseTable, sourceName, "base");
+
+  // [grid]: every leaf a non-empty array.
+  std::vector<ConfigEntry> grid;
+  if (gridTable) grid = configEntries(*gridTable, sourceName, "grid");
+  std::size_t combinations = 1;
+  for (const ConfigEntry& g : grid) {
+    const std::string where = sourceName + ":" + std::to_string(g.line) + ": grid." + g.key;
+    const auto* values = g.value->as_array();
+    if (!values) {
+      throw Error(where + ": expected an array of values (e.g. [1, 5]), got " + tomlValueString(*g.value));
+    }
+    if (values->empty()) throw Error(where + ": empty array, which gives no cases");
+    combinations *= values->size();
+    if (combinations > maxCases) throw Error(where + ": the grid has more than 1000000 cases");
+  }
+
+  // [[case]]
+  std::vector<CaseSource> cases;
+  if (caseArray) {
+    for (std::size_t i = 0; i < caseArray->size(); ++i) {
+      const toml::table& t = *caseArray->get(i)->as_table();
+      CaseSource c;
+      if (const toml::node* n = t.get("name")) {
+        const auto* s = n->as_string();
+        if (!s) {
+          throw Error(sourceName + ":" + std::to_string(n->source().begin.line) + ": case " +
+                      std::to_string(i + 1) + ": name must be a string");
+        }
+        c.label = s->get();
+        c.named = true;
+      }
+      c.entries = configEntries(t, sourceName, "case", {"name"});
+      if (!c.named) {
+        for (const ConfigEntry& e : c.entries) {
+          c.label += (c.label.empty() ? "" : "_") + e.key.substr(e.key.find('.') + 1) + "=" +
+                     sanitize(tomlValueString(*e.value), false);
+        }
+        if (c.label.empty()) c.label = "case" + std::to_string(i + 1);
+      }
+      for (const ConfigEntry& e : c.entries) {
+        for (const ConfigEntry& g : grid) {
+          if (g.key == e.key) {
+            throw Error(sourceName + ": " + e.key + " is set both in [[case]] " + std::to_string(i + 1) +
+                        " (line " + std::to_string(e.line) + ") and in [grid] (line " +
+                        std::to_string(g.line) + ")");
+          }
+        }
+      }
+      cases.push_back(std::move(c));
+    }
+    if (cases.size() * combinations > maxCases) throw Error(sourceName + ": more than 1000000 cases");
+  }
+  const bool haveCases = !cases.empty();
+  if (!haveCases) cases.push_back({});  // just base
+
+  // Parameter columns: "case" (when some [[case]] has a name), the keys the cases set (first seen
+  // first), then the grid keys in file order.
+  const bool anyNamed = std::any_of(cases.begin(), cases.end(), [](const CaseSource& c) { return c.named; });
+  if (anyNamed) spec.parameterKeys.push_back("case");
+  for (const CaseSource& c : cases) {
+    for (const ConfigEntry& e : c.entries) {
+      if (std::find(spec.parameterKeys.begin(), spec.parameterKeys.end(), e.key) == spec.parameterKeys.end()) {
+        spec.parameterKeys.push_back(e.key);
+      }
+    }
+  }
+  for (const ConfigEntry& g : grid) spec.parameterKeys.push_back(g.key);
+
+  // In names a grid key is shown by its last part (period=5) unless two varying keys share it.
+  std::map<std::string, int> leafCount;
+  for (const std::string& k : spec.parameterKeys) ++leafCount[k.substr(k.find('.') + 1)];
+  auto shortKey = [&](const std::string& k) {
+    const std::string leaf = k.substr(k.find('.') + 1);
+    return leafCount[leaf] > 1 ? k : leaf;
+  };
+
+  std::map<std::string, std::size_t> seenNames;
+  std::vector<std::size_t> pick(grid.size(), 0);
+  for (std::size_t ci = 0; ci < cases.size(); ++ci) {
+    const CaseSource& source = cases[ci];
+    std::fill(pick.begin(), pick.end(), 0);
+    for (std::size_t combo = 0; combo < combinations; ++combo) {
+      SweepCase out;
+      out.index = spec.cases.size();
+
+      std::string name = haveCases ? sanitize(source.label, true) : std::string();
+      for (std::size_t g = 0; g < grid.size(); ++g) {
+        const toml::node& v = *grid[g].value->as_array()->get(pick[g]);
+        if (!name.empty()) name += '_';
+        name += shortKey(grid[g].key);
+        name += '=';
+        name += sanitize(tomlValueString(v), false);
+      }
+      if (name.empty()) name = "base";
+      out.name = name;
+
+      try {
+        out.config = base;
+        for (const ConfigEntry& e : source.entries) {
+          applySetting(out.config, e.key, *e.value, lineTag(e, "[[case]]"));
+        }
+        for (std::size_t g = 0; g < grid.size(); ++g) {
+          const toml::node& v = *grid[g].value->as_array()->get(pick[g]);
+          applySetting(out.config, grid[g].key, v, lineTag(grid[g], "[grid]"));
+        }
+        validateRunConfig(out.config);
+      } catch (const Error& e) {
+        throw Error(sourceName + ": case " + std::to_string(out.index + 1) + " '" + name + "': " + e.what());
+      }
+
+      if (const auto it = seenNames.find(name); it != seenNames.end()) {
+        throw Error(sourceName + ": cases " + std::to_string(it->second + 1) + " and " +
+                    std::to_string(out.index + 1) + " have the same name '" + name +
+                    "' (repeated values, or [[case]] tables needing distinct `name`s)");
+      }
+      seenNames.emplace(name, out.index);
+
+      for (const std::string& k : spec.parameterKeys) {
+        out.parameters.push_back({k, k == "case" ? source.label : configValueString(out.config, k)});
+      }
+      spec.cases.push_back(std::move(out));
+
+      // Odometer: the last grid key varies fastest.
+      for (std::size_t g = grid.size(); g-- > 0;) {
+        if (++pick[g] < grid[g].value->as_array()->size()) break;
+        pick[g] = 0;
+      }
+    }
+  }
+  return spec;
+}
+
+SweepSpec loadSweepSpec(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error("cannot read sweep file '" + path + "'");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parseSweepSpec(text.str(), path);
+}
+
+}  // namespace wiggle

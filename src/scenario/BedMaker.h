@@ -1,0 +1,54 @@
+#pragma once
+// Making the granular bed (SPEC 5): grains poured in batches around the held intruder, each batch
+// left to settle, until the free surface reaches the target height; grains above it removed; then
+// relaxed until the kinetic energy per grain is below bed.rest_energy (or bed.max_time is spent).
+// A bed depends only on its own parameters, so it is cached on disk under a key that hashes exactly
+// those (bedKey); one bed serves every amplitude and period of a shape.
+#include <functional>
+#include <string>
+
+#include "io/RunConfig.h"
+#include "physics/World.h"
+
+namespace wiggle {
+
+struct BedStatus {
+  std::string stage;         // "pouring" | "relaxing"
+  int batch = 0;             // batches poured so far
+  std::uint32_t grains = 0;
+  double surface = 0.0;      // free-surface height [d]
+  double time = 0.0;         // simulated bed-making time [sqrt(d/g)]
+  double kineticPerGrain = 0.0;  // [m g d]
+  double progress = 0.0;     // rough fraction done, for the progress line
+};
+using BedProgress = std::function<void(const BedStatus&)>;
+
+// The engine parameters of a run config (everything but the particles).
+WorldDef worldDefFor(const RunConfig& config);
+
+// Hex key of everything a bed depends on: box, seed, grains, contact, intruder clump and position,
+// bed-making parameters, time step and engine settings, and the bed format version.
+std::string bedKey(const RunConfig& config, const ClumpDef& clump);
+
+// Free-surface height: the median over 2-d-wide columns of the highest grain top in the column.
+double freeSurfaceHeight(const World& world);
+
+// Makes a bed from scratch (deterministic: same config, same bits, any thread count).
+World makeBed(const RunConfig& config, const ClumpDef& clump, const BedProgress& progress = {});
+
+struct CachedBed {
+  World world;
+  std::string key;
+  std::string path;
+  bool fromCache = false;
+  std::string note;  // why a cache entry was not used, if one was found and refused
+};
+
+// The cache directory: config.bed.cacheDir, else $WIGGLE_CACHE, else $HOME/.cache/wiggle.
+std::string bedCacheDir(const RunConfig& config);
+
+// Loads the bed from the cache when a valid entry exists; otherwise makes it and stores it. A corrupt
+// or foreign entry is reported in `note` and rebuilt, never trusted.
+CachedBed obtainBed(const RunConfig& config, const ClumpDef& clump, const BedProgress& progress = {});
+
+}  // namespace wiggle

@@ -1,0 +1,488 @@
+#include "scenario/Experiment.h"
+
+#include <omp.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <nlohmann/json.hpp>
+
+#include "analysis/FieldObserver.h"
+#include "analysis/RiseRate.h"
+#include "core/Error.h"
+#include "io/AtomicFile.h"
+#include "io/Config.h"
+#include "io/LammpsDump.h"
+#include "io/StateFile.h"
+#include "model/CavityModel.h"
+#include "scenario/BedMaker.h"
+#include "scenario/Shape.h"
+
+namespace wiggle {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kPhaseBins = 20;
+
+std::atomic<int> gSignal{0};
+extern "C" void onSignal(int sig) { gSignal = sig; }
+
+using Clock = std::chrono::steady_clock;
+double secondsSince(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+std::string number(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", v);
+  return text;
+}
+
+std::string duration(double seconds) {
+  char text[32];
+  if (seconds < 0 || !std::isfinite(seconds)) return "?";
+  const long s = std::lround(seconds);
+  if (s >= 3600) std::snprintf(text, sizeof text, "%ldh%02ldm", s / 3600, (s % 3600) / 60);
+  else if (s >= 60) std::snprintf(text, sizeof text, "%ldm%02lds", s / 60, s % 60);
+  else std::snprintf(text, sizeof text, "%lds", s);
+  return text;
+}
+
+// Appends timestamped lines to DIR/log.txt.
+class RunLog {
+ public:
+  explicit RunLog(const std::string& path) : out_(path, std::ios::app) {}
+  void line(const std::string& text) {
+    const std::time_t now = std::time(nullptr);
+    char stamp[32];
+    std::strftime(stamp, sizeof stamp, "%Y-%m-%d %H:%M:%S", std::localtime(&now));
+    out_ << stamp << "  " << text << '\n';
+    out_.flush();
+  }
+
+ private:
+  std::ofstream out_;
+};
+
+// Progress: a rewritten line on a terminal, otherwise a log line every 30 s.
+class Progress {
+ public:
+  Progress(bool enabled, RunLog& log) : terminal_(enabled && ::isatty(STDERR_FILENO)), log_(log) {}
+  void update(const std::string& text) {
+    const double now = secondsSince(start_);
+    if (terminal_ && now - lastTerminal_ >= 0.5) {
+      std::fprintf(stderr, "\r\033[K%s", text.c_str());
+      std::fflush(stderr);
+      lastTerminal_ = now;
+    }
+    if (now - lastLog_ >= 30.0) {
+      log_.line(text);
+      lastLog_ = now;
+    }
+  }
+  void finish() {
+    if (terminal_) std::fprintf(stderr, "\r\033[K");
+  }
+
+ private:
+  bool terminal_;
+  RunLog& log_;
+  Clock::time_point start_ = Clock::now();
+  double lastTerminal_ = -1.0, lastLog_ = 0.0;
+};
+
+// Everything the run loop accumulates besides the World: saved in checkpoints.
+struct RunState {
+  std::vector<TrajectorySample> samples;
+  std::vector<double> phaseSum = std::vector<double>(kPhaseBins, 0.0);
+  std::vector<std::uint64_t> phaseCount = std::vector<std::uint64_t>(kPhaseBins, 0);
+  std::uint64_t dumpBytes = 0;     // length of dumps/dump.lammpstrj at this state
+  double runWallSeconds = 0.0;     // stepping time so far (for ns per particle-step)
+  double bedWallSeconds = 0.0;
+  std::string bedKey;
+  bool bedFromCache = false;
+
+  void save(BinaryWriter& out) const {
+    out.array(samples);
+    out.array(phaseSum);
+    out.array(phaseCount);
+    out.value(dumpBytes);
+    out.value(runWallSeconds);
+    out.value(bedWallSeconds);
+    out.string(bedKey);
+    out.value(static_cast<std::uint8_t>(bedFromCache));
+  }
+  void load(BinaryReader& in) {
+    samples = in.array<TrajectorySample>();
+    phaseSum = in.array<double>();
+    phaseCount = in.array<std::uint64_t>();
+    if (phaseSum.size() != kPhaseBins || phaseCount.size() != kPhaseBins)
+      throw Error(in.what() + " is corrupt: phase bins");
+    dumpBytes = in.value<std::uint64_t>();
+    runWallSeconds = in.value<double>();
+    bedWallSeconds = in.value<double>();
+    bedKey = in.string();
+    bedFromCache = in.value<std::uint8_t>() != 0;
+  }
+};
+
+std::string checkpointPath(const std::string& dir) { return dir + "/checkpoint.bin"; }
+std::string previousCheckpointPath(const std::string& dir) { return dir + "/checkpoint.prev.bin"; }
+
+void writeCheckpoint(const std::string& dir, const std::string& configToml, const World& world,
+                     const RunState& state, const FieldObserver& fields) {
+  BinaryWriter out;
+  out.string(configToml);
+  world.save(out);
+  state.save(out);
+  fields.save(out);
+  // Keep the previous good checkpoint until the new one is safely in place.
+  std::error_code ec;
+  if (fs::exists(checkpointPath(dir))) fs::rename(checkpointPath(dir), previousCheckpointPath(dir), ec);
+  writeStateFile(checkpointPath(dir), "checkpoint", out.bytes());
+}
+
+std::string csvNumber(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.10g", v);
+  return text;
+}
+
+void writeTrajectory(const std::string& path, const std::vector<TrajectorySample>& samples) {
+  std::string out = "t,x,y,vx,vy,fy\n";
+  for (const auto& s : samples)
+    out += csvNumber(s.t) + ',' + csvNumber(s.x) + ',' + csvNumber(s.y) + ',' + csvNumber(s.vx) + ',' +
+           csvNumber(s.vy) + ',' + csvNumber(s.fy) + '\n';
+  writeFileAtomically(path, out);
+}
+
+void writePhaseRates(const std::string& path, const RunState& state) {
+  std::string out = "bin,phase_center,vy_mean,samples\n";
+  for (int b = 0; b < kPhaseBins; ++b) {
+    const std::uint64_t n = state.phaseCount[b];
+    out += std::to_string(b) + ',' + csvNumber(b + 0.5) + ',' +
+           (n ? csvNumber(state.phaseSum[b] / static_cast<double>(n)) : std::string()) + ',' + std::to_string(n) + '\n';
+  }
+  writeFileAtomically(path, out);
+}
+
+void writeModel(const std::string& path, const RunConfig& config, const Shape& shape) {
+  std::vector<std::array<double, 2>> outline(shape.outline.begin(), shape.outline.end());
+  const CavityGeometry g = cavityGeometry(outline);
+  nlohmann::json j;
+  j["shape"] = config.intruder.shape;
+  j["angle"] = config.intruder.angle;
+  j["y0"] = g.y0;
+  j["h"] = g.h;
+  j["T_max"] = g.tMax;
+  // The side with the smaller T_rise sets when rising can start; both are given.
+  const CavitySide& main = g.left.tRise <= g.right.tRise ? g.left : g.right;
+  j["l"] = main.l;
+  j["l_prime"] = main.lPrime;
+  j["T_rise"] = main.tRise;
+  j["l_left"] = g.left.l;
+  j["l_right"] = g.right.l;
+  j["T_rise_left"] = g.left.tRise;
+  j["T_rise_right"] = g.right.tRise;
+  j["amplitude"] = config.drive.amplitude;
+  nlohmann::json curve = nlohmann::json::array();
+  for (int k = 1; k <= 120; ++k) {
+    const double period = 0.1 * k;
+    const double vy = 0.5 * (cavityRiseRate(g, g.left, period, config.drive.amplitude) +
+                             cavityRiseRate(g, g.right, period, config.drive.amplitude));
+    curve.push_back({period, vy});
+  }
+  j["curve"] = curve;
+  j["vy_at_period"] = 0.5 * (cavityRiseRate(g, g.left, config.drive.period, config.drive.amplitude) +
+                             cavityRiseRate(g, g.right, config.drive.period, config.drive.amplitude));
+  writeFileAtomically(path, j.dump(2) + "\n");
+}
+
+}  // namespace
+
+std::uint64_t stepsIn(double interval, double dt, const char* key) {
+  const double ratio = interval / dt;
+  const double steps = std::round(ratio);
+  if (steps < 1 || std::fabs(ratio - steps) > 1e-6 * std::max(1.0, steps))
+    throw Error(std::string(key) + " = " + number(interval) + " is not a whole number of time steps (run.dt = " +
+                number(dt) + ")");
+  return static_cast<std::uint64_t>(steps);
+}
+
+void checkGeometry(const RunConfig& config, const ClumpDef& clump) {
+  double minX = 0, maxX = 0, minY = 0, maxY = 0;
+  for (std::size_t a = 0; a < clump.offsetX.size(); ++a) {
+    minX = std::min(minX, clump.offsetX[a] - clump.atomRadius);
+    maxX = std::max(maxX, clump.offsetX[a] + clump.atomRadius);
+    minY = std::min(minY, clump.offsetY[a] - clump.atomRadius);
+    maxY = std::max(maxY, clump.offsetY[a] + clump.atomRadius);
+  }
+  const double width = maxX - minX;
+  // Room for the intruder's sweep plus a few grain diameters between its images across the
+  // periodic boundary, so it never meets itself.
+  const double needed = width + 2.0 * config.drive.amplitude + 4.0 * config.grains.dMax;
+  if (config.box.width < needed)
+    throw Error("box.width = " + number(config.box.width) + " is too narrow for the " + config.intruder.shape + " (" +
+                number(width) + " wide) moving +-" + number(config.drive.amplitude) + ": need at least " +
+                number(std::ceil(needed)));
+  const double bottom = config.intruder.y0 + minY, top = config.intruder.y0 + maxY;
+  if (bottom < 0.5 + 2.0 * config.grains.dMax)
+    throw Error("intruder.y0 = " + number(config.intruder.y0) + " puts the intruder's bottom at y = " + number(bottom) +
+                ", too near the base: need at least two grain layers below it");
+  if (top > config.box.bedHeight - 2.0 * config.grains.dMax)
+    throw Error("intruder.y0 = " + number(config.intruder.y0) + " puts the intruder's top at y = " + number(top) +
+                ", outside or too near the top of the bed (box.bed_height = " + number(config.box.bedHeight) +
+                "): need at least two grain layers above it");
+}
+
+RunOutcome runExperiment(const RunConfig& config, const RunOptions& options) {
+  if (options.threads > 0) omp_set_num_threads(options.threads);
+  const std::string dir = options.outDir;
+  const Shape shape = makeShape(config.intruder);
+  const ClumpDef clump = makeClump(config.intruder, config.grains.massModel, 1.0);
+  checkGeometry(config, clump);
+  const double dt = config.run.dt;
+  const std::uint64_t totalSteps = stepsIn(config.run.duration, dt, "run.duration");
+  const std::uint64_t sampleEvery = stepsIn(config.run.sampleInterval, dt, "run.sample_interval");
+  const std::uint64_t periodSteps = stepsIn(config.drive.period, dt, "drive.period");
+  const std::uint64_t dumpEvery = config.run.dumpInterval > 0 ? stepsIn(config.run.dumpInterval, dt, "run.dump_interval") : 0;
+  const std::uint64_t firstMeasuredStep = static_cast<std::uint64_t>(std::llround(0.1 * static_cast<double>(totalSteps)));
+  // Step within a period at which each field phase is sampled: 10 phi / pi = p  ->  p / 20 of T.
+  std::vector<std::uint64_t> fieldPhaseStep;
+  for (double p : config.fields.phases)
+    fieldPhaseStep.push_back(static_cast<std::uint64_t>(std::llround(p / 20.0 * static_cast<double>(periodSteps))) %
+                             periodSteps);
+
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw Error("cannot create output directory " + dir + ": " + ec.message());
+  fs::create_directories(dir + "/dumps", ec);
+  const std::string configToml = toToml(config);
+  const bool hasCheckpoint = fs::exists(checkpointPath(dir)) || fs::exists(previousCheckpointPath(dir));
+  if (!options.resume && (hasCheckpoint || fs::exists(dir + "/summary.json")))
+    throw Error(dir + " already holds a run: use --resume to continue it, or choose another --out");
+  if (options.resume && fs::exists(dir + "/config.toml")) {
+    const RunConfig previous = parseRunConfig(readFile(dir + "/config.toml"), dir + "/config.toml");
+    if (!sameRunConfig(previous, config))
+      throw Error("--resume: the config differs from the one in " + dir + "/config.toml (run without a CONFIG to reuse it)");
+  }
+  writeFileAtomically(dir + "/config.toml", configToml);
+  RunLog log(dir + "/log.txt");
+  log.line(std::string("wiggle ") + WIGGLE_VERSION + (options.resume ? " run --resume" : " run") + " in " + dir +
+           " with " + std::to_string(omp_get_max_threads()) + " threads");
+
+  RunState state;
+  FieldObserver fields(config.fields, config.box.width);
+  std::optional<World> loaded;
+  if (options.resume) {
+    for (const std::string& path : {checkpointPath(dir), previousCheckpointPath(dir)}) {
+      if (!fs::exists(path)) continue;
+      try {
+        const std::string payload = readStateFile(path, "checkpoint");
+        BinaryReader in(payload.data(), payload.size(), path);
+        if (in.string() != configToml) throw Error(path + " belongs to another config");
+        World world = World::load(in);
+        RunState candidate;
+        candidate.load(in);
+        FieldObserver candidateFields(config.fields, config.box.width);
+        candidateFields.load(in);
+        if (!in.atEnd()) throw Error(path + " has trailing data");
+        loaded.emplace(std::move(world));
+        state = std::move(candidate);
+        fields = std::move(candidateFields);
+        log.line("resumed from " + path + " at step " + std::to_string(loaded->stepCount()));
+        break;
+      } catch (const Error& e) {
+        log.line(std::string("checkpoint refused: ") + e.what());
+        std::fprintf(stderr, "wiggle: warning: %s; trying an older one\n", e.what());
+      }
+    }
+    if (!loaded) log.line("no usable checkpoint: starting from the bed");
+  }
+
+  const std::string dumpPath = dir + "/dumps/dump.lammpstrj";
+  Progress progress(options.progressLine, log);
+  if (!loaded) {
+    const auto bedStart = Clock::now();
+    CachedBed bed = obtainBed(config, clump, [&](const BedStatus& s) {
+      progress.update("[bed] " + s.stage + " batch " + std::to_string(s.batch) + ", " + std::to_string(s.grains) +
+                      " grains, surface " + number(s.surface) + " / " + number(config.box.bedHeight) + ", t = " +
+                      number(s.time) + (s.stage == "relaxing" ? ", KE/grain " + number(s.kineticPerGrain) : "") +
+                      ", " + duration(secondsSince(bedStart)) + " elapsed");
+    });
+    progress.finish();
+    state.bedWallSeconds = secondsSince(bedStart);
+    state.bedKey = bed.key;
+    state.bedFromCache = bed.fromCache;
+    if (!bed.note.empty()) {
+      log.line(bed.note);
+      std::fprintf(stderr, "wiggle: warning: %s\n", bed.note.c_str());
+    }
+    log.line(std::string(bed.fromCache ? "bed loaded from " : "bed made and cached at ") + bed.path + " (" +
+             std::to_string(bed.world.grainCount()) + " grains, surface " + number(freeSurfaceHeight(bed.world)) +
+             ", " + number(state.bedWallSeconds) + " s)");
+    loaded.emplace(std::move(bed.world));
+    World& world = *loaded;
+    ClumpMotion motion;
+    motion.kind = HorizontalMotion::Sinusoid;
+    motion.x0 = 0.5 * config.box.width;
+    motion.amplitude = config.drive.amplitude;
+    motion.period = config.drive.period;
+    motion.verticalFree = true;
+    world.setIntruderMotion(motion);
+    world.resetClock();
+    std::ofstream(dumpPath, std::ios::trunc);
+    state.dumpBytes = 0;
+  } else {
+    // Drop dump frames written after the checkpoint: they will be written again.
+    if (fs::exists(dumpPath)) fs::resize_file(dumpPath, state.dumpBytes, ec);
+    if (ec) throw Error("cannot truncate " + dumpPath + ": " + ec.message());
+  }
+  World& world = *loaded;
+
+  auto sample = [&] {
+    const ClumpState& c = world.intruder();
+    state.samples.push_back({world.time(), c.x, c.y, c.vx, c.vy, c.contactFy});
+  };
+  auto dumpFrame = [&] {
+    const std::string frame = lammpsDumpFrame(world);
+    std::ofstream out(dumpPath, std::ios::app | std::ios::binary);
+    out << frame;
+    out.flush();
+    if (!out) throw Error("cannot write " + dumpPath);
+    state.dumpBytes += frame.size();
+  };
+  if (world.stepCount() == 0 && state.samples.empty()) {
+    sample();
+    if (dumpEvery) dumpFrame();
+  }
+
+  gSignal = 0;
+  auto previousInt = std::signal(SIGINT, onSignal);
+  auto previousTerm = std::signal(SIGTERM, onSignal);
+  const double particles = static_cast<double>(world.particles().size());
+  auto lastCheckpoint = Clock::now();
+  auto chunkStart = Clock::now();
+  const std::uint64_t startStep = world.stepCount();
+  RunOutcome outcome;
+  try {
+    while (world.stepCount() < totalSteps) {
+      world.step();
+      const std::uint64_t step = world.stepCount();
+      if (step > firstMeasuredStep) {
+        const int bin = static_cast<int>((step % periodSteps) * kPhaseBins / periodSteps);
+        state.phaseSum[bin] += world.intruder().vy;
+        ++state.phaseCount[bin];
+        if (config.fields.enabled)
+          for (std::size_t p = 0; p < fieldPhaseStep.size(); ++p)
+            if (step % periodSteps == fieldPhaseStep[p]) fields.addFrame(world, p);
+      }
+      if (step % sampleEvery == 0) sample();
+      if (dumpEvery && step % dumpEvery == 0) dumpFrame();
+      if (step % 200 == 0 || step == totalSteps) {
+        state.runWallSeconds += secondsSince(chunkStart);
+        chunkStart = Clock::now();
+        const double done = static_cast<double>(step - startStep);
+        const double nsPerParticleStep = state.runWallSeconds > 0 && step > 0
+                                             ? 1e9 * state.runWallSeconds / (particles * static_cast<double>(step))
+                                             : 0.0;
+        const double eta = done > 0 ? state.runWallSeconds / static_cast<double>(step) *
+                                          static_cast<double>(totalSteps - step)
+                                    : -1.0;
+        progress.update("[run] " + number(100.0 * static_cast<double>(step) / static_cast<double>(totalSteps)) +
+                        "%  t = " + number(world.time()) + " / " + number(config.run.duration) + "  ETA " +
+                        duration(eta) + "  " + number(nsPerParticleStep) + " ns/particle-step  y = " +
+                        number(world.intruder().y));
+        if (gSignal != 0) {
+          writeCheckpoint(dir, configToml, world, state, fields);
+          progress.finish();
+          log.line("interrupted by signal " + std::to_string(gSignal.load()) + " at step " + std::to_string(step) +
+                   "; checkpoint written");
+          throw Error("interrupted at t = " + number(world.time()) + "; continue with: wiggle run --out " + dir +
+                      " --resume");
+        }
+        if (secondsSince(lastCheckpoint) >= config.run.checkpointInterval) {
+          writeCheckpoint(dir, configToml, world, state, fields);
+          lastCheckpoint = Clock::now();
+          log.line("checkpoint at step " + std::to_string(step));
+        }
+      }
+      if (options.stopAfterSteps && step - startStep >= options.stopAfterSteps) {
+        if (options.checkpointAtStop) writeCheckpoint(dir, configToml, world, state, fields);
+        progress.finish();
+        std::signal(SIGINT, previousInt);
+        std::signal(SIGTERM, previousTerm);
+        outcome.status = "stopped";
+        return outcome;
+      }
+    }
+  } catch (...) {
+    std::signal(SIGINT, previousInt);
+    std::signal(SIGTERM, previousTerm);
+    progress.finish();
+    throw;
+  }
+  std::signal(SIGINT, previousInt);
+  std::signal(SIGTERM, previousTerm);
+  progress.finish();
+  state.runWallSeconds += secondsSince(chunkStart);
+  writeCheckpoint(dir, configToml, world, state, fields);
+
+  const RiseRate rate = measureRiseRate(state.samples, config.run.duration, config.drive.period);
+  writeTrajectory(dir + "/trajectory.csv", state.samples);
+  writePhaseRates(dir + "/phase_rates.csv", state);
+  if (config.fields.enabled) fields.writeCsv(dir + "/fields.csv");
+  writeModel(dir + "/model.json", config, shape);
+
+  nlohmann::json summary;
+  summary["vy"] = rate.vy;
+  summary["vy_slope"] = rate.slope;
+  summary["vy_rule"] = "(y_f - y_i)/(t_f - t_i), t_i = 0.1 t_total, t_f = t_total or the start of a plateau "
+                       "(docs/OUTPUT-FORMATS.md)";
+  summary["plateau"] = rate.plateau;
+  summary["t_i"] = rate.tInitial;
+  summary["t_f"] = rate.tFinal;
+  summary["y_initial"] = rate.yInitial;
+  summary["y_final"] = rate.yFinal;
+  summary["y_start"] = state.samples.front().y;
+  summary["status"] = "ok";
+  summary["n_grains"] = world.grainCount();
+  summary["n_particles"] = world.particles().size();
+  summary["steps"] = world.stepCount();
+  summary["threads"] = omp_get_max_threads();
+  summary["wall_s"] = state.runWallSeconds + state.bedWallSeconds;
+  summary["run_wall_s"] = state.runWallSeconds;
+  summary["bed_wall_s"] = state.bedWallSeconds;
+  summary["bed_from_cache"] = state.bedFromCache;
+  summary["bed_key"] = state.bedKey;
+  summary["ns_per_particle_step"] = 1e9 * state.runWallSeconds / (particles * static_cast<double>(world.stepCount()));
+  summary["state_hash"] = world.stateHash();
+  summary["shape"] = config.intruder.shape;
+  summary["amplitude"] = config.drive.amplitude;
+  summary["period"] = config.drive.period;
+  summary["mu"] = config.contact.mu;
+  summary["field_frames"] = [&] {
+    nlohmann::json f = nlohmann::json::array();
+    for (std::size_t p = 0; p < config.fields.phases.size(); ++p) f.push_back(fields.frames(p));
+    return f;
+  }();
+  summary["version"] = WIGGLE_VERSION;
+  writeFileAtomically(dir + "/summary.json", summary.dump(2) + "\n");
+  log.line("done: vy = " + number(rate.vy) + ", slope = " + number(rate.slope) + ", " +
+           number(summary["ns_per_particle_step"].get<double>()) + " ns/particle-step, state " + world.stateHash());
+  outcome.status = "ok";
+  outcome.vy = rate.vy;
+  outcome.vySlope = rate.slope;
+  outcome.stateHash = world.stateHash();
+  outcome.summaryPath = dir + "/summary.json";
+  return outcome;
+}
+
+}  // namespace wiggle

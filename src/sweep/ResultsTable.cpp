@@ -1,0 +1,125 @@
+#include "sweep/ResultsTable.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+
+#include "core/Error.h"
+#include "io/AtomicFile.h"
+#include "io/Config.h"
+
+namespace wiggle {
+
+namespace {
+
+// The parameters the plots know by meaning (python/wiggleplot/prepare.py): always present.
+constexpr const char* kAlwaysKeys[] = {"intruder.shape", "drive.amplitude", "drive.period", "contact.mu", "box.seed"};
+
+// A [[case]] label comes from SweepSpec under the key "case", which results.csv already uses for
+// the case's full name; its column is called case_label instead.
+std::string columnName(const std::string& key) { return key == "case" ? "case_label" : key; }
+
+std::string number(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.10g", v);
+  return text;
+}
+
+std::vector<std::string> parameterKeys(const SweepSpec& spec) {
+  std::vector<std::string> keys = spec.parameterKeys;
+  for (const char* k : kAlwaysKeys)
+    if (std::find(keys.begin(), keys.end(), k) == keys.end()) keys.emplace_back(k);
+  return keys;
+}
+
+}  // namespace
+
+std::string csvCell(const std::string& text);
+
+namespace {
+void appendRow(std::string& out, const std::vector<std::string>& cells) {
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    if (i) out += ',';
+    out += csvCell(cells[i]);
+  }
+  out += '\n';
+}
+}  // namespace
+
+std::string csvCell(const std::string& text) {
+  if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
+  std::string out = "\"";
+  for (const char ch : text) {
+    if (ch == '"') out += '"';
+    out += ch;
+  }
+  return out + '"';
+}
+
+CaseResult readCaseSummary(const std::string& runDir) {
+  const std::string path = runDir + "/summary.json";
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(readFile(path));
+  } catch (const nlohmann::json::exception& e) {
+    throw Error(path + " is not valid JSON: " + e.what());
+  }
+  CaseResult r;
+  r.status = j.value("status", "");
+  if (r.status != "ok") {
+    r.status = "failed";
+    r.error = path + " has status '" + j.value("status", "") + "'";
+    return r;
+  }
+  r.vy = j.value("vy", 0.0);
+  r.vySlope = j.value("vy_slope", 0.0);
+  r.wallSeconds = j.value("wall_s", 0.0);
+  r.nsPerParticleStep = j.value("ns_per_particle_step", 0.0);
+  r.runWallSeconds = j.value("run_wall_s", 0.0);
+  r.grains = j.value("n_grains", std::uint64_t{0});
+  r.steps = j.value("steps", std::uint64_t{0});
+  const double particles = j.value("n_particles", static_cast<double>(r.grains));
+  r.particleSteps = particles * static_cast<double>(r.steps);
+  r.stateHash = j.value("state_hash", "");
+  return r;
+}
+
+std::vector<std::string> resultColumns(const SweepSpec& spec) {
+  std::vector<std::string> columns = {"case", "run_dir", "status", "vy", "vy_slope", "wall_s"};
+  for (const std::string& k : parameterKeys(spec)) columns.push_back(columnName(k));
+  for (const char* k : {"n_grains", "steps", "ns_per_particle_step", "state_hash", "error"}) columns.emplace_back(k);
+  return columns;
+}
+
+std::string resultsCsv(const SweepSpec& spec, const std::vector<std::string>& runDirs,
+                       const std::vector<CaseResult>& results) {
+  if (runDirs.size() != spec.cases.size() || results.size() != spec.cases.size())
+    throw Error("results.csv: internal error: one run directory and result per case expected");
+  std::string out;
+  const std::vector<std::string> columns = resultColumns(spec);
+  appendRow(out, columns);
+  const std::vector<std::string> keys = parameterKeys(spec);
+  for (std::size_t c = 0; c < spec.cases.size(); ++c) {
+    const SweepCase& sc = spec.cases[c];
+    const CaseResult& r = results[c];
+    const bool ok = r.status == "ok";
+    std::vector<std::string> row = {sc.name, runDirs[c], r.status, ok ? number(r.vy) : "",
+                                    ok ? number(r.vySlope) : "", ok ? number(r.wallSeconds) : ""};
+    for (const std::string& k : keys) {
+      std::string value;
+      for (const SweepParameter& p : sc.parameters)
+        if (p.key == k) value = p.value;
+      if (value.empty() && k != "case") value = configValueString(sc.config, k);
+      row.push_back(value);
+    }
+    row.push_back(ok ? std::to_string(r.grains) : "");
+    row.push_back(ok ? std::to_string(r.steps) : "");
+    row.push_back(ok ? number(r.nsPerParticleStep) : "");
+    row.push_back(ok ? r.stateHash : "");
+    row.push_back(r.error);
+    appendRow(out, row);
+  }
+  return out;
+}
+
+}  // namespace wiggle

@@ -1,0 +1,46 @@
+#pragma once
+// results.csv of a sweep directory (docs/OUTPUT-FORMATS.md, docs/SWEEPS.md): one row per case in
+// case order, rewritten whole and atomically (temporary file + rename) after every change, so a
+// reader never sees a torn file.
+//
+// Columns: case,run_dir,status,vy,vy_slope,wall_s, then one per parameter named by its config key
+// (the keys that vary in the sweep, then intruder.shape, drive.amplitude, drive.period, contact.mu
+// and box.seed when they do not vary, so the plots always find them), then
+// n_grains,steps,ns_per_particle_step,state_hash,error.
+// status: ok | failed | running | pending (not run yet, or interrupted: it resumes on a rerun).
+// Numbers of a case that is not ok are empty cells. Cells holding a comma, quote or newline are
+// quoted as RFC 4180 says.
+#include <string>
+#include <vector>
+
+#include "io/SweepSpec.h"
+
+namespace wiggle {
+
+// What a case's run left, read from its summary.json (numbers) or its failure (error).
+struct CaseResult {
+  std::string status = "pending";  // ok | failed | running | pending
+  double vy = 0.0, vySlope = 0.0, wallSeconds = 0.0;
+  double nsPerParticleStep = 0.0;
+  double runWallSeconds = 0.0;      // stepping time (for the ETA)
+  double particleSteps = 0.0;       // particles x steps of the run phase (for the ETA)
+  std::uint64_t grains = 0, steps = 0;
+  std::string stateHash;
+  std::string error;                // one line; empty unless failed (or interrupted)
+};
+
+// Reads <runDir>/summary.json into a CaseResult with status "ok" when the file says so. Throws
+// wiggle::Error when the file is missing or unreadable.
+CaseResult readCaseSummary(const std::string& runDir);
+
+// The column names for a sweep (see the header comment).
+std::vector<std::string> resultColumns(const SweepSpec& spec);
+
+// The whole file's text. `runDirs` are relative to the sweep directory, one per case.
+std::string resultsCsv(const SweepSpec& spec, const std::vector<std::string>& runDirs,
+                       const std::vector<CaseResult>& results);
+
+// One CSV cell, quoted when it must be.
+std::string csvCell(const std::string& text);
+
+}  // namespace wiggle

@@ -1,0 +1,119 @@
+#include "sweep/SweepPlan.h"
+
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <numbers>
+#include <nlohmann/json.hpp>
+
+#include "core/Error.h"
+#include "io/AtomicFile.h"
+#include "io/Config.h"
+#include "scenario/BedMaker.h"
+#include "scenario/Experiment.h"
+#include "scenario/Shape.h"
+
+namespace wiggle {
+
+namespace fs = std::filesystem;
+
+double estimatedGrains(const RunConfig& config) {
+  const double a = config.grains.dMin, b = config.grains.dMax;
+  const double meanArea = std::numbers::pi / 4.0 * (a * a + a * b + b * b) / 3.0;
+  return config.box.width * config.box.bedHeight * CostModel::packing / meanArea;
+}
+
+namespace {
+// Grains plus the frozen base row (one per unit of width); the intruder's atoms are negligible.
+double estimatedParticles(const RunConfig& config) { return estimatedGrains(config) + config.box.width; }
+}  // namespace
+
+double estimatedRunSeconds(const RunConfig& config, double nsPerParticleStep) {
+  const double steps = std::round(config.run.duration / config.run.dt);
+  return 1e-9 * nsPerParticleStep * estimatedParticles(config) * steps;
+}
+
+double estimatedBedSeconds(const RunConfig& config, double nsPerParticleStep) {
+  // While pouring, the bed holds on average about half (b + 1) / (2 b) of its final grains over
+  // b batches; then the whole bed relaxes.
+  const double batches = std::max(1.0, std::ceil(config.box.bedHeight / config.bed.batchHeight));
+  const double simulatedTime = 0.5 * (batches + 1.0) * CostModel::bedTimePerBatch + CostModel::bedRelaxTime;
+  return 1e-9 * nsPerParticleStep * estimatedParticles(config) * simulatedTime / config.run.dt;
+}
+
+std::string bedCachePath(const RunConfig& config, const std::string& key) {
+  return bedCacheDir(config) + "/bed-" + key + ".bin";
+}
+
+SweepPlan makeSweepPlan(SweepSpec spec, const std::string& outDir) {
+  SweepPlan plan;
+  plan.spec = std::move(spec);
+  plan.outDir = outDir;
+  std::map<std::string, int> bedIndex;      // key -> index in plan.beds (beds to make)
+  std::map<std::string, bool> keySeen;
+  for (const SweepCase& c : plan.spec.cases) {
+    PlannedCase p;
+    p.index = c.index;
+    p.runDir = "cases/" + c.name;
+    p.dir = outDir + "/" + p.runDir;
+    p.estimatedParticles = estimatedParticles(c.config);
+    p.steps = static_cast<std::uint64_t>(std::llround(c.config.run.duration / c.config.run.dt));
+    try {
+      // The same checks `wiggle run` makes before touching the bed, so a bad case fails here with
+      // the message the run would give, without a process or a bed being spent on it.
+      const ClumpDef clump = makeClump(c.config.intruder, c.config.grains.massModel, 1.0);
+      checkGeometry(c.config, clump);
+      p.bedKey = bedKey(c.config, clump);
+    } catch (const Error& e) {
+      p.state = CaseState::Failed;
+      p.error = e.what();
+    }
+
+    if (p.state != CaseState::Failed && fs::exists(p.dir + "/config.toml")) {
+      try {
+        const RunConfig previous = parseRunConfig(readFile(p.dir + "/config.toml"), p.dir + "/config.toml");
+        if (!sameRunConfig(previous, c.config)) {
+          p.state = CaseState::Failed;
+          p.error = p.dir + " holds a run of a different config (the sweep file changed?): delete that "
+                    "directory to run this case again";
+        }
+      } catch (const Error& e) {
+        p.state = CaseState::Failed;
+        p.error = e.what();
+      }
+    }
+    if (p.state != CaseState::Failed && fs::exists(p.dir + "/summary.json")) {
+      try {
+        const auto summary = nlohmann::json::parse(readFile(p.dir + "/summary.json"));
+        if (summary.value("status", "") == "ok") p.state = CaseState::Done;
+      } catch (const std::exception&) {
+        // A torn or foreign summary: the case runs again (it resumes from its final checkpoint).
+      }
+    }
+    p.hasCheckpoint = fs::exists(p.dir + "/checkpoint.bin") || fs::exists(p.dir + "/checkpoint.prev.bin");
+
+    if (!p.bedKey.empty()) {
+      keySeen[p.bedKey] = true;
+      // A bed task only for a case that will run and has no checkpoint (a checkpointed run does
+      // not need its bed again), and only when the cache does not hold it yet.
+      if (p.state == CaseState::Pending && !p.hasCheckpoint && !fs::exists(bedCachePath(c.config, p.bedKey))) {
+        auto [it, fresh] = bedIndex.try_emplace(p.bedKey, static_cast<int>(plan.beds.size()));
+        if (fresh) {
+          PlannedBed bed;
+          bed.key = p.bedKey;
+          bed.configPath = outDir + "/beds/bed-" + p.bedKey + ".toml";
+          bed.firstCase = c.index;
+          bed.cachePath = bedCachePath(c.config, p.bedKey);
+          bed.estimatedSeconds = estimatedBedSeconds(c.config, CostModel::nsPerParticleStep);
+          plan.beds.push_back(bed);
+        }
+        p.bedTask = it->second;
+      }
+    }
+    plan.cases.push_back(std::move(p));
+  }
+  plan.distinctBeds = keySeen.size();
+  return plan;
+}
+
+}  // namespace wiggle

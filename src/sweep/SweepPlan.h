@@ -1,0 +1,85 @@
+#pragma once
+// What a sweep has to do (SPEC 8-9, docs/SWEEPS.md): the cases of a sweep file, each with its run
+// directory and what is already there, grouped by the bed they share, with an estimated cost.
+//
+// Tasks are of two kinds: making a bed (one per distinct bed key whose bed is not cached yet) and
+// running a case. A case becomes runnable once its bed task is done, so two workers never make the
+// same bed at once and beds are made first, in parallel. Every MPI rank builds the same plan from
+// the same file (the expansion is deterministic), so only task indices travel between ranks.
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "io/SweepSpec.h"
+
+namespace wiggle {
+
+// --- cost model (dry run and ETA before any case has finished) ----------------------------------
+// One place for the numbers; docs/SWEEPS.md quotes them and says how they were measured.
+struct CostModel {
+  // Wall time per particle per step of one single-threaded case on this project's reference
+  // machine [ns]. Measured 65 ns with the 251-particle test case (tests/sweep); the lead's
+  // benchmark of configs/small.toml replaces it (docs/PERFORMANCE.md).
+  static constexpr double nsPerParticleStep = 65.0;
+  // Random loose packing of the poured bed: area fraction of grains below the free surface.
+  static constexpr double packing = 0.84;
+  // Simulated time a bed spends per poured batch (falling and settling), and on the final
+  // relaxation, in sqrt(d/g). Measured: a 12 d high, 20 d wide bed (one batch) took 2.3e5 steps
+  // at dt = 1e-4 (with bed.rest_energy = 1e-4); the default rest energy 1e-8 takes longer.
+  static constexpr double bedTimePerBatch = 15.0;
+  static constexpr double bedRelaxTime = 10.0;
+};
+
+// Estimated grains of a bed: box width x bed height x packing / mean grain area, with the mean
+// area of diameters uniform in [d_min, d_max]: (pi/4) (d_min^2 + d_min d_max + d_max^2) / 3.
+double estimatedGrains(const RunConfig& config);
+// Estimated wall seconds of a case's run phase (bed excluded) at `nsPerParticleStep`.
+double estimatedRunSeconds(const RunConfig& config, double nsPerParticleStep);
+// Estimated wall seconds of making the case's bed at `nsPerParticleStep`.
+double estimatedBedSeconds(const RunConfig& config, double nsPerParticleStep);
+
+// --- the plan -----------------------------------------------------------------------------------
+enum class CaseState {
+  Pending,  // to run (from its newest checkpoint if it has one)
+  Done,     // summary.json with status "ok" and the same config: skipped
+  Failed,   // cannot run (geometry, a different config already in its directory, its bed failed)
+};
+
+struct PlannedCase {
+  std::size_t index = 0;      // into SweepSpec::cases
+  std::string dir;            // absolute or as given: <outDir>/cases/<name>
+  std::string runDir;         // relative to the sweep directory: cases/<name>
+  std::string bedKey;         // "" when the clump cannot be made (then state is Failed)
+  int bedTask = -1;           // index into SweepPlan::beds of the bed it waits for; -1 = none
+  CaseState state = CaseState::Pending;
+  bool hasCheckpoint = false; // an interrupted run that will resume
+  std::string error;          // why it failed (state Failed)
+  double estimatedParticles = 0.0;
+  std::uint64_t steps = 0;
+};
+
+struct PlannedBed {
+  std::string key;
+  std::string configPath;     // <outDir>/beds/bed-<key>.toml: the config the bed task reads
+  std::size_t firstCase = 0;  // the case whose config makes the bed
+  std::string cachePath;      // where obtainBed keeps it
+  double estimatedSeconds = 0.0;
+};
+
+struct SweepPlan {
+  SweepSpec spec;
+  std::string outDir;
+  std::vector<PlannedCase> cases;   // same order as spec.cases
+  std::vector<PlannedBed> beds;     // beds to make (not cached yet, needed by a pending case)
+  std::size_t distinctBeds = 0;     // bed keys among all cases (cached or not)
+};
+
+// Expands the plan: for each case its directory and state (reads summary.json and config.toml of
+// existing case directories; does not write anything).
+SweepPlan makeSweepPlan(SweepSpec spec, const std::string& outDir);
+
+// The path of a cached bed, mirroring obtainBed (scenario/BedMaker.cpp): <cache>/bed-<key>.bin.
+std::string bedCachePath(const RunConfig& config, const std::string& key);
+
+}  // namespace wiggle

@@ -1,0 +1,668 @@
+#include "sweep/SweepRunner.h"
+
+#include <fcntl.h>
+#include <omp.h>
+#include <sched.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <ctime>
+#include <deque>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <optional>
+#include <set>
+#include <sstream>
+#include <thread>
+
+#include "core/Error.h"
+#include "io/AtomicFile.h"
+#include "io/Config.h"
+#include "scenario/BedMaker.h"
+#include "scenario/Experiment.h"
+#include "scenario/Shape.h"
+#include "sweep/MpiQueue.h"
+
+namespace wiggle {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::atomic<int> gStopSignal{0};
+extern "C" void onStopSignal(int sig) { gStopSignal = sig; }
+
+std::string number(double v, const char* format = "%.4g") {
+  char text[32];
+  std::snprintf(text, sizeof text, format, v);
+  return text;
+}
+
+std::string duration(double seconds) {
+  if (!std::isfinite(seconds) || seconds < 0) return "?";
+  char text[32];
+  const long s = std::lround(seconds);
+  if (s >= 86400) std::snprintf(text, sizeof text, "%ldd%02ldh", s / 86400, (s % 86400) / 3600);
+  else if (s >= 3600) std::snprintf(text, sizeof text, "%ldh%02ldm", s / 3600, (s % 3600) / 60);
+  else if (s >= 60) std::snprintf(text, sizeof text, "%ldm%02lds", s / 60, s % 60);
+  else std::snprintf(text, sizeof text, "%lds", s);
+  return text;
+}
+
+std::string selfExecutable() {
+  std::error_code ec;
+  const auto path = fs::read_symlink("/proc/self/exe", ec);
+  if (ec) throw Error("sweep: cannot find the wiggle binary (/proc/self/exe): " + ec.message());
+  return path.string();
+}
+
+std::string hostName() {
+  char name[256] = {};
+  ::gethostname(name, sizeof name - 1);
+  return name;
+}
+
+// Resolved settings of one sweep invocation.
+struct Settings {
+  int jobs = 1;
+  int threads = 1;
+  std::string executable;
+};
+
+// Holds OUT/.sweep.lock for the sweep's lifetime: two coordinators in one directory would run the
+// same cases into the same run directories.
+class DirectoryLock {
+ public:
+  explicit DirectoryLock(const std::string& dir) {
+    const std::string path = dir + "/.sweep.lock";
+    fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (fd_ < 0) throw Error("cannot open " + path + ": " + std::strerror(errno));
+    if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+      ::close(fd_);
+      throw Error("another wiggle sweep is running in " + dir + " (" + path + " is locked)");
+    }
+  }
+  ~DirectoryLock() { ::close(fd_); }
+
+ private:
+  int fd_ = -1;
+};
+
+// sweep.log, the status line on a terminal, and event lines on stderr otherwise.
+class Monitor {
+ public:
+  Monitor(const std::string& logPath, const SweepOptions& options)
+      : log_(logPath, std::ios::app),
+        terminal_(options.progress && ::isatty(STDERR_FILENO)),
+        echo_(!terminal_ && options.logToStderr) {}
+
+  void event(const std::string& text) {
+    const std::time_t now = std::time(nullptr);
+    char stamp[32];
+    std::strftime(stamp, sizeof stamp, "%Y-%m-%d %H:%M:%S", std::localtime(&now));
+    log_ << stamp << "  " << text << '\n';
+    log_.flush();
+    if (terminal_) {
+      std::fprintf(stderr, "\r\033[K%s\n", text.c_str());
+      lastStatus_.clear();
+    } else if (echo_) {
+      std::fprintf(stderr, "%s\n", text.c_str());
+    }
+  }
+
+  // The status line, redrawn at most twice a second (and written to the log once a minute).
+  void status(const std::string& text, bool force = false) {
+    const double now = monotonicSeconds();
+    if (terminal_ && (force || now - lastDraw_ >= 0.5) && text != lastStatus_) {
+      std::fprintf(stderr, "\r\033[K%s", text.c_str());
+      std::fflush(stderr);
+      lastDraw_ = now;
+      lastStatus_ = text;
+    }
+    if (now - lastLogged_ >= 60.0) {
+      lastLogged_ = now;
+      const std::time_t t = std::time(nullptr);
+      char stamp[32];
+      std::strftime(stamp, sizeof stamp, "%Y-%m-%d %H:%M:%S", std::localtime(&t));
+      log_ << stamp << "  " << text << '\n';
+      log_.flush();
+      if (echo_) std::fprintf(stderr, "%s\n", text.c_str());
+    }
+  }
+
+  void clear() {
+    if (terminal_ && !lastStatus_.empty()) std::fprintf(stderr, "\r\033[K");
+    lastStatus_.clear();
+  }
+
+ private:
+  std::ofstream log_;
+  bool terminal_, echo_;
+  double lastDraw_ = -1e9, lastLogged_ = monotonicSeconds();
+  std::string lastStatus_;
+};
+
+enum class BedState { Waiting, Running, Done, Failed };
+
+// Rank 0 (or the only process): hands tasks to local children and to MPI worker ranks.
+class Coordinator {
+ public:
+  Coordinator(SweepPlan& plan, const Settings& settings, const SweepOptions& options, MpiQueue* mpi)
+      : plan_(plan),
+        settings_(settings),
+        options_(options),
+        mpi_(mpi),
+        monitor_(plan.outDir + "/sweep.log", options),
+        runner_(plan.spec, plan.outDir, settings.executable, settings.threads) {}
+
+  SweepOutcome run() {
+    const std::size_t n = plan_.cases.size();
+    results_.assign(n, CaseResult{});
+    started_.assign(n, false);
+    bedState_.assign(plan_.beds.size(), BedState::Waiting);
+    for (std::size_t c = 0; c < n; ++c) {
+      const PlannedCase& p = plan_.cases[c];
+      runDirs_.push_back(p.runDir);
+      if (p.state == CaseState::Done) {
+        try {
+          results_[c] = readCaseSummary(p.dir);
+          started_[c] = true;
+        } catch (const Error&) {
+          results_[c] = CaseResult{};  // unreadable after all: run it again
+        }
+      } else if (p.state == CaseState::Failed) {
+        results_[c].status = "failed";
+        results_[c].error = p.error;
+        started_[c] = true;
+      }
+    }
+    const int workers = mpi_ ? mpi_->size() - 1 : 0;
+    const int localSlots = mpi_ ? 0 : settings_.jobs;
+    monitor_.event("wiggle sweep " + plan_.spec.settings.name + ": " + std::to_string(n) + " cases, " +
+                   std::to_string(countStatus("ok")) + " done before, " + std::to_string(plan_.beds.size()) +
+                   " beds to make; " +
+                   (mpi_ ? std::to_string(workers) + " MPI worker ranks x " + std::to_string(settings_.jobs) + " jobs"
+                         : std::to_string(settings_.jobs) + " jobs") +
+                   " x " + std::to_string(settings_.threads) + " threads; host " + hostName() + " pid " +
+                   std::to_string(::getpid()));
+    for (std::size_t c = 0; c < n; ++c)
+      if (results_[c].status == "failed") monitor_.event("failed " + plan_.spec.cases[c].name + ": " + results_[c].error);
+    writeResults();
+    concurrency_ = mpi_ ? std::max(1, workers * settings_.jobs) : std::max(1, settings_.jobs);
+
+    while (true) {
+      bool progressed = false;
+      if (gStopSignal != 0 && !stopping_) {
+        stopping_ = true;
+        monitor_.event("signal " + std::to_string(gStopSignal.load()) + ": stopping; running cases write a checkpoint");
+        runner_.signalAll(SIGTERM);
+      }
+      // Hand out work.
+      while (true) {
+        const bool local = runner_.running() < static_cast<std::size_t>(localSlots);
+        if (!local && waitingRanks_.empty()) break;
+        const std::optional<SweepTask> task = nextTask();
+        if (!task) break;
+        markStarted(*task);
+        if (local) {
+          try {
+            const pid_t pid = runner_.start(*task);
+            monitor_.event("start " + describe(*task) + " (pid " + std::to_string(pid) + ")");
+            if (options_.onTaskStarted) options_.onTaskStarted(*task, pid);
+          } catch (const Error& e) {
+            TaskOutcome o;
+            o.task = *task;
+            o.error = e.what();
+            o.result.status = "failed";
+            o.result.error = e.what();
+            handle(o, "");
+          }
+        } else {
+          const int rank = waitingRanks_.front();
+          waitingRanks_.pop_front();
+          mpi_->send(rank, MpiTag::Task, std::to_string(task->encode()));
+          ++remoteRunning_;
+          monitor_.event("start " + describe(*task) + " on rank " + std::to_string(rank) + " (" + rankInfo_[rank] + ")");
+        }
+        progressed = true;
+        resultsDirty_ = true;
+      }
+      for (const TaskOutcome& o : runner_.poll()) {
+        handle(o, "");
+        progressed = true;
+      }
+      while (mpi_) {
+        const std::optional<MpiMessage> m = mpi_->poll();
+        if (!m) break;
+        progressed = true;
+        if (m->tag == MpiTag::Request) {
+          if (!rankInfo_.count(m->source)) {
+            monitor_.event("rank " + std::to_string(m->source) + " ready: pid " + m->text);
+          }
+          rankInfo_[m->source] = m->text;
+          waitingRanks_.push_back(m->source);
+        } else if (m->tag == MpiTag::Result) {
+          --remoteRunning_;
+          handle(TaskOutcome::fromJson(m->text), " on rank " + std::to_string(m->source));
+        }
+      }
+      if (resultsDirty_) writeResults();
+      const bool busy = runner_.running() > 0 || remoteRunning_ > 0;
+      if (!busy && (stopping_ || !workLeft())) break;
+      if (!progressed) {
+        monitor_.status(statusLine());
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+      }
+    }
+    monitor_.clear();
+
+    // Release the workers: each has (or will have) one request outstanding.
+    if (mpi_) {
+      int stopped = 0;
+      std::set<int> released;
+      while (stopped < workers) {
+        while (!waitingRanks_.empty()) {
+          const int rank = waitingRanks_.front();
+          waitingRanks_.pop_front();
+          if (released.insert(rank).second) {
+            mpi_->send(rank, MpiTag::Stop, "");
+            ++stopped;
+          }
+        }
+        if (stopped >= workers) break;
+        if (const std::optional<MpiMessage> m = mpi_->poll()) {
+          if (m->tag == MpiTag::Request) waitingRanks_.push_back(m->source);
+        } else {
+          std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        }
+      }
+    }
+
+    SweepOutcome out;
+    out.outDir = plan_.outDir;
+    out.cases = n;
+    out.ok = countStatus("ok");
+    out.failed = countStatus("failed");
+    out.pending = n - out.ok - out.failed;
+    out.interrupted = stopping_;
+    writeResults();
+    out.summary = "sweep " + plan_.outDir + ": " + std::to_string(out.ok) + " of " + std::to_string(n) + " cases ok";
+    if (out.failed) out.summary += ", " + std::to_string(out.failed) + " failed (error column of results.csv)";
+    if (out.pending) out.summary += ", " + std::to_string(out.pending) + " not finished (rerun the same command to resume)";
+    monitor_.event(out.summary);
+    return out;
+  }
+
+ private:
+  std::size_t countStatus(const std::string& s) const {
+    std::size_t k = 0;
+    for (const CaseResult& r : results_) k += r.status == s;
+    return k;
+  }
+
+  std::string describe(const SweepTask& t) const {
+    const std::string& name = plan_.spec.cases[t.caseIndex].name;
+    if (t.kind == SweepTask::Kind::Case) return "case " + name;
+    return "bed " + plan_.cases[t.caseIndex].bedKey + " (for " + name + ")";
+  }
+
+  int bedOfTask(const SweepTask& t) const {
+    for (std::size_t b = 0; b < plan_.beds.size(); ++b)
+      if (plan_.beds[b].firstCase == t.caseIndex) return static_cast<int>(b);
+    return -1;
+  }
+
+  std::optional<SweepTask> nextTask() {
+    if (stopping_) return std::nullopt;
+    for (std::size_t b = 0; b < plan_.beds.size(); ++b)
+      if (bedState_[b] == BedState::Waiting) return SweepTask{SweepTask::Kind::Bed, plan_.beds[b].firstCase};
+    for (std::size_t c = 0; c < plan_.cases.size(); ++c) {
+      if (started_[c]) continue;
+      const int b = plan_.cases[c].bedTask;
+      if (b < 0 || bedState_[b] == BedState::Done) return SweepTask{SweepTask::Kind::Case, c};
+    }
+    return std::nullopt;
+  }
+
+  bool workLeft() const {
+    for (const BedState s : bedState_)
+      if (s == BedState::Waiting || s == BedState::Running) return true;
+    for (std::size_t c = 0; c < started_.size(); ++c)
+      if (!started_[c]) return true;
+    return false;
+  }
+
+  void markStarted(const SweepTask& t) {
+    running_[t.encode()] = monotonicSeconds();
+    if (t.kind == SweepTask::Kind::Bed) {
+      bedState_[bedOfTask(t)] = BedState::Running;
+    } else {
+      started_[t.caseIndex] = true;
+      results_[t.caseIndex] = CaseResult{};
+      results_[t.caseIndex].status = "running";
+    }
+  }
+
+  void handle(const TaskOutcome& o, const std::string& where) {
+    running_.erase(o.task.encode());
+    resultsDirty_ = true;
+    if (o.task.kind == SweepTask::Kind::Bed) {
+      const int b = bedOfTask(o.task);
+      if (o.ok) {
+        bedState_[b] = BedState::Done;
+        ++bedsMade_;
+        monitor_.event("bed " + plan_.beds[b].key + " ready" + where + " (" + duration(o.wallSeconds) + ")");
+        return;
+      }
+      bedState_[b] = BedState::Failed;
+      monitor_.event("bed " + plan_.beds[b].key + " failed" + where + ": " + o.error);
+      if (stopping_) {
+        bedState_[b] = BedState::Waiting;  // stopped by us: its cases stay pending
+        return;
+      }
+      for (std::size_t c = 0; c < plan_.cases.size(); ++c) {
+        if (plan_.cases[c].bedTask != b || started_[c]) continue;
+        started_[c] = true;
+        results_[c].status = "failed";
+        results_[c].error = "making its bed failed: " + o.error;
+      }
+      return;
+    }
+    const std::size_t c = o.task.caseIndex;
+    const std::string& name = plan_.spec.cases[c].name;
+    if (o.ok) {
+      results_[c] = o.result;
+      results_[c].status = "ok";
+      monitor_.event("ok " + name + where + ": vy = " + number(o.result.vy) + ", " + duration(o.wallSeconds) + ", " +
+                     number(o.result.nsPerParticleStep, "%.3g") + " ns/particle-step");
+      return;
+    }
+    results_[c] = CaseResult{};
+    if (stopping_) {
+      results_[c].status = "pending";
+      results_[c].error = "interrupted: " + o.error;
+      monitor_.event("stopped " + name + where + ": " + o.error);
+    } else {
+      results_[c].status = "failed";
+      results_[c].error = o.error;
+      monitor_.event("failed " + name + where + ": " + o.error);
+    }
+  }
+
+  void writeResults() {
+    writeFileAtomically(plan_.outDir + "/results.csv", resultsCsv(plan_.spec, runDirs_, results_));
+    resultsDirty_ = false;
+  }
+
+  // Measured ns per particle-step over every finished case (this session and earlier ones), or
+  // the cost model's constant before any has finished.
+  double nsPerParticleStep() const {
+    double wall = 0.0, work = 0.0;
+    for (const CaseResult& r : results_) {
+      if (r.status != "ok" || r.particleSteps <= 0.0) continue;
+      wall += r.runWallSeconds;
+      work += r.particleSteps;
+    }
+    return work > 0.0 ? 1e9 * wall / work : CostModel::nsPerParticleStep;
+  }
+
+  std::string statusLine() const {
+    const double ns = nsPerParticleStep();
+    double remaining = 0.0;  // wall seconds of work left, summed over tasks
+    std::size_t left = 0, running = 0;
+    for (std::size_t c = 0; c < plan_.cases.size(); ++c) {
+      const RunConfig& config = plan_.spec.cases[c].config;
+      if (!started_[c]) {
+        ++left;
+        remaining += estimatedRunSeconds(config, ns);
+      } else if (results_[c].status == "running") {
+        ++running;
+        const auto it = running_.find(SweepTask{SweepTask::Kind::Case, c}.encode());
+        const double elapsed = it == running_.end() ? 0.0 : monotonicSeconds() - it->second;
+        remaining += std::max(0.0, estimatedRunSeconds(config, ns) - elapsed);
+      }
+    }
+    for (std::size_t b = 0; b < plan_.beds.size(); ++b) {
+      if (bedState_[b] == BedState::Waiting || bedState_[b] == BedState::Running) {
+        remaining += estimatedBedSeconds(plan_.spec.cases[plan_.beds[b].firstCase].config, ns);
+      }
+    }
+    std::string line = "[sweep] " + std::to_string(countStatus("ok")) + " done, " + std::to_string(running) +
+                       " running, " + std::to_string(countStatus("failed")) + " failed, " + std::to_string(left) + " left";
+    if (!plan_.beds.empty())
+      line += ", beds " + std::to_string(bedsMade_) + "/" + std::to_string(plan_.beds.size());
+    line += "  ETA " + duration(remaining / concurrency_) + " (" + number(ns, "%.3g") + " ns/particle-step" +
+            (ns == CostModel::nsPerParticleStep ? ", assumed)" : ")");
+    return line;
+  }
+
+  SweepPlan& plan_;
+  const Settings& settings_;
+  const SweepOptions& options_;
+  MpiQueue* mpi_;
+  Monitor monitor_;
+  TaskRunner runner_;
+  std::vector<CaseResult> results_;
+  std::vector<std::string> runDirs_;
+  std::vector<bool> started_;  // dispatched, finished before, or failed without running
+  std::vector<BedState> bedState_;
+  std::map<std::int64_t, double> running_;  // task code -> start time
+  std::deque<int> waitingRanks_;
+  std::map<int, std::string> rankInfo_;
+  int remoteRunning_ = 0;
+  int concurrency_ = 1;
+  std::size_t bedsMade_ = 0;
+  bool stopping_ = false;
+  bool resultsDirty_ = false;
+};
+
+// An MPI worker rank: asks rank 0 for tasks, runs them as children, reports back.
+SweepOutcome workerLoop(const SweepPlan& plan, const Settings& settings, MpiQueue& mpi) {
+  TaskRunner runner(plan.spec, plan.outDir, settings.executable, settings.threads);
+  const std::string hello = std::to_string(::getpid()) + " on " + hostName();
+  bool outstanding = false, stopping = false;
+  while (true) {
+    bool progressed = false;
+    if (!stopping && !outstanding && runner.running() < static_cast<std::size_t>(settings.jobs)) {
+      mpi.send(0, MpiTag::Request, hello);
+      outstanding = true;
+    }
+    while (const std::optional<MpiMessage> m = mpi.poll()) {
+      progressed = true;
+      if (m->tag == MpiTag::Stop) {
+        stopping = true;
+        outstanding = false;
+      } else if (m->tag == MpiTag::Task) {
+        outstanding = false;
+        const SweepTask task = SweepTask::decode(std::stoll(m->text));
+        try {
+          runner.start(task);
+        } catch (const Error& e) {
+          TaskOutcome o;
+          o.task = task;
+          o.error = e.what();
+          o.result.status = "failed";
+          o.result.error = e.what();
+          mpi.send(0, MpiTag::Result, o.toJson());
+        }
+      }
+    }
+    for (const TaskOutcome& o : runner.poll()) {
+      mpi.send(0, MpiTag::Result, o.toJson());
+      progressed = true;
+    }
+    if (stopping && runner.running() == 0) break;
+    if (!progressed) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  SweepOutcome out;
+  out.worker = true;
+  out.outDir = plan.outDir;
+  return out;
+}
+
+int envInt(const char* name) {
+  const char* v = std::getenv(name);
+  return v ? std::atoi(v) : 0;
+}
+
+}  // namespace
+
+int availableCores() {
+  cpu_set_t set;
+  if (::sched_getaffinity(0, sizeof set, &set) == 0) return std::max(1, CPU_COUNT(&set));
+  return std::max(1u, std::thread::hardware_concurrency());
+}
+
+std::string dryRunListing(const SweepPlan& plan, int jobs, int threads) {
+  const double ns = CostModel::nsPerParticleStep;
+  std::ostringstream out;
+  out << "sweep " << plan.spec.settings.name << " -> " << plan.outDir << "\n";
+  out << "  #  case                                       state     grains      steps   est. run\n";
+  double runSeconds = 0.0;
+  std::size_t toRun = 0, done = 0, failed = 0;
+  for (const PlannedCase& p : plan.cases) {
+    const SweepCase& c = plan.spec.cases[p.index];
+    std::string state = p.state == CaseState::Done ? "done" : p.state == CaseState::Failed ? "FAILED" : "to run";
+    if (p.state == CaseState::Pending && p.hasCheckpoint) state = "resume";
+    const double seconds = estimatedRunSeconds(c.config, ns);
+    char line[512];
+    std::snprintf(line, sizeof line, "%3zu  %-42s %-8s %7.0f %10llu %10s\n", p.index + 1, c.name.c_str(), state.c_str(),
+                  estimatedGrains(c.config), static_cast<unsigned long long>(p.steps), duration(seconds).c_str());
+    out << line;
+    if (p.state == CaseState::Failed) out << "       " << p.error << "\n";
+    if (p.state == CaseState::Pending) {
+      ++toRun;
+      runSeconds += seconds;  // a resumed case is counted whole: an upper bound
+    }
+    done += p.state == CaseState::Done;
+    failed += p.state == CaseState::Failed;
+  }
+  double bedSeconds = 0.0, longestBed = 0.0;
+  for (const PlannedBed& b : plan.beds) {
+    bedSeconds += b.estimatedSeconds;
+    longestBed = std::max(longestBed, b.estimatedSeconds);
+    out << "  bed " << b.key << " (first needed by " << plan.spec.cases[b.firstCase].name << "): est. "
+        << duration(b.estimatedSeconds) << "\n";
+  }
+  // Beds are made in parallel first, one per job; then the cases share the jobs.
+  const double bedPhase = plan.beds.empty() ? 0.0
+                                            : std::max(longestBed, bedSeconds / std::min<double>(jobs, plan.beds.size()));
+  const double total = (bedPhase + runSeconds / std::max(1, jobs)) / std::max(1, threads);
+  out << plan.cases.size() << " cases: " << toRun << " to run, " << done << " done, " << failed << " failed; "
+      << plan.beds.size() << " of " << plan.distinctBeds << " distinct beds to make\n";
+  out << "estimated cost: " << duration(total) << " wall on " << jobs << " jobs x " << threads << " threads (runs "
+      << duration(runSeconds) << " + beds " << duration(bedSeconds) << " of single-core time at " << number(ns, "%.3g")
+      << " ns per particle-step, CostModel in src/sweep/SweepPlan.h"
+      << (threads > 1 ? "; assumes threads scale perfectly" : "") << ")\n";
+  return out.str();
+}
+
+void makeSweepBed(const std::string& configPath, int threads) {
+  if (threads > 0) omp_set_num_threads(threads);
+  const RunConfig config = parseRunConfig(readFile(configPath), configPath);
+  const ClumpDef clump = makeClump(config.intruder, config.grains.massModel, 1.0);
+  checkGeometry(config, clump);
+  const CachedBed bed = obtainBed(config, clump);
+  if (!bed.note.empty()) std::fprintf(stderr, "wiggle: warning: %s\n", bed.note.c_str());
+  std::printf("bed %s %s (%u grains)\n", bed.key.c_str(), bed.fromCache ? "was cached" : "made and cached",
+              static_cast<unsigned>(bed.world.grainCount()));
+}
+
+SweepOutcome runSweep(const std::string& sweepFile, const SweepOptions& options) {
+  SweepSpec spec = loadSweepSpec(sweepFile);
+  const std::string outDir = options.outDir.empty() ? "sweep-" + spec.settings.name : options.outDir;
+
+  std::unique_ptr<MpiQueue> mpi;
+  if (options.allowMpi && !options.dryRun && MpiQueue::launchedAsMultipleProcesses()) {
+    mpi = std::make_unique<MpiQueue>();  // throws when built without MPI
+    if (mpi->size() < 2) mpi.reset();
+  }
+
+  Settings settings;
+  settings.executable = options.executable.empty() ? selfExecutable() : options.executable;
+  if (mpi) {
+    settings.jobs = options.jobs > 0 ? options.jobs : 1;
+    const int cpus = envInt("SLURM_CPUS_PER_TASK");
+    settings.threads = options.threads > 0             ? options.threads
+                       : spec.settings.threadsPerCase > 0 ? spec.settings.threadsPerCase
+                                                          : std::max(1, cpus / settings.jobs);
+  } else {
+    const int cores = availableCores();
+    settings.jobs = options.jobs > 0 ? options.jobs : spec.settings.jobs > 0 ? spec.settings.jobs : cores;
+    settings.threads = options.threads > 0             ? options.threads
+                       : spec.settings.threadsPerCase > 0 ? spec.settings.threadsPerCase
+                                                          : 0;  // decided below, from the work left
+  }
+
+  if (mpi && mpi->rank() != 0) {
+    SweepPlan plan;  // workers need only the cases and the directory
+    plan.spec = std::move(spec);
+    plan.outDir = outDir;
+    return workerLoop(plan, settings, *mpi);
+  }
+
+  std::error_code ec;
+  if (!options.dryRun) {
+    fs::create_directories(outDir + "/cases", ec);
+    if (ec) throw Error("cannot create sweep directory " + outDir + ": " + ec.message());
+  }
+  std::optional<DirectoryLock> lock;
+  if (!options.dryRun) lock.emplace(outDir);
+  SweepPlan plan = makeSweepPlan(std::move(spec), outDir);
+
+  if (!mpi) {
+    // Independent cases scale better than threads: as many single-threaded cases as cores. With
+    // fewer tasks than cores, the spare cores go to the cases' threads.
+    std::size_t tasks = plan.beds.size();
+    for (const PlannedCase& p : plan.cases) tasks += p.state == CaseState::Pending;
+    const int cores = availableCores();
+    if (options.jobs <= 0 && plan.spec.settings.jobs <= 0 && tasks > 0)
+      settings.jobs = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(settings.jobs), tasks));
+    if (settings.threads <= 0) settings.threads = std::max(1, cores / std::max(1, settings.jobs));
+  }
+
+  if (options.dryRun) {
+    (options.listing ? *options.listing : std::cout) << dryRunListing(plan, settings.jobs, settings.threads);
+    SweepOutcome out;
+    out.outDir = outDir;
+    out.cases = plan.cases.size();
+    return out;
+  }
+
+  struct sigaction previousInt {}, previousTerm {};
+  if (options.handleSignals) {
+    gStopSignal = 0;
+    struct sigaction sa {};
+    sa.sa_handler = onStopSignal;
+    sigemptyset(&sa.sa_mask);
+    ::sigaction(SIGINT, &sa, &previousInt);
+    ::sigaction(SIGTERM, &sa, &previousTerm);
+  }
+  SweepOutcome out;
+  try {
+    Coordinator coordinator(plan, settings, options, mpi.get());
+    out = coordinator.run();
+  } catch (...) {
+    if (options.handleSignals) {
+      ::sigaction(SIGINT, &previousInt, nullptr);
+      ::sigaction(SIGTERM, &previousTerm, nullptr);
+    }
+    throw;
+  }
+  if (options.handleSignals) {
+    ::sigaction(SIGINT, &previousInt, nullptr);
+    ::sigaction(SIGTERM, &previousTerm, nullptr);
+  }
+  return out;
+}
+
+}  // namespace wiggle

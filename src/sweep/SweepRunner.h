@@ -1,0 +1,63 @@
+#pragma once
+// `wiggle sweep` (SPEC 8-9, docs/SWEEPS.md): runs every case of a sweep file, each in
+// OUT/cases/<case name>/, locally as child processes or over MPI ranks, resumably, and keeps
+// OUT/results.csv (ResultsTable.h) and OUT/sweep.log up to date.
+//
+// Order of work: the distinct beds that are not cached yet are made first, in parallel (one task
+// per bed); a case starts once its bed is there, so no two workers ever make the same bed. A rerun
+// skips cases whose summary.json says "ok", resumes interrupted ones from their checkpoints and
+// retries failed ones.
+#include <sys/types.h>
+
+#include <cstddef>
+#include <functional>
+#include <iosfwd>
+#include <string>
+
+#include "sweep/SweepPlan.h"
+#include "sweep/TaskRunner.h"
+
+namespace wiggle {
+
+struct SweepOptions {
+  std::string outDir;        // "" = sweep-<sweep name> in the working directory
+  // Local: cases at once (0 = sweep.jobs, else the cores this process may use).
+  // Under MPI: cases at once on each worker rank (0 = 1); rank 0 only coordinates.
+  int jobs = 0;
+  // Threads of each case (0 = sweep.threads_per_case, else cores / jobs locally, and under MPI
+  // SLURM_CPUS_PER_TASK / jobs or 1).
+  int threads = 0;
+  bool dryRun = false;       // list the cases and the estimated cost; run nothing
+  std::string executable;    // the wiggle binary the children run ("" = this process's binary)
+  bool allowMpi = true;      // use MPI when launched by mpirun/srun with more than one process
+  bool progress = true;      // live status line on stderr when it is a terminal
+  bool logToStderr = true;   // event lines on stderr when it is not a terminal (always in sweep.log)
+  bool handleSignals = true; // SIGINT/SIGTERM: stop children at a checkpoint, write results, stop
+  std::ostream* listing = nullptr;  // where --dry-run prints (nullptr = stdout)
+  // Test hook: called on the coordinator when it starts a local child.
+  std::function<void(const SweepTask&, pid_t)> onTaskStarted;
+};
+
+struct SweepOutcome {
+  std::string outDir;
+  std::size_t cases = 0, ok = 0, failed = 0, pending = 0;
+  bool interrupted = false;
+  bool worker = false;       // this process was an MPI worker rank (it wrote nothing)
+  std::string summary;       // one line for the user
+};
+
+// Runs (or with dryRun lists) the sweep. Throws wiggle::Error for a bad sweep file or directory;
+// failed cases are not exceptions: they are counted in the outcome and recorded in results.csv.
+SweepOutcome runSweep(const std::string& sweepFile, const SweepOptions& options);
+
+// The dry-run listing of a plan for `jobs` cases at once with `threads` threads each.
+std::string dryRunListing(const SweepPlan& plan, int jobs, int threads);
+
+// The bed task of a sweep (`wiggle sweep --make-bed CONFIG.toml`): obtains (makes and caches) the
+// bed of that run config with `threads` OpenMP threads (0 = default).
+void makeSweepBed(const std::string& configPath, int threads);
+
+// Cores this process may run on (its CPU affinity), at least 1.
+int availableCores();
+
+}  // namespace wiggle

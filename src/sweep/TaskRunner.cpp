@@ -1,0 +1,246 @@
+#include "sweep/TaskRunner.h"
+
+#include <fcntl.h>
+#include <sys/prctl.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "core/Error.h"
+#include "io/AtomicFile.h"
+#include "io/Config.h"
+#include "scenario/BedMaker.h"
+#include "scenario/Shape.h"
+
+namespace wiggle {
+
+namespace fs = std::filesystem;
+
+double monotonicSeconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+std::int64_t SweepTask::encode() const {
+  const auto i = static_cast<std::int64_t>(caseIndex);
+  return kind == Kind::Case ? i : -(i + 1);
+}
+
+SweepTask SweepTask::decode(std::int64_t code) {
+  SweepTask t;
+  t.kind = code >= 0 ? Kind::Case : Kind::Bed;
+  t.caseIndex = static_cast<std::size_t>(code >= 0 ? code : -code - 1);
+  return t;
+}
+
+std::string TaskOutcome::toJson() const {
+  nlohmann::json j;
+  j["task"] = task.encode();
+  j["ok"] = ok;
+  j["error"] = error;
+  j["wall"] = wallSeconds;
+  j["pid"] = pid;
+  j["status"] = result.status;
+  j["vy"] = result.vy;
+  j["vy_slope"] = result.vySlope;
+  j["wall_s"] = result.wallSeconds;
+  j["ns"] = result.nsPerParticleStep;
+  j["run_wall_s"] = result.runWallSeconds;
+  j["particle_steps"] = result.particleSteps;
+  j["grains"] = result.grains;
+  j["steps"] = result.steps;
+  j["hash"] = result.stateHash;
+  j["result_error"] = result.error;
+  return j.dump();
+}
+
+TaskOutcome TaskOutcome::fromJson(const std::string& text) {
+  const auto j = nlohmann::json::parse(text);
+  TaskOutcome o;
+  o.task = SweepTask::decode(j.at("task").get<std::int64_t>());
+  o.ok = j.at("ok").get<bool>();
+  o.error = j.at("error").get<std::string>();
+  o.wallSeconds = j.at("wall").get<double>();
+  o.pid = j.at("pid").get<int>();
+  o.result.status = j.at("status").get<std::string>();
+  o.result.vy = j.at("vy").get<double>();
+  o.result.vySlope = j.at("vy_slope").get<double>();
+  o.result.wallSeconds = j.at("wall_s").get<double>();
+  o.result.nsPerParticleStep = j.at("ns").get<double>();
+  o.result.runWallSeconds = j.at("run_wall_s").get<double>();
+  o.result.particleSteps = j.at("particle_steps").get<double>();
+  o.result.grains = j.at("grains").get<std::uint64_t>();
+  o.result.steps = j.at("steps").get<std::uint64_t>();
+  o.result.stateHash = j.at("hash").get<std::string>();
+  o.result.error = j.at("result_error").get<std::string>();
+  return o;
+}
+
+std::string failureLine(const std::string& logTail) {
+  std::string lastError, lastLine;
+  std::size_t begin = 0;
+  while (begin < logTail.size()) {
+    std::size_t end = logTail.find('\n', begin);
+    if (end == std::string::npos) end = logTail.size();
+    std::string line = logTail.substr(begin, end - begin);
+    // A progress line rewritten with carriage returns: keep its last state.
+    if (const std::size_t cr = line.rfind('\r'); cr != std::string::npos) line = line.substr(cr + 1);
+    begin = end + 1;
+    if (line.find_first_not_of(" \t") == std::string::npos) continue;
+    lastLine = line;
+    if (line.rfind("wiggle: ", 0) == 0 && line.rfind("wiggle: warning:", 0) != 0) lastError = line.substr(8);
+  }
+  return lastError.empty() ? lastLine : lastError;
+}
+
+TaskRunner::TaskRunner(const SweepSpec& spec, std::string outDir, std::string executable, int threads)
+    : spec_(spec), outDir_(std::move(outDir)), executable_(std::move(executable)), threads_(std::max(1, threads)) {}
+
+TaskRunner::~TaskRunner() {
+  if (children_.empty()) return;
+  signalAll(SIGTERM);
+  for (const Child& c : children_) ::waitpid(c.pid, nullptr, 0);
+}
+
+void TaskRunner::signalAll(int signal) {
+  for (const Child& c : children_) ::kill(c.pid, signal);
+}
+
+pid_t TaskRunner::start(const SweepTask& task) {
+  if (task.caseIndex >= spec_.cases.size()) throw Error("sweep: task for case " + std::to_string(task.caseIndex) + " out of range");
+  const SweepCase& sc = spec_.cases[task.caseIndex];
+  std::vector<std::string> args;
+  std::string logPath;
+  std::error_code ec;
+  if (task.kind == SweepTask::Kind::Case) {
+    const std::string dir = outDir_ + "/cases/" + sc.name;
+    fs::create_directories(dir, ec);
+    if (ec) throw Error("cannot create " + dir + ": " + ec.message());
+    // `wiggle run` rewrites the same text; writing it here gives the child a file to read.
+    if (!fs::exists(dir + "/config.toml")) writeFileAtomically(dir + "/config.toml", toToml(sc.config));
+    logPath = dir + "/sweep-child.log";
+    args = {executable_, "run", dir + "/config.toml", "--out", dir, "--resume", "--threads",
+            std::to_string(threads_), "--no-plot"};
+  } else {
+    const ClumpDef clump = makeClump(sc.config.intruder, sc.config.grains.massModel, 1.0);
+    const std::string base = outDir_ + "/beds/bed-" + bedKey(sc.config, clump);
+    fs::create_directories(outDir_ + "/beds", ec);
+    if (ec) throw Error("cannot create " + outDir_ + "/beds: " + ec.message());
+    writeFileAtomically(base + ".toml", toToml(sc.config));
+    logPath = base + ".log";
+    args = {executable_, "sweep", "--make-bed", base + ".toml", "--threads", std::to_string(threads_)};
+  }
+
+  // Everything the child needs is made before fork(): after it, only async-signal-safe calls.
+  const int logFd = ::open(logPath.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
+  if (logFd < 0) throw Error("cannot write " + logPath + ": " + std::strerror(errno));
+  struct stat st {};
+  ::fstat(logFd, &st);
+  const auto offset = static_cast<std::uintmax_t>(st.st_size);
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  const pid_t parent = ::getpid();
+
+  const pid_t pid = ::fork();
+  if (pid < 0) {
+    const std::string why = std::strerror(errno);
+    ::close(logFd);
+    throw Error("cannot start a process for case " + sc.name + ": " + why);
+  }
+  if (pid == 0) {
+    ::prctl(PR_SET_PDEATHSIG, SIGTERM);
+    if (::getppid() != parent) ::_exit(120);  // the parent died before prctl took effect
+    // Own process group: a Ctrl-C at the terminal reaches the sweep, which stops its children
+    // in order, rather than every child at once.
+    ::setpgid(0, 0);
+    sigset_t none;
+    sigemptyset(&none);
+    ::sigprocmask(SIG_SETMASK, &none, nullptr);
+    ::signal(SIGINT, SIG_DFL);
+    ::signal(SIGTERM, SIG_DFL);
+    const int devNull = ::open("/dev/null", O_RDONLY);
+    if (devNull >= 0) ::dup2(devNull, 0);
+    ::dup2(logFd, 1);
+    ::dup2(logFd, 2);
+    ::execv(argv[0], argv.data());
+    const char message[] = "wiggle: the sweep cannot start the wiggle binary (exec failed)\n";
+    [[maybe_unused]] const auto n = ::write(2, message, sizeof message - 1);
+    ::_exit(127);
+  }
+  ::close(logFd);
+  children_.push_back({pid, task, logPath, offset, monotonicSeconds()});
+  return pid;
+}
+
+std::vector<TaskOutcome> TaskRunner::poll() {
+  std::vector<TaskOutcome> done;
+  for (std::size_t i = 0; i < children_.size();) {
+    int status = 0;
+    const pid_t r = ::waitpid(children_[i].pid, &status, WNOHANG);
+    if (r == children_[i].pid || (r < 0 && errno == ECHILD)) {
+      done.push_back(finish(children_[i], r < 0 ? -1 : status));
+      children_.erase(children_.begin() + static_cast<std::ptrdiff_t>(i));
+    } else {
+      ++i;
+    }
+  }
+  return done;
+}
+
+TaskOutcome TaskRunner::finish(const Child& child, int waitStatus) {
+  TaskOutcome out;
+  out.task = child.task;
+  out.pid = child.pid;
+  out.wallSeconds = monotonicSeconds() - child.startSeconds;
+  const bool exitedOk = waitStatus >= 0 && WIFEXITED(waitStatus) && WEXITSTATUS(waitStatus) == 0;
+  if (exitedOk) {
+    out.ok = true;
+    if (child.task.kind == SweepTask::Kind::Case) {
+      const std::string dir = outDir_ + "/cases/" + spec_.cases[child.task.caseIndex].name;
+      try {
+        out.result = readCaseSummary(dir);
+        if (out.result.status != "ok") {
+          out.ok = false;
+          out.error = out.result.error;
+        }
+      } catch (const Error& e) {
+        out.ok = false;
+        out.error = std::string("the run ended without a usable summary: ") + e.what();
+      }
+    }
+  } else {
+    std::string tail;
+    {
+      std::ifstream in(child.logPath, std::ios::binary);
+      in.seekg(static_cast<std::streamoff>(child.logOffset));
+      tail.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+    if (waitStatus >= 0 && WIFSIGNALED(waitStatus)) {
+      const int sig = WTERMSIG(waitStatus);
+      out.error = "killed by signal " + std::to_string(sig) + " (" + strsignal(sig) + ")";
+    } else {
+      out.error = failureLine(tail);
+      if (out.error.empty())
+        out.error = waitStatus < 0 ? std::string("the process vanished (not our child?)")
+                                   : "exited with status " + std::to_string(WEXITSTATUS(waitStatus)) + " and no message";
+    }
+  }
+  if (!out.ok) {
+    for (char& ch : out.error)
+      if (ch == '\n' || ch == '\r') ch = ' ';
+    out.result.status = "failed";
+    out.result.error = out.error;
+  }
+  return out;
+}
+
+}  // namespace wiggle

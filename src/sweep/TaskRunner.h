@@ -1,0 +1,88 @@
+#pragma once
+// Runs a sweep's tasks as child processes of the `wiggle` binary (docs/SWEEPS.md explains why
+// processes and not threads):
+//   a case:  wiggle run CASE_DIR/config.toml --out CASE_DIR --resume --threads T --no-plot
+//   a bed:   wiggle sweep --make-bed OUT/beds/bed-<key>.toml --threads T
+// Each child's stdout and stderr are appended to CASE_DIR/sweep-child.log (OUT/beds/bed-<key>.log);
+// a failure is described by the last error line the child printed in that attempt, or the signal
+// that killed it. Children get SIGTERM when their parent dies (PR_SET_PDEATHSIG), so a killed sweep
+// or MPI rank leaves no orphan writing into a run directory; `wiggle run` answers SIGTERM by
+// writing a checkpoint and stopping, which a rerun resumes from.
+#include <sys/types.h>
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "io/SweepSpec.h"
+#include "sweep/ResultsTable.h"
+
+namespace wiggle {
+
+// A unit of work, as it travels between MPI ranks: make the bed of case `caseIndex`'s config, or
+// run case `caseIndex`. Every rank expands the same sweep file, so the index is enough.
+struct SweepTask {
+  enum class Kind : std::uint8_t { Bed, Case };
+  Kind kind = Kind::Case;
+  std::size_t caseIndex = 0;
+
+  std::int64_t encode() const;
+  static SweepTask decode(std::int64_t code);
+  bool operator==(const SweepTask&) const = default;
+};
+
+struct TaskOutcome {
+  SweepTask task;
+  bool ok = false;
+  CaseResult result;   // for a case: summary values when ok; status "failed" and error otherwise
+  std::string error;   // one line, empty when ok
+  double wallSeconds = 0.0;
+  int pid = 0;
+
+  std::string toJson() const;
+  static TaskOutcome fromJson(const std::string& text);
+};
+
+class TaskRunner {
+ public:
+  // `executable`: the wiggle binary; `threads`: --threads of each child (>= 1).
+  TaskRunner(const SweepSpec& spec, std::string outDir, std::string executable, int threads);
+  ~TaskRunner();  // sends SIGTERM to children still running and waits for them
+  TaskRunner(const TaskRunner&) = delete;
+  TaskRunner& operator=(const TaskRunner&) = delete;
+
+  // Prepares the task's directory and config file and starts its child. Returns the child's pid.
+  // Throws wiggle::Error when the directory or the process cannot be made.
+  pid_t start(const SweepTask& task);
+
+  // Children that have exited since the last call (non-blocking).
+  std::vector<TaskOutcome> poll();
+
+  std::size_t running() const { return children_.size(); }
+  void signalAll(int signal);
+
+ private:
+  struct Child {
+    pid_t pid;
+    SweepTask task;
+    std::string logPath;
+    std::uintmax_t logOffset;  // the log's length when this attempt started
+    double startSeconds;
+  };
+  TaskOutcome finish(const Child& child, int waitStatus);
+
+  const SweepSpec& spec_;
+  std::string outDir_, executable_;
+  int threads_;
+  std::vector<Child> children_;
+};
+
+// The one line that says why a child failed: in `logTail` (what it printed), the last line
+// starting with "wiggle: " that is not a warning, without that prefix; else the last non-empty line.
+std::string failureLine(const std::string& logTail);
+
+// Seconds on a monotonic clock (for wall times and the ETA).
+double monotonicSeconds();
+
+}  // namespace wiggle

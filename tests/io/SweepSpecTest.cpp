@@ -1,0 +1,267 @@
+// SweepSpec: expansion counts and order, names, parameters, [[case]] lists, settings, and errors
+// that name the file, the case and the key.
+#include "io/SweepSpec.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <functional>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "core/Error.h"
+#include "io/Config.h"
+
+namespace wiggle {
+namespace {
+
+std::string errorOf(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+std::string sweepError(const std::string& text) {
+  return errorOf([&] { parseSweepSpec(text, "sweep.toml"); });
+}
+
+std::vector<std::string> names(const SweepSpec& s) {
+  std::vector<std::string> out;
+  for (const SweepCase& c : s.cases) out.push_back(c.name);
+  return out;
+}
+
+TEST(SweepSpec, GridIsTheCartesianProductInFileOrder) {
+  // intruder before drive in the file, though toml++ sorts tables by name (drive < intruder).
+  const SweepSpec s = parseSweepSpec(R"(
+[base.run]
+duration = 50
+[base.drive]
+amplitude = 5
+
+[grid.intruder]
+shape = ["disk", "triangle"]
+[grid.drive]
+period = [1, 5]
+)",
+                                     "sweep.toml");
+  ASSERT_EQ(s.cases.size(), 4u);
+  EXPECT_EQ(s.parameterKeys, (std::vector<std::string>{"intruder.shape", "drive.period"}));
+  EXPECT_EQ(names(s), (std::vector<std::string>{"shape=disk_period=1", "shape=disk_period=5",
+                                                "shape=triangle_period=1", "shape=triangle_period=5"}));
+  const char* shapes[] = {"disk", "disk", "triangle", "triangle"};
+  const double periods[] = {1, 5, 1, 5};
+  for (std::size_t i = 0; i < 4; ++i) {
+    const SweepCase& c = s.cases[i];
+    EXPECT_EQ(c.index, i);
+    EXPECT_EQ(c.config.intruder.shape, shapes[i]);
+    EXPECT_EQ(c.config.drive.period, periods[i]);
+    EXPECT_EQ(c.config.run.duration, 50.0);     // from [base]
+    EXPECT_EQ(c.config.drive.amplitude, 5.0);   // from [base]
+    EXPECT_EQ(c.config.run.dt, 1e-4);           // default
+    ASSERT_EQ(c.parameters.size(), 2u);
+    EXPECT_EQ(c.parameters[0].key, "intruder.shape");
+    EXPECT_EQ(c.parameters[0].value, shapes[i]);
+    EXPECT_EQ(c.parameters[1].key, "drive.period");
+    EXPECT_EQ(c.parameters[1].value, i % 2 ? "5" : "1");
+  }
+}
+
+TEST(SweepSpec, KeysWithinASectionAlsoFollowTheFile) {
+  const SweepSpec s = parseSweepSpec(
+      "[grid.drive]\nperiod = [1, 2, 4]\namplitude = [3, 5]\n[grid.contact]\nmu = [0, 0.1, 0.2, 0.5]\n", "s.toml");
+  ASSERT_EQ(s.cases.size(), 24u);
+  EXPECT_EQ(s.parameterKeys, (std::vector<std::string>{"drive.period", "drive.amplitude", "contact.mu"}));
+  EXPECT_EQ(s.cases[0].name, "period=1_amplitude=3_mu=0");
+  EXPECT_EQ(s.cases[1].name, "period=1_amplitude=3_mu=0.1");
+  EXPECT_EQ(s.cases[4].name, "period=1_amplitude=5_mu=0");
+  EXPECT_EQ(s.cases[8].name, "period=2_amplitude=3_mu=0");
+  EXPECT_EQ(s.cases[23].name, "period=4_amplitude=5_mu=0.5");
+  const auto all = names(s);
+  EXPECT_EQ(std::set<std::string>(all.begin(), all.end()).size(), 24u);
+  EXPECT_EQ(s.cases[23].config.contact.mu, 0.5);
+  EXPECT_EQ(s.cases[23].config.drive.amplitude, 5.0);
+}
+
+TEST(SweepSpec, NamesAreStableAndSurviveGrowingTheGrid) {
+  const std::string small = "[grid.drive]\nperiod = [1, 5]\n";
+  const std::string grown = "[grid.drive]\nperiod = [0.5, 1, 5, 8]\n";
+  EXPECT_EQ(names(parseSweepSpec(small, "a.toml")), names(parseSweepSpec(small, "a.toml")));
+  const auto before = names(parseSweepSpec(small, "a.toml"));
+  const auto after = names(parseSweepSpec(grown, "a.toml"));
+  for (const std::string& n : before) EXPECT_NE(std::find(after.begin(), after.end(), n), after.end()) << n;
+  EXPECT_EQ(after[0], "period=0.5");
+}
+
+TEST(SweepSpec, SameLeafInTwoSectionsUsesFullKeysInNames) {
+  const SweepSpec s = parseSweepSpec("[grid.box]\nwidth = [60, 80]\n[grid.fields]\nwidth = [1, 2]\n", "s.toml");
+  ASSERT_EQ(s.cases.size(), 4u);
+  EXPECT_EQ(s.cases[1].name, "box.width=60_fields.width=2");
+}
+
+TEST(SweepSpec, ArrayValuedKeysCanBeGridded) {
+  const SweepSpec s = parseSweepSpec(R"(
+[base.intruder]
+shape = "polygon"
+[grid.intruder]
+vertices = [ [[0,0],[4,0],[0,3]], [[0,0],[6,0],[0,2]] ]
+[grid.fields]
+phases = [[0, 5], [10]]
+)",
+                                     "s.toml");
+  ASSERT_EQ(s.cases.size(), 4u);
+  EXPECT_EQ(s.cases[0].name, "vertices=0_0_4_0_0_3_phases=0_5");
+  EXPECT_EQ(s.cases[3].config.intruder.vertices[1][0], 6.0);
+  EXPECT_EQ(s.cases[3].config.fields.phases, (std::vector<double>{10}));
+  EXPECT_EQ(s.cases[0].parameters[0].value, "[[0, 0], [4, 0], [0, 3]]");
+  EXPECT_EQ(s.cases[0].parameters[1].value, "[0, 5]");
+}
+
+TEST(SweepSpec, CaseListTimesGrid) {
+  const SweepSpec s = parseSweepSpec(R"(
+[base.drive]
+amplitude = 3
+
+[[case]]
+name = "disk"
+intruder.shape = "disk"
+
+[[case]]
+name = "right triangle"
+[case.intruder]
+shape = "polygon"
+vertices = [[0, 0], [6, 0], [0, 6]]
+
+[grid.drive]
+period = [1, 5]
+)",
+                                     "s.toml");
+  ASSERT_EQ(s.cases.size(), 4u);
+  EXPECT_EQ(names(s), (std::vector<std::string>{"disk_period=1", "disk_period=5", "right_triangle_period=1",
+                                                "right_triangle_period=5"}));
+  EXPECT_EQ(s.parameterKeys,
+            (std::vector<std::string>{"case", "intruder.shape", "intruder.vertices", "drive.period"}));
+  EXPECT_EQ(s.cases[0].parameters[0].value, "disk");
+  EXPECT_EQ(s.cases[0].parameters[2].value, "[]");
+  EXPECT_EQ(s.cases[3].parameters[0].value, "right triangle");
+  EXPECT_EQ(s.cases[3].config.intruder.shape, "polygon");
+  EXPECT_EQ(s.cases[3].config.intruder.vertices.size(), 3u);
+  EXPECT_EQ(s.cases[3].config.drive.period, 5.0);
+  EXPECT_EQ(s.cases[0].config.intruder.vertices.size(), 0u);  // a case does not leak into the next
+}
+
+TEST(SweepSpec, UnnamedCasesAreNamedByTheirValues) {
+  const SweepSpec s = parseSweepSpec(
+      "[[case]]\ndrive.period = 1\ndrive.amplitude = 0.5\n[[case]]\ncontact.mu = 0.3\n", "s.toml");
+  ASSERT_EQ(s.cases.size(), 2u);
+  EXPECT_EQ(s.cases[0].name, "period=1_amplitude=0.5");
+  EXPECT_EQ(s.cases[1].name, "mu=0.3");
+  EXPECT_EQ(s.parameterKeys, (std::vector<std::string>{"drive.period", "drive.amplitude", "contact.mu"}));
+  EXPECT_EQ(s.cases[1].parameters[0].value, "5");  // the base value where the case is silent
+  EXPECT_EQ(s.cases[1].config.contact.mu, 0.3);
+}
+
+TEST(SweepSpec, NoGridNoCasesIsTheBase) {
+  const SweepSpec s = parseSweepSpec("[base.drive]\nperiod = 2\n", "dir/only.toml");
+  ASSERT_EQ(s.cases.size(), 1u);
+  EXPECT_EQ(s.cases[0].name, "base");
+  EXPECT_TRUE(s.parameterKeys.empty());
+  EXPECT_EQ(s.cases[0].config.drive.period, 2.0);
+  EXPECT_EQ(s.settings.name, "only");
+}
+
+TEST(SweepSpec, SweepSettings) {
+  const SweepSpec s = parseSweepSpec("[sweep]\nname = \"fig5\"\njobs = 4\nthreads_per_case = 2\n", "s.toml");
+  EXPECT_EQ(s.settings.name, "fig5");
+  EXPECT_EQ(s.settings.jobs, 4);
+  EXPECT_EQ(s.settings.threadsPerCase, 2);
+  EXPECT_NE(sweepError("[sweep]\njob = 4\n").find("unknown key 'sweep.job'"), std::string::npos);
+  EXPECT_NE(sweepError("[sweep]\njobs = -1\n").find("sweep.jobs = -1: must be >= 0"), std::string::npos);
+}
+
+TEST(SweepSpec, ABadGridValueNamesTheCaseAndTheKey) {
+  const std::string m = sweepError("[grid.intruder]\nshape = [\"disk\"]\n[grid.drive]\nperiod = [1, -2]\n");
+  EXPECT_EQ(m, "sweep.toml: case 2 'shape=disk_period=-2': line 4 [grid]: drive.period = -2: must be > 0");
+  // A cross-key problem that only some cases have.
+  const std::string cross = sweepError("[grid.drive]\nperiod = [5, 5.00005]\n");
+  EXPECT_NE(cross.find("case 2 'period=5.00005': drive.period = 5.00005: must be a whole number"), std::string::npos)
+      << cross;
+  const std::string shape = sweepError("[grid.intruder]\nshape = [\"disk\", \"circle\"]\n");
+  EXPECT_NE(shape.find("case 2 'shape=circle'"), std::string::npos) << shape;
+  EXPECT_NE(shape.find("intruder.shape = \"circle\": must be one of"), std::string::npos) << shape;
+  const std::string inCase = sweepError("[[case]]\nname = \"a\"\ndrive.period = 1\n[[case]]\nname = \"b\"\ndrive.amplitude = -1\n");
+  EXPECT_NE(inCase.find("case 2 'b': line 6 [[case]]: drive.amplitude = -1: must be >= 0"), std::string::npos)
+      << inCase;
+}
+
+TEST(SweepSpec, StructuralErrorsNameTheFileAndKey) {
+  EXPECT_NE(sweepError("[grid.drive]\nperod = [1, 5]\n").find("sweep.toml:2: unknown key 'grid.drive.perod' (did you mean 'grid.drive.period'?)"),
+            std::string::npos);
+  EXPECT_NE(sweepError("[base.drvie]\nperiod = 1\n").find("unknown section 'base.drvie' (did you mean 'base.drive'?)"),
+            std::string::npos);
+  EXPECT_NE(sweepError("[base.drive]\nperiod = -1\n").find("sweep.toml:2: drive.period = -1: must be > 0"),
+            std::string::npos);
+  EXPECT_NE(sweepError("[grid.drive]\nperiod = 5\n").find("sweep.toml:2: grid.drive.period: expected an array"),
+            std::string::npos);
+  EXPECT_NE(sweepError("[grid.drive]\nperiod = []\n").find("grid.drive.period: empty array"), std::string::npos);
+  EXPECT_NE(sweepError("[drive]\nperiod = 5\n").find("unknown table 'drive' (did you mean 'base.drive'?)"),
+            std::string::npos);
+  EXPECT_NE(sweepError("[grids.drive]\nperiod = [5]\n").find("did you mean 'grid'?"), std::string::npos);
+  EXPECT_NE(sweepError("[[case]]\ndrive.period = 1\n[grid.drive]\nperiod = [1, 5]\n")
+                .find("drive.period is set both in [[case]] 1"),
+            std::string::npos);
+  EXPECT_NE(sweepError("[grid.drive]\nperiod = [1, 1.0]\n").find("cases 1 and 2 have the same name 'period=1'"),
+            std::string::npos);
+  EXPECT_NE(sweepError("[grid.drive\n").find("sweep.toml:1:"), std::string::npos);
+  EXPECT_NE(sweepError("case = 3\n").find("'case' must be a list of tables"), std::string::npos);
+}
+
+TEST(SweepSpec, MissingFileIsAnError) {
+  EXPECT_NE(errorOf([] { loadSweepSpec("/nonexistent/sweep.toml"); }).find("cannot read sweep file"),
+            std::string::npos);
+}
+
+TEST(SweepSpec, ShippedSweepFilesExpand) {
+  // Every sweep file under configs/sweeps must expand without error (they are user-facing).
+  const std::filesystem::path dir = std::filesystem::path(WIGGLE_SOURCE_DIR) / "configs" / "sweeps";
+  if (!std::filesystem::exists(dir)) GTEST_SKIP() << "no " << dir;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    if (entry.path().extension() != ".toml") continue;
+    EXPECT_NO_THROW(loadSweepSpec(entry.path().string())) << entry.path();
+  }
+}
+
+TEST(SweepSpec, ExamplesInTheDocsParse) {
+  // Each ```toml block of docs/CONFIG.md starts with "# run" or "# sweep" and must be accepted.
+  std::ifstream in(std::string(WIGGLE_SOURCE_DIR) + "/docs/CONFIG.md");
+  ASSERT_TRUE(in);
+  std::stringstream all;
+  all << in.rdbuf();
+  const std::string text = all.str();
+  std::vector<std::size_t> sweepSizes;
+  int runs = 0;
+  for (std::size_t at = text.find("```toml\n"); at != std::string::npos; at = text.find("```toml\n", at + 1)) {
+    const std::size_t begin = at + 8;
+    const std::size_t end = text.find("```", begin);
+    ASSERT_NE(end, std::string::npos);
+    const std::string block = text.substr(begin, end - begin);
+    if (block.rfind("# sweep", 0) == 0) {
+      sweepSizes.push_back(parseSweepSpec(block, "CONFIG.md").cases.size());
+    } else {
+      ASSERT_EQ(block.rfind("# run", 0), 0u) << block;
+      EXPECT_NO_THROW(parseRunConfig(block, "CONFIG.md")) << block;
+      ++runs;
+    }
+  }
+  EXPECT_EQ(runs, 2);
+  // The counts the text states: figure 5 (4 x 10), shapes x periods x seeds, 3 cases x 2 periods.
+  EXPECT_EQ(sweepSizes, (std::vector<std::size_t>{40, 30, 6}));
+}
+
+}  // namespace
+}  // namespace wiggle

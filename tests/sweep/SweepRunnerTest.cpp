@@ -1,0 +1,322 @@
+// `wiggle sweep` end to end on a tiny bed (20 d x 12 d, about 230 grains, a 3 d square polygon):
+// the cases run as child processes of the real wiggle binary (WIGGLE_BINARY). The bed is made once
+// per test binary run (about 5 s) into a private cache and shared by every test here.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <thread>
+
+#include "io/AtomicFile.h"
+#include "io/SweepSpec.h"
+#include "sweep/ResultsTable.h"
+#include "sweep/SweepPlan.h"
+#include "sweep/SweepRunner.h"
+
+namespace wiggle {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A minimal RFC 4180 reader: the test must not trust the writer's own quoting code.
+std::vector<std::vector<std::string>> parseCsv(const std::string& text) {
+  std::vector<std::vector<std::string>> rows(1);
+  std::string cell;
+  bool quoted = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char ch = text[i];
+    if (quoted) {
+      if (ch == '"' && i + 1 < text.size() && text[i + 1] == '"') cell += '"', ++i;
+      else if (ch == '"') quoted = false;
+      else cell += ch;
+    } else if (ch == '"') {
+      quoted = true;
+    } else if (ch == ',') {
+      rows.back().push_back(cell), cell.clear();
+    } else if (ch == '\n') {
+      rows.back().push_back(cell), cell.clear();
+      rows.emplace_back();
+    } else {
+      cell += ch;
+    }
+  }
+  if (rows.back().empty()) rows.pop_back();
+  return rows;
+}
+
+// results.csv as one map per row (column -> cell), keyed by case name.
+std::map<std::string, std::map<std::string, std::string>> readResults(const std::string& dir) {
+  const auto rows = parseCsv(readFile(dir + "/results.csv"));
+  std::map<std::string, std::map<std::string, std::string>> out;
+  for (std::size_t r = 1; r < rows.size(); ++r) {
+    std::map<std::string, std::string> row;
+    for (std::size_t c = 0; c < rows[0].size() && c < rows[r].size(); ++c) row[rows[0][c]] = rows[r][c];
+    out[row["case"]] = row;
+  }
+  return out;
+}
+
+class SweepRunnerTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    root_ = new std::string(fs::temp_directory_path().string() + "/wiggle-sweep-test-" + std::to_string(::getpid()));
+    fs::remove_all(*root_);
+    fs::create_directories(*root_ + "/cache");
+  }
+  static void TearDownTestSuite() {
+    fs::remove_all(*root_);
+    delete root_;
+  }
+
+  // The sweep file: `grid` is the [grid] part, `duration` the run length.
+  static std::string sweepFile(const std::string& name, const std::string& grid, double duration = 0.2) {
+    std::ostringstream s;
+    s << "[sweep]\nname = \"" << name << "\"\n"
+      << "[base.box]\nwidth = 20.0\nbed_height = 12.0\nseed = 1\n"
+      << "[base.intruder]\nshape = \"polygon\"\nvertices = [[-1.5, -1.5], [1.5, -1.5], [1.5, 1.5], [-1.5, 1.5]]\n"
+      << "y0 = 6.0\n"
+      << "[base.drive]\namplitude = 0.5\nperiod = 1.0\n"
+      << "[base.bed]\nrest_energy = 1e-4\nmax_time = 100.0\ncache_dir = \"" << *root_ << "/cache\"\n"
+      << "[base.run]\ndt = 0.0001\nduration = " << duration << "\nsample_interval = 0.01\ndump_interval = 0.0\n"
+      << "checkpoint_interval = 0.02\nplot = false\n"
+      << "[base.fields]\nenabled = false\n"
+      << grid;
+    const std::string path = *root_ + "/" + name + ".toml";
+    std::ofstream(path) << s.str();
+    return path;
+  }
+
+  static SweepOptions quietOptions(const std::string& out) {
+    SweepOptions o;
+    o.outDir = out;
+    o.jobs = 2;
+    o.threads = 1;
+    o.executable = WIGGLE_BINARY;
+    o.allowMpi = false;
+    o.progress = false;
+    o.logToStderr = false;
+    o.handleSignals = false;
+    return o;
+  }
+
+  static std::string* root_;
+};
+std::string* SweepRunnerTest::root_ = nullptr;
+
+TEST(ResultsTable, QuotesCellsThatNeedIt) {
+  EXPECT_EQ(csvCell("disk"), "disk");
+  EXPECT_EQ(csvCell("[0, 5]"), "\"[0, 5]\"");
+  EXPECT_EQ(csvCell("say \"hi\""), "\"say \"\"hi\"\"\"");
+}
+
+TEST(ResultsTable, FailureLineIsTheLastErrorWithoutPrefix) {
+  EXPECT_EQ(failureLine("wiggle: warning: cached bed refused\nwiggle: box.width = 5 is too narrow\n"),
+            "box.width = 5 is too narrow");
+  EXPECT_EQ(failureLine("wiggle: a\nwiggle: warning: b\n\n"), "a");
+  EXPECT_EQ(failureLine("[run] 10%\r[run] 20%\rSegmentation fault\n"), "Segmentation fault");
+  EXPECT_EQ(failureLine(""), "");
+}
+
+TEST(ResultsTable, RowsForPendingOkAndFailedCases) {
+  const SweepSpec spec = parseSweepSpec(
+      "[[case]]\nname = \"deep\"\nintruder.y0 = 20\n[grid.drive]\nperiod = [1, 2, 3]\n", "t.toml");
+  std::vector<CaseResult> results(3);
+  results[0].status = "ok";
+  results[0].vy = 0.125;
+  results[0].vySlope = -0.5;
+  results[0].wallSeconds = 3;
+  results[0].grains = 100;
+  results[0].steps = 2000;
+  results[0].stateHash = "abc";
+  results[1].status = "failed";
+  results[1].error = "box.width = 5 is too narrow, really";
+  const std::string csv = resultsCsv(spec, {"cases/a", "cases/b", "cases/c"}, results);
+  const auto rows = parseCsv(csv);
+  ASSERT_EQ(rows.size(), 4u);
+  const std::vector<std::string> header = {"case", "run_dir", "status", "vy", "vy_slope", "wall_s", "case_label",
+                                           "intruder.y0", "drive.period", "intruder.shape", "drive.amplitude",
+                                           "contact.mu", "box.seed", "n_grains", "steps", "ns_per_particle_step",
+                                           "state_hash", "error"};
+  EXPECT_EQ(rows[0], header);
+  EXPECT_EQ(rows[1], (std::vector<std::string>{"deep_period=1", "cases/a", "ok", "0.125", "-0.5", "3", "deep", "20", "1",
+                                               "disk", "3", "0.1", "1", "100", "2000", "0", "abc", ""}));
+  EXPECT_EQ(rows[2][2], "failed");
+  EXPECT_EQ(rows[2][3], "");
+  EXPECT_EQ(rows[2].back(), "box.width = 5 is too narrow, really");
+  EXPECT_EQ(rows[3][2], "pending");
+  EXPECT_EQ(rows[3][8], "3");
+}
+
+TEST(SweepPlan, GrainEstimateIsAreaTimesPackingOverMeanGrainArea) {
+  RunConfig c;
+  c.box.width = 300;
+  c.box.bedHeight = 195;
+  c.grains.dMin = 0.9;
+  c.grains.dMax = 1.1;
+  // Mean of pi d^2 / 4 for d uniform in [0.9, 1.1]: (pi/4) (E[d]^2 + Var d) = (pi/4)(1 + 0.04/12).
+  const double meanArea = 3.14159265358979 / 4.0 * (1.0 + 0.04 / 12.0);
+  EXPECT_NEAR(estimatedGrains(c), 300.0 * 195.0 * 0.84 / meanArea, 1e-6);
+  // The paper quotes about 63,000 grains for this bed.
+  EXPECT_NEAR(estimatedGrains(c), 63000.0, 2000.0);
+}
+
+TEST_F(SweepRunnerTest, RunsEveryCaseRecordsFailuresAndResumes) {
+  // amplitude 7 fails the geometry check (box too narrow); period 0.1 drives the intruder so
+  // hard that the run stops with "the simulation blew up"; the other two must finish.
+  const std::string file = sweepFile("mixed", "[grid.drive]\namplitude = [0.5, 7.0]\nperiod = [0.1, 1.0, 2.0]\n");
+  const std::string out = *root_ + "/mixed";
+
+  // A reader polls results.csv during the sweep: every version it sees must be whole.
+  std::atomic<bool> done{false};
+  std::atomic<int> reads{0}, torn{0};
+  std::thread reader([&] {
+    while (!done) {
+      std::error_code ec;
+      if (fs::exists(out + "/results.csv", ec)) {
+        const std::string text = readFile(out + "/results.csv");
+        const auto rows = parseCsv(text);
+        const bool whole = !text.empty() && text.back() == '\n' && rows.size() == 7 &&
+                           std::all_of(rows.begin(), rows.end(), [&](const auto& r) { return r.size() == rows[0].size(); });
+        ++reads;
+        if (!whole) ++torn;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+  });
+  std::vector<std::string> started;
+  SweepOptions options = quietOptions(out);
+  options.onTaskStarted = [&](const SweepTask& t, pid_t) {
+    if (t.kind == SweepTask::Kind::Case) started.push_back(std::to_string(t.caseIndex));
+  };
+  const SweepOutcome first = runSweep(file, options);
+  done = true;
+  reader.join();
+  EXPECT_GT(reads.load(), 0);
+  EXPECT_EQ(torn.load(), 0);
+
+  EXPECT_EQ(first.cases, 6u);
+  EXPECT_EQ(first.ok, 2u);
+  EXPECT_EQ(first.failed, 4u);
+  EXPECT_EQ(started.size(), 3u);  // the three amplitude-7 cases never start a process
+
+  auto rows = readResults(out);
+  ASSERT_EQ(rows.size(), 6u);
+  // Columns: the fixed ones, the grid keys, the always-present parameters, bookkeeping, error.
+  const auto header = parseCsv(readFile(out + "/results.csv"))[0];
+  const std::vector<std::string> expected = {"case", "run_dir", "status", "vy", "vy_slope", "wall_s",
+                                             "drive.amplitude", "drive.period", "intruder.shape", "contact.mu",
+                                             "box.seed", "n_grains", "steps", "ns_per_particle_step", "state_hash", "error"};
+  EXPECT_EQ(header, expected);
+  // Case order is the sweep's: the last grid key varies fastest.
+  const auto all = parseCsv(readFile(out + "/results.csv"));
+  EXPECT_EQ(all[1][0], "amplitude=0.5_period=0.1");
+  EXPECT_EQ(all[2][0], "amplitude=0.5_period=1");
+  EXPECT_EQ(all[6][0], "amplitude=7_period=2");
+
+  for (const char* ok : {"amplitude=0.5_period=1", "amplitude=0.5_period=2"}) {
+    const auto& r = rows[ok];
+    EXPECT_EQ(r.at("status"), "ok") << ok << ": " << r.at("error");
+    EXPECT_EQ(r.at("run_dir"), std::string("cases/") + ok);
+    EXPECT_EQ(r.at("error"), "");
+    // The row repeats the case's summary.json.
+    const std::string summary = readFile(out + "/cases/" + ok + "/summary.json");
+    EXPECT_NE(summary.find("\"state_hash\": \"" + r.at("state_hash") + "\""), std::string::npos);
+    EXPECT_EQ(r.at("steps"), "2000");
+    EXPECT_FALSE(r.at("vy").empty());
+  }
+  EXPECT_EQ(rows["amplitude=0.5_period=0.1"].at("status"), "failed");
+  EXPECT_NE(rows["amplitude=0.5_period=0.1"].at("error").find("blew up"), std::string::npos)
+      << rows["amplitude=0.5_period=0.1"].at("error");
+  EXPECT_EQ(rows["amplitude=0.5_period=0.1"].at("vy"), "");
+  EXPECT_EQ(rows["amplitude=7_period=1"].at("status"), "failed");
+  EXPECT_NE(rows["amplitude=7_period=1"].at("error").find("box.width = 20 is too narrow"), std::string::npos);
+  EXPECT_EQ(rows["amplitude=7_period=1"].at("drive.amplitude"), "7");
+  EXPECT_EQ(rows["amplitude=7_period=1"].at("intruder.shape"), "polygon");
+  // No temporary file of the atomic writes is left behind.
+  for (const auto& e : fs::directory_iterator(out)) EXPECT_EQ(e.path().string().find(".tmp."), std::string::npos);
+
+  // A rerun starts only the case that failed at run time (and fails it again); the finished ones
+  // are skipped and keep their rows.
+  started.clear();
+  const std::string before = readFile(out + "/cases/amplitude=0.5_period=1/summary.json");
+  const SweepOutcome second = runSweep(file, options);
+  EXPECT_EQ(second.ok, 2u);
+  EXPECT_EQ(second.failed, 4u);
+  EXPECT_EQ(started, std::vector<std::string>{"0"});
+  EXPECT_EQ(readFile(out + "/cases/amplitude=0.5_period=1/summary.json"), before);
+  const auto again = readResults(out);
+  for (const char* ok : {"amplitude=0.5_period=1", "amplitude=0.5_period=2"})
+    EXPECT_EQ(again.at(ok).at("state_hash"), rows.at(ok).at("state_hash"));
+}
+
+TEST_F(SweepRunnerTest, KilledCaseResumesToTheUninterruptedState) {
+  // Two identical cases in two sweeps: one runs through, the other's process is killed with
+  // SIGKILL after its first checkpoint and then resumed by a rerun. The final states must agree
+  // bit for bit (summary.json state_hash).
+  const std::string grid = "[grid.drive]\nperiod = [1.0]\n";
+  const double duration = 2.0;  // 20,000 steps: long enough to be killed half way
+  const std::string file = sweepFile("kill", grid, duration);
+  const std::string reference = *root_ + "/kill-reference", killed = *root_ + "/kill-killed";
+  const SweepOutcome ref = runSweep(file, quietOptions(reference));
+  ASSERT_EQ(ref.ok, 1u);
+  const std::string caseDir = killed + "/cases/period=1";
+
+  SweepOptions options = quietOptions(killed);
+  std::thread killer;
+  std::atomic<bool> killedMidRun{false};
+  options.onTaskStarted = [&](const SweepTask& t, pid_t pid) {
+    if (t.kind != SweepTask::Kind::Case) return;
+    killer = std::thread([&, pid] {
+      // Wait for the first checkpoint, then kill before the run can finish.
+      for (int i = 0; i < 20000 && !fs::exists(caseDir + "/checkpoint.bin"); ++i)
+        std::this_thread::sleep_for(std::chrono::microseconds(500));
+      killedMidRun = !fs::exists(caseDir + "/summary.json");
+      ::kill(pid, SIGKILL);
+    });
+  };
+  const SweepOutcome first = runSweep(file, options);
+  killer.join();
+  ASSERT_TRUE(killedMidRun.load()) << "the case finished before it could be killed: make it longer";
+  EXPECT_EQ(first.failed, 1u);
+  EXPECT_EQ(readResults(killed)["period=1"].at("status"), "failed");
+  EXPECT_NE(readResults(killed)["period=1"].at("error").find("killed by signal 9"), std::string::npos);
+  EXPECT_FALSE(fs::exists(caseDir + "/summary.json"));
+
+  options.onTaskStarted = {};
+  const SweepOutcome second = runSweep(file, options);
+  EXPECT_EQ(second.ok, 1u);
+  const auto refRow = readResults(reference)["period=1"];
+  const auto resumedRow = readResults(killed)["period=1"];
+  EXPECT_EQ(resumedRow.at("status"), "ok");
+  EXPECT_EQ(resumedRow.at("state_hash"), refRow.at("state_hash"));
+  EXPECT_EQ(resumedRow.at("vy"), refRow.at("vy"));
+  // The resumed run really continued from a checkpoint rather than starting over.
+  EXPECT_NE(readFile(caseDir + "/log.txt").find("resumed from"), std::string::npos);
+}
+
+TEST_F(SweepRunnerTest, DryRunListsCasesAndCostWithoutRunning) {
+  const std::string file = sweepFile("dry", "[grid.drive]\nperiod = [1.0, 2.0]\n[grid.box]\nseed = [7, 8]\n");
+  const std::string out = *root_ + "/dry";
+  std::ostringstream listing;
+  SweepOptions options = quietOptions(out);
+  options.dryRun = true;
+  options.listing = &listing;
+  const SweepOutcome o = runSweep(file, options);
+  EXPECT_EQ(o.cases, 4u);
+  EXPECT_FALSE(fs::exists(out));
+  const std::string text = listing.str();
+  EXPECT_NE(text.find("period=1_seed=7"), std::string::npos) << text;
+  EXPECT_NE(text.find("4 cases: 4 to run"), std::string::npos) << text;
+  // Two seeds: two distinct beds, neither cached.
+  EXPECT_NE(text.find("2 of 2 distinct beds to make"), std::string::npos) << text;
+  EXPECT_NE(text.find("estimated cost"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace wiggle

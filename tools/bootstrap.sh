@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# One entry point for a fresh Debian 12 machine (run as root, or with sudo available):
+#   tools/bootstrap.sh run  [wiggle run args...]   install what is missing, build, run the default case
+#   tools/bootstrap.sh test [ctest args...]        install what is missing, build, run the fast tests
+# Environment: WIGGLE_PRESET (default "release"; CI uses "ci": warnings as errors).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+packages=(build-essential cmake libgtest-dev libgmock-dev libbenchmark-dev libtomlplusplus-dev libcli11-dev
+          nlohmann-json3-dev libomp-dev libopenmpi-dev openmpi-bin python3 python3-matplotlib python3-numpy)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "bootstrap: installing ${missing[*]}"
+  sudo_cmd=""
+  [ "$(id -u)" -ne 0 ] && sudo_cmd="sudo"
+  $sudo_cmd apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo_cmd apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+preset="${WIGGLE_PRESET:-release}"
+cmake --preset "$preset" > /dev/null
+cmake --build --preset "$preset" -j "$(nproc)"
+
+what="${1:-}"
+shift || true
+case "$what" in
+  run) exec "build/$preset/wiggle" run "$@" ;;
+  test) cd "build/$preset" && exec ctest -LE "slow|mpi" --output-on-failure -j "$(nproc)" "$@" ;;
+  build|"") ;;
+  *) echo "usage: tools/bootstrap.sh run|test|build" >&2; exit 2 ;;
+esac
