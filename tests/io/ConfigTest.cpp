@@ -107,7 +107,7 @@ const std::vector<std::tuple<std::string, std::string, std::string>>& everyKey()
       {"drive.period", "2", "drive.period"},
       {"bed.batch_height", "10", "bed.batchHeight"},
       {"bed.settle_speed", "0.1", "bed.settleSpeed"},
-      {"bed.rest_energy", "1e-6", "bed.restEnergy"},
+      {"bed.rest_energy", "1e-5", "bed.restEnergy"},
       {"bed.max_time", "500", "bed.maxTime"},
       {"bed.cache_dir", "/tmp/beds", "bed.cacheDir"},
       {"run.dt", "2e-4", "run.dt"},
@@ -453,6 +453,7 @@ TEST(Config, ValueStringsForColumnsAndNames) {
   RunConfig c;
   EXPECT_EQ(configValueString(c, "drive.period"), "5");
   EXPECT_EQ(configValueString(c, "run.dt"), "0.0001");
+  c.bed.restEnergy = 1e-8;
   EXPECT_EQ(configValueString(c, "bed.rest_energy"), "1e-08");
   EXPECT_EQ(configValueString(c, "intruder.shape"), "disk");
   EXPECT_EQ(configValueString(c, "grains.mass_model"), "sphere");
