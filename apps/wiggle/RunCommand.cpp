@@ -57,6 +57,7 @@ void addRunCommand(CLI::App& app) {
     const RunOutcome outcome = runExperiment(config, options);
     std::printf("V_y = %.6g (least-squares slope %.6g) d per sqrt(d/g); summary in %s\n", outcome.vy,
                 outcome.vySlope, outcome.summaryPath.c_str());
+    std::fflush(stdout);  // before the plotter writes to the same stream
     if (config.run.plot && !args->noPlot) {
       const std::string command = "'" + selfExecutable() + "' plot '" + args->out + "'";
       if (std::system(command.c_str()) != 0)

@@ -19,7 +19,7 @@ std::size_t firstAtOrAfter(const std::vector<TrajectorySample>& s, double t) {
 }  // namespace
 
 RiseRate measureRiseRate(const std::vector<TrajectorySample>& samples, double totalTime, double period,
-                         double plateauTolerance) {
+                         double surfacedHeight, double plateauTolerance) {
   if (samples.size() < 3) throw Error("too few trajectory samples to measure a rise rate");
   RiseRate rate;
   const std::size_t first = std::min(firstAtOrAfter(samples, 0.1 * totalTime), samples.size() - 2);
@@ -42,7 +42,7 @@ RiseRate measureRiseRate(const std::vector<TrajectorySample>& samples, double to
   while (plateauStart > first && std::fabs(averaged(plateauStart - 1) - yEnd) <= plateauTolerance) --plateauStart;
   const bool travelled = std::fabs(yEnd - averaged(first)) >= 4.0 * plateauTolerance;
   const bool longPlateau = samples[last].t - samples[plateauStart].t >= 0.1 * totalTime;
-  if (travelled && longPlateau && plateauStart > first) {
+  if (yEnd >= surfacedHeight && travelled && longPlateau && plateauStart > first) {
     end = plateauStart;
     rate.plateau = true;
   }

@@ -7,8 +7,10 @@
 // explicit here: average y over a window of max(T, 1) to remove the in-cycle wiggle; call y_end
 // the averaged height at the end; t_plateau is the earliest time after t_i from which the averaged
 // height stays within `plateauTolerance` (0.5 d) of y_end. It is used as t_f only when the intruder
-// travelled at least 4 tolerances (2 d) between t_i and the end and the plateau lasts at least 10 %
-// of the run; otherwise a slow or noisy trajectory would get a spuriously short window.
+// ends at the free surface (y_end >= surfacedHeight: its top within about two grains of the
+// surface), travelled at least 4 tolerances (2 d) between t_i and the end, and the plateau lasts at
+// least 10 % of the run. A pause inside the bed, or the end of a fast start-up transient, is not
+// the paper's plateau and must not shorten the window.
 // y_i and y_f are the raw sampled heights at t_i and t_f. The least-squares slope of y(t) over
 // [t_i, t_f] is reported beside it.
 #include <vector>
@@ -28,6 +30,6 @@ struct RiseRate {
 };
 
 RiseRate measureRiseRate(const std::vector<TrajectorySample>& samples, double totalTime, double period,
-                         double plateauTolerance = 0.5);
+                         double surfacedHeight, double plateauTolerance = 0.5);
 
 }  // namespace wiggle

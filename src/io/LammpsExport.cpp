@@ -207,14 +207,7 @@ LammpsExportResult exportLammps(const RunConfig& config, const std::string& dir,
   if (!bed.note.empty()) std::fprintf(stderr, "wiggle: warning: %s\n", bed.note.c_str());
   // Exactly what runExperiment does before its first step.
   World& world = bed.world;
-  ClumpMotion motion;
-  motion.kind = HorizontalMotion::Sinusoid;
-  motion.x0 = 0.5 * config.box.width;
-  motion.amplitude = config.drive.amplitude;
-  motion.period = config.drive.period;
-  motion.verticalFree = true;
-  world.setIntruderMotion(motion);
-  world.resetClock();
+  startDrive(world, config);
   LammpsExportResult result;
   result.deck = makeLammpsDeck(world, config);
   result.bedPath = bed.path;

@@ -216,6 +216,17 @@ std::uint64_t stepsIn(double interval, double dt, const char* key) {
   return static_cast<std::uint64_t>(steps);
 }
 
+void startDrive(World& world, const RunConfig& config) {
+  ClumpMotion motion;
+  motion.kind = HorizontalMotion::Sinusoid;
+  motion.x0 = 0.5 * config.box.width;
+  motion.amplitude = config.drive.amplitude;
+  motion.period = config.drive.period;
+  motion.verticalFree = true;
+  world.setIntruderMotion(motion);
+  world.resetClock();
+}
+
 void checkGeometry(const RunConfig& config, const ClumpDef& clump) {
   double minX = 0, maxX = 0, minY = 0, maxY = 0;
   for (std::size_t a = 0; a < clump.offsetX.size(); ++a) {
@@ -329,15 +340,7 @@ RunOutcome runExperiment(const RunConfig& config, const RunOptions& options) {
              std::to_string(bed.world.grainCount()) + " grains, surface " + number(freeSurfaceHeight(bed.world)) +
              ", " + number(state.bedWallSeconds) + " s)");
     loaded.emplace(std::move(bed.world));
-    World& world = *loaded;
-    ClumpMotion motion;
-    motion.kind = HorizontalMotion::Sinusoid;
-    motion.x0 = 0.5 * config.box.width;
-    motion.amplitude = config.drive.amplitude;
-    motion.period = config.drive.period;
-    motion.verticalFree = true;
-    world.setIntruderMotion(motion);
-    world.resetClock();
+    startDrive(*loaded, config);
     std::ofstream(dumpPath, std::ios::trunc);
     state.dumpBytes = 0;
   } else {
@@ -435,7 +438,10 @@ RunOutcome runExperiment(const RunConfig& config, const RunOptions& options) {
   state.runWallSeconds += secondsSince(chunkStart);
   writeCheckpoint(dir, configToml, world, state, fields);
 
-  const RiseRate rate = measureRiseRate(state.samples, config.run.duration, config.drive.period);
+  double clumpTop = 0.0;
+  for (std::size_t a = 0; a < clump.offsetY.size(); ++a) clumpTop = std::max(clumpTop, clump.offsetY[a] + clump.atomRadius);
+  const double surfacedHeight = config.box.bedHeight - clumpTop - 2.0 * config.grains.dMax;
+  const RiseRate rate = measureRiseRate(state.samples, config.run.duration, config.drive.period, surfacedHeight);
   writeTrajectory(dir + "/trajectory.csv", state.samples);
   writePhaseRates(dir + "/phase_rates.csv", state);
   if (config.fields.enabled) fields.writeCsv(dir + "/fields.csv");
@@ -444,8 +450,8 @@ RunOutcome runExperiment(const RunConfig& config, const RunOptions& options) {
   nlohmann::json summary;
   summary["vy"] = rate.vy;
   summary["vy_slope"] = rate.slope;
-  summary["vy_rule"] = "(y_f - y_i)/(t_f - t_i), t_i = 0.1 t_total, t_f = t_total or the start of a plateau "
-                       "(docs/OUTPUT-FORMATS.md)";
+  summary["vy_rule"] = "(y_f - y_i)/(t_f - t_i), t_i = 0.1 t_total, t_f = t_total or the start of a plateau at "
+                       "the free surface (docs/OUTPUT-FORMATS.md)";
   summary["plateau"] = rate.plateau;
   summary["t_i"] = rate.tInitial;
   summary["t_f"] = rate.tFinal;

@@ -8,6 +8,7 @@
 
 #include "io/RunConfig.h"
 #include "physics/Intruder.h"
+#include "physics/World.h"
 
 namespace wiggle {
 
@@ -32,6 +33,9 @@ struct RunOutcome {
 // and a few grains on each side; the intruder must sit inside the bed with grains below and above.
 // Throws wiggle::Error naming the key.
 void checkGeometry(const RunConfig& config, const ClumpDef& clump);
+
+// Releases the bed's intruder: x(t) = W/2 + A sin(2 pi t / T), y free, t = 0 now.
+void startDrive(World& world, const RunConfig& config);
 
 RunOutcome runExperiment(const RunConfig& config, const RunOptions& options);
 

@@ -17,7 +17,7 @@ TEST(RiseRate, SteadyRiseWithWiggleGivesItsSpeed) {
   // y = 10 + 0.02 t + 0.2 sin(2 pi t / 5): the paper's rule over [100, 1000] sees exactly the
   // linear part plus the wiggle's values at the two ends (both 0 at t = 100 and 1000).
   auto y = [](double t) { return 10 + 0.02 * t + 0.2 * std::sin(2 * M_PI * t / 5); };
-  const RiseRate r = measureRiseRate(sampled(1000, 0.05, y), 1000, 5);
+  const RiseRate r = measureRiseRate(sampled(1000, 0.05, y), 1000, 5, 50.0);
   EXPECT_FALSE(r.plateau);
   EXPECT_NEAR(r.tInitial, 100, 1e-9);
   EXPECT_NEAR(r.tFinal, 1000, 1e-9);
@@ -29,7 +29,7 @@ TEST(RiseRate, PlateauEndsTheWindow) {
   // Rises at 0.1 until t = 400, then stays: t_f is where the plateau starts (within the averaging
   // window and tolerance: 0.5 d / 0.1 = 5 time units early at most).
   auto y = [](double t) { return 20 + 0.1 * std::min(t, 400.0); };
-  const RiseRate r = measureRiseRate(sampled(1000, 0.05, y), 1000, 2);
+  const RiseRate r = measureRiseRate(sampled(1000, 0.05, y), 1000, 2, 58.0);
   EXPECT_TRUE(r.plateau);
   EXPECT_GT(r.tFinal, 394);
   EXPECT_LE(r.tFinal, 400.5);
@@ -37,9 +37,18 @@ TEST(RiseRate, PlateauEndsTheWindow) {
   EXPECT_NEAR(r.slope, 0.1, 1e-6);
 }
 
+TEST(RiseRate, APauseInsideTheBedIsNotAPlateau) {
+  // Same trajectory as above, but it stops at y = 60 while the surface is reached only at 70.
+  auto y = [](double t) { return 20 + 0.1 * std::min(t, 400.0); };
+  const RiseRate r = measureRiseRate(sampled(1000, 0.05, y), 1000, 2, 70.0);
+  EXPECT_FALSE(r.plateau);
+  EXPECT_NEAR(r.tFinal, 1000, 1e-9);
+  EXPECT_NEAR(r.vy, 30.0 / 900.0, 1e-9);
+}
+
 TEST(RiseRate, NoMotionIsNotMistakenForAPlateau) {
   auto y = [](double t) { return 30 + 0.3 * std::sin(2 * M_PI * t / 3) + 0.0001 * t; };
-  const RiseRate r = measureRiseRate(sampled(100, 0.05, y), 100, 3);
+  const RiseRate r = measureRiseRate(sampled(100, 0.05, y), 100, 3, 50.0);
   EXPECT_FALSE(r.plateau);
   EXPECT_NEAR(r.tFinal, 100, 1e-9);
   EXPECT_LT(std::fabs(r.vy), 0.01);
@@ -47,7 +56,7 @@ TEST(RiseRate, NoMotionIsNotMistakenForAPlateau) {
 
 TEST(RiseRate, SinkingGivesNegativeRate) {
   auto y = [](double t) { return 30 - 0.01 * t; };
-  const RiseRate r = measureRiseRate(sampled(200, 0.1, y), 200, 1);
+  const RiseRate r = measureRiseRate(sampled(200, 0.1, y), 200, 1, 50.0);
   EXPECT_NEAR(r.vy, -0.01, 1e-12);
   EXPECT_NEAR(r.slope, -0.01, 1e-9);
 }
