@@ -12,7 +12,7 @@ SHAPE, AMPLITUDE, PERIOD, MU, SEED = (
 # Columns of results.csv that are outcomes or bookkeeping, never parameters.
 NON_PARAMETERS = {"case", "run_dir", "status", "vy", "vy_slope", "wall_s", "t_i", "t_f",
                   "y_initial", "y_final", "n_grains", "steps", "threads", "ns_per_particle_step",
-                  "state_hash"}
+                  "state_hash", "error", "case_label"}
 
 
 # --- one run ------------------------------------------------------------------------------------

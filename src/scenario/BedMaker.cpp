@@ -190,10 +190,14 @@ std::string bedCacheDir(const RunConfig& config) {
   return "/tmp/wiggle-cache";
 }
 
+std::string bedCachePath(const RunConfig& config, const std::string& key) {
+  return bedCacheDir(config) + "/bed-" + key + ".bin";
+}
+
 CachedBed obtainBed(const RunConfig& config, const ClumpDef& clump, const BedProgress& progress) {
   const std::string key = bedKey(config, clump);
   const std::string dir = bedCacheDir(config);
-  const std::string path = dir + "/bed-" + key + ".bin";
+  const std::string path = bedCachePath(config, key);
   std::string note;
   if (std::filesystem::exists(path)) {
     try {

@@ -47,6 +47,9 @@ struct CachedBed {
 // The cache directory: config.bed.cacheDir, else $WIGGLE_CACHE, else $HOME/.cache/wiggle.
 std::string bedCacheDir(const RunConfig& config);
 
+// The cache file of the bed with this key.
+std::string bedCachePath(const RunConfig& config, const std::string& key);
+
 // Loads the bed from the cache when a valid entry exists; otherwise makes it and stores it. A corrupt
 // or foreign entry is reported in `note` and rebuilt, never trusted.
 CachedBed obtainBed(const RunConfig& config, const ClumpDef& clump, const BedProgress& progress = {});

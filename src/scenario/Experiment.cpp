@@ -228,6 +228,13 @@ void startDrive(World& world, const RunConfig& config) {
 }
 
 void checkGeometry(const RunConfig& config, const ClumpDef& clump) {
+  // Absurd sizes are refused before anything is allocated: the bed's grain count from its area.
+  const double meanDiameter = 0.5 * (config.grains.dMin + config.grains.dMax);
+  const double grains = 0.84 * config.box.width * config.box.bedHeight / (0.25 * 3.141592653589793 * meanDiameter * meanDiameter);
+  constexpr double kMaxGrains = 5e7;
+  if (grains > kMaxGrains)
+    throw Error("box.width x box.bed_height = " + number(config.box.width) + " x " + number(config.box.bedHeight) +
+                " needs about " + number(grains) + " grains, more than the " + number(kMaxGrains) + " wiggle accepts");
   double minX = 0, maxX = 0, minY = 0, maxY = 0;
   for (std::size_t a = 0; a < clump.offsetX.size(); ++a) {
     minX = std::min(minX, clump.offsetX[a] - clump.atomRadius);

@@ -41,10 +41,6 @@ double estimatedBedSeconds(const RunConfig& config, double nsPerParticleStep) {
   return 1e-9 * nsPerParticleStep * estimatedParticles(config) * simulatedTime / config.run.dt;
 }
 
-std::string bedCachePath(const RunConfig& config, const std::string& key) {
-  return bedCacheDir(config) + "/bed-" + key + ".bin";
-}
-
 SweepPlan makeSweepPlan(SweepSpec spec, const std::string& outDir) {
   SweepPlan plan;
   plan.spec = std::move(spec);

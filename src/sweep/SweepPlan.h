@@ -79,7 +79,5 @@ struct SweepPlan {
 // existing case directories; does not write anything).
 SweepPlan makeSweepPlan(SweepSpec spec, const std::string& outDir);
 
-// The path of a cached bed, mirroring obtainBed (scenario/BedMaker.cpp): <cache>/bed-<key>.bin.
-std::string bedCachePath(const RunConfig& config, const std::string& key);
 
 }  // namespace wiggle
