@@ -529,19 +529,24 @@ void World::checkHealth() const {
                             fmt(s.y[i]) + "): reduce run.dt");
   }
   const double width = def_.boxWidth, halfWidth = 0.5 * width;
-  auto checkOverlap = [&](double dx, double dy, double ri, double rj, std::uint32_t tag, const char* what) {
+  // The allowed overlap scales with the grain's own diameter (or the smaller of two grains): an
+  // intruder atom is part of a rigid, kinematically driven body, and a grain squeezed between it and
+  // the base may legitimately overlap one of its small atoms by more than a tenth of the atom.
+  auto checkOverlap = [&](double dx, double dy, double ri, double rj, double sizeRadius, std::uint32_t tag,
+                          const char* what) {
     if (dx > halfWidth) dx -= width;
     else if (dx < -halfWidth) dx += width;
     const double overlap = ri + rj - std::sqrt(dx * dx + dy * dy);
-    const double allowed = def_.maxOverlapFraction * 2.0 * std::min(ri, rj);
+    const double allowed = def_.maxOverlapFraction * 2.0 * sizeRadius;
     if (overlap > allowed)
       throw SimulationError(at + "grain " + std::to_string(tag) + " overlaps " + what + " by " + fmt(overlap) +
                             " d, more than " + fmt(def_.maxOverlapFraction) +
-                            " of the smaller diameter (the simulation blew up: reduce run.dt)");
+                            " of the grain's diameter (the simulation blew up: reduce run.dt)");
   };
   for (std::uint32_t k = 0; k < list_.pairCount(); ++k) {
     const std::uint32_t i = list_.owner[k], j = list_.partner[k];
-    checkOverlap(s.x[i] - s.x[j], s.y[i] - s.y[j], s.radius[i], s.radius[j], s.tag[i],
+    checkOverlap(s.x[i] - s.x[j], s.y[i] - s.y[j], s.radius[i], s.radius[j], std::min(s.radius[i], s.radius[j]),
+                 s.tag[i],
                  j < s.grainCount ? "another grain" : "a base particle");
   }
   if (!hasIntruder_) return;
@@ -550,7 +555,7 @@ void World::checkHealth() const {
   for (std::uint32_t p = 0; p < intruderPairs_.size(); ++p) {
     const std::uint32_t g = intruderPairs_.grain[p], a = intruderPairs_.atom[p];
     checkOverlap(s.x[g] - (clumpState_.x + clump_.offsetX[a]), s.y[g] - (clumpState_.y + clump_.offsetY[a]),
-                 s.radius[g], clump_.atomRadius, s.tag[g], "the intruder");
+                 s.radius[g], clump_.atomRadius, s.radius[g], s.tag[g], "the intruder");
   }
 }
 

@@ -29,7 +29,7 @@ struct WorldDef {
   double intruderSkin = 1.0;  // skin of the intruder-grain list [d]; larger, as the intruder is fast
   std::uint64_t sortInterval = 2000;   // steps between spatial re-sorts of the grains (at a rebuild)
   std::uint64_t healthInterval = 100;  // steps between blow-up checks
-  double maxOverlapFraction = 0.1;     // blow-up: overlap above this fraction of the smaller diameter
+  double maxOverlapFraction = 0.1;     // blow-up: overlap above this fraction of the grain's diameter (the smaller grain's)
   double referenceImpactSpeed = 1.0;   // for the time-step check [sqrt(g d)]
   double minStepsPerContact = 5.0;     // refuse dt above (Hertz contact time) / this
 };
