@@ -167,9 +167,10 @@ TEST(SweepPlan, GrainEstimateIsAreaTimesPackingOverMeanGrainArea) {
 }
 
 TEST_F(SweepRunnerTest, RunsEveryCaseRecordsFailuresAndResumes) {
-  // amplitude 7 fails the geometry check (box too narrow); period 0.1 drives the intruder so
+  // amplitude 7 fails the geometry check (box too narrow); period 0.0003 (3 steps: the intruder jumps 0.4 d a step)
+  // drives the intruder so
   // hard that the run stops with "the simulation blew up"; the other two must finish.
-  const std::string file = sweepFile("mixed", "[grid.drive]\namplitude = [0.5, 7.0]\nperiod = [0.1, 1.0, 2.0]\n");
+  const std::string file = sweepFile("mixed", "[grid.drive]\namplitude = [0.5, 7.0]\nperiod = [0.0003, 1.0, 2.0]\n");
   const std::string out = *root_ + "/mixed";
 
   // A reader polls results.csv during the sweep: every version it sees must be whole.
@@ -215,7 +216,7 @@ TEST_F(SweepRunnerTest, RunsEveryCaseRecordsFailuresAndResumes) {
   EXPECT_EQ(header, expected);
   // Case order is the sweep's: the last grid key varies fastest.
   const auto all = parseCsv(readFile(out + "/results.csv"));
-  EXPECT_EQ(all[1][0], "amplitude=0.5_period=0.1");
+  EXPECT_EQ(all[1][0], "amplitude=0.5_period=0.0003");
   EXPECT_EQ(all[2][0], "amplitude=0.5_period=1");
   EXPECT_EQ(all[6][0], "amplitude=7_period=2");
 
@@ -230,10 +231,10 @@ TEST_F(SweepRunnerTest, RunsEveryCaseRecordsFailuresAndResumes) {
     EXPECT_EQ(r.at("steps"), "2000");
     EXPECT_FALSE(r.at("vy").empty());
   }
-  EXPECT_EQ(rows["amplitude=0.5_period=0.1"].at("status"), "failed");
-  EXPECT_NE(rows["amplitude=0.5_period=0.1"].at("error").find("blew up"), std::string::npos)
-      << rows["amplitude=0.5_period=0.1"].at("error");
-  EXPECT_EQ(rows["amplitude=0.5_period=0.1"].at("vy"), "");
+  EXPECT_EQ(rows["amplitude=0.5_period=0.0003"].at("status"), "failed");
+  EXPECT_NE(rows["amplitude=0.5_period=0.0003"].at("error").find("blew up"), std::string::npos)
+      << rows["amplitude=0.5_period=0.0003"].at("error");
+  EXPECT_EQ(rows["amplitude=0.5_period=0.0003"].at("vy"), "");
   EXPECT_EQ(rows["amplitude=7_period=1"].at("status"), "failed");
   EXPECT_NE(rows["amplitude=7_period=1"].at("error").find("box.width = 20 is too narrow"), std::string::npos);
   EXPECT_EQ(rows["amplitude=7_period=1"].at("drive.amplitude"), "7");
