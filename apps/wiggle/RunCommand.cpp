@@ -1,8 +1,5 @@
 // `wiggle run [CONFIG.toml] [--set section.key=value]... [--out DIR] [--threads N] [--resume]`
-#include <unistd.h>
-
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <optional>
 
@@ -24,12 +21,6 @@ struct RunArgs {
   bool resume = false;
   bool noPlot = false;
 };
-
-std::string selfExecutable() {
-  std::error_code ec;
-  const auto path = std::filesystem::read_symlink("/proc/self/exe", ec);
-  return ec ? std::string("wiggle") : path.string();
-}
 
 }  // namespace
 
@@ -59,8 +50,13 @@ void addRunCommand(CLI::App& app) {
                 outcome.vySlope, outcome.summaryPath.c_str());
     std::fflush(stdout);  // before the plotter writes to the same stream
     if (config.run.plot && !args->noPlot) {
-      const std::string command = "'" + selfExecutable() + "' plot '" + args->out + "'";
-      if (std::system(command.c_str()) != 0)
+      int status = 1;
+      try {
+        status = runPlotter({args->out});
+      } catch (const Error& e) {
+        std::fprintf(stderr, "wiggle: %s\n", e.what());
+      }
+      if (status != 0)
         std::fprintf(stderr, "wiggle: warning: the figures could not be drawn (see above); the results are complete\n");
     }
   });

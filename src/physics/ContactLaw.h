@@ -32,7 +32,6 @@ struct ContactParams {
 struct ContactForce {
   double fx, fy;          // force on i
   double torqueArm;       // rinv (dx fs_y - dy fs_x); torque_i -= radI * torqueArm
-  double overlap;         // radI + radJ - r when touching, else <= 0 [d]
   double shearX, shearY;  // the pair's history after this step (0 when not touching) [d]
 };
 
@@ -100,8 +99,7 @@ inline ContactForce hertzHistoryContact(const ContactParams& p, double dt, doubl
   fs2 = capped ? (rescale ? fs2 * ratio : 0.0) : fs2;
 
   return {touching ? dx * ccel + fs1 : 0.0, touching ? dy * ccel + fs2 : 0.0,
-          touching ? rinv * (dx * fs2 - dy * fs1) : 0.0, radsum - r,
-          touching ? sx : 0.0, touching ? sy : 0.0};
+          touching ? rinv * (dx * fs2 - dy * fs1) : 0.0, touching ? sx : 0.0, touching ? sy : 0.0};
 }
 
 }  // namespace wiggle

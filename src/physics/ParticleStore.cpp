@@ -57,10 +57,4 @@ void ParticleStore::permute(const std::vector<std::uint32_t>& order) {
   applyOrder(tag, order);
 }
 
-void ParticleStore::reserve(std::size_t n) {
-  for (auto* v : {&x, &y, &vx, &vy, &omega, &fx, &fy, &torque, &radius, &invMass, &invInertia, &mass})
-    v->reserve(n);
-  tag.reserve(n);
-}
-
 }  // namespace wiggle

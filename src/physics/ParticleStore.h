@@ -39,7 +39,6 @@ struct ParticleStore {
               double pmass, double pinvMass, double pinvInertia, std::uint32_t ptag);
   // Reorders all arrays: new index k holds old particle order[k] (order is a permutation).
   void permute(const std::vector<std::uint32_t>& order);
-  void reserve(std::size_t n);
 };
 
 }  // namespace wiggle

@@ -573,14 +573,6 @@ double World::kineticEnergy() const {
   return energy;
 }
 
-double World::maxGrainSpeed() const {
-  const ParticleStore& s = store_;
-  double maxSq = 0.0;
-  for (std::uint32_t i = 0; i < s.grainCount; ++i)
-    maxSq = std::max(maxSq, s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i]);
-  return std::sqrt(maxSq);
-}
-
 std::string World::stateHash() const {
   Hasher h;
   const ParticleStore& s = store_;

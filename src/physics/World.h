@@ -78,7 +78,6 @@ class World {
   const NeighbourList& neighbours() const { return list_; }
   const IntruderPairs& intruderPairs() const { return intruderPairs_; }
   double kineticEnergy() const;   // translational + rotational, grains only
-  double maxGrainSpeed() const;
   std::string stateHash() const;  // hash of the bits of the whole dynamic state
 
   // --- persistence: the full state, so that a loaded world continues bit for bit ---
