@@ -163,8 +163,10 @@ class SweepDataTest(DataDirs):
         self.assertTrue(math.isnan(t) and lo == 8 and note == "never rises")
         t, lo, hi, note = prepare.t_rising([1, 2], [0.01, 0.02])
         self.assertTrue(math.isnan(t) and hi == 1)
-        # The first crossing counts, not a later one after a dip.
-        self.assertAlmostEqual(prepare.t_rising([1, 2, 3, 4], [-1, 1, -1, 3])[0], 1.5)
+        # The last crossing counts: V_y > 0 at a small T followed by sinking is a transient, not rising.
+        t, lo, hi, note = prepare.t_rising([1, 2, 3, 4], [-1, 1, -1, 3])
+        self.assertAlmostEqual(t, 3.25)
+        self.assertEqual((lo, hi, note), (3.0, 4.0, "V_y > 0 also at T = 2"))
 
     def test_table1(self):
         sweep = sweepplots.Sweep(self.sweep_dir, quiet_report())

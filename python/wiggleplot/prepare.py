@@ -266,10 +266,12 @@ def series(records, x_key):
 
 
 def t_rising(periods, vy):
-    """The observed T_rising of Table 1: the smallest period at which the (seed-averaged) V_y turns
-    from <= 0 to > 0, interpolated linearly between the two bracketing periods.
-    Returns (T_rising, T_below, T_above, note); T_rising is NaN with a note when V_y is already
-    positive at the smallest period or never turns positive."""
+    """The observed T_rising of Table 1: the period above which the (seed-averaged) V_y stays > 0,
+    interpolated linearly between the last period with V_y <= 0 and the next one. The last crossing,
+    not the first: at small T the intruder can gain height in a transient (V_y slightly > 0) and
+    still sink at the periods above, and the paper's T_rising is where rising sets in for good.
+    Returns (T_rising, T_below, T_above, note); T_rising is NaN with a note when V_y is positive at
+    every period or never turns positive; the note also names positive periods below the crossing."""
     periods = np.asarray(periods, dtype=float)
     vy = np.asarray(vy, dtype=float)
     ok = np.isfinite(periods) & np.isfinite(vy)
@@ -277,10 +279,13 @@ def t_rising(periods, vy):
     T, v = periods[ok][order], vy[ok][order]
     if len(T) == 0:
         return math.nan, math.nan, math.nan, "no data"
-    if v[0] > 0:
+    not_rising = np.nonzero(v <= 0)[0]
+    if len(not_rising) == 0:
         return math.nan, math.nan, float(T[0]), f"rises already at the smallest T = {T[0]:g}"
-    for i in range(1, len(T)):
-        if v[i] > 0 and v[i - 1] <= 0:
-            t_star = T[i - 1] + (0.0 - v[i - 1]) * (T[i] - T[i - 1]) / (v[i] - v[i - 1])
-            return float(t_star), float(T[i - 1]), float(T[i]), ""
-    return math.nan, float(T[-1]), math.nan, "never rises"
+    i = int(not_rising[-1])
+    if i == len(T) - 1:
+        return math.nan, float(T[-1]), math.nan, "never rises"
+    t_star = T[i] + (0.0 - v[i]) * (T[i + 1] - T[i]) / (v[i + 1] - v[i])
+    early = [f"{t:g}" for t in T[:i][v[:i] > 0]]
+    note = f"V_y > 0 also at T = {', '.join(early)}" if early else ""
+    return float(t_star), float(T[i]), float(T[i + 1]), note

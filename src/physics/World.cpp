@@ -18,6 +18,12 @@ namespace {
 
 constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 
+// The force loop raises an alarm (and so a full health check, which applies maxOverlapFraction) when
+// an overlap exceeds this multiple of the health check's limit. Looser than the limit itself: a
+// grain squeezed by the kinematically driven intruder may pass 10 % of its diameter for a moment,
+// which the sampled check tolerates; a step too large for the contacts runs far past 25 % at once.
+constexpr double kOverlapAlarmFactor = 2.5;
+
 std::string fmt(double v) {
   std::ostringstream s;
   s.precision(6);
@@ -34,12 +40,17 @@ void requireFinite(double v, const char* what) {
 // (ContactLaw.h) over the block. The kernel is a chain of dependent sqrt and divisions, and only
 // SIMD lanes hide that latency; gathering by hand vectorises whatever the compiler thinks of
 // gather instructions.
-void computePairForces(std::uint32_t begin, std::uint32_t end, const ParticleStore& s, NeighbourList& list,
-                       const ContactParams params, const double dt, const double width, const bool updateShear) {
+// Returns the largest (radsum - allowed)^2 - r^2 over the block's pairs, where allowed is
+// `alarmFraction` of the smaller diameter: positive when some pair overlaps more than that, which is
+// how a blow-up shows between two health checks. Squared, so that it costs no sqrt.
+double computePairForces(std::uint32_t begin, std::uint32_t end, const ParticleStore& s, NeighbourList& list,
+                         const ContactParams params, const double dt, const double width, const bool updateShear,
+                         const double alarmFraction) {
   constexpr std::uint32_t kBlock = 64;
   const double halfWidth = 0.5 * width;
   alignas(64) double dx[kBlock], dy[kBlock], dvx[kBlock], dvy[kBlock], radI[kBlock], radJ[kBlock],
       omegaI[kBlock], omegaJ[kBlock], meff[kBlock];
+  double worstExcess = -std::numeric_limits<double>::infinity();
   for (std::uint32_t first = begin; first < end; first += kBlock) {
     const std::uint32_t n = std::min(kBlock, end - first);
     for (std::uint32_t m = 0; m < n; ++m) {
@@ -63,7 +74,8 @@ void computePairForces(std::uint32_t begin, std::uint32_t end, const ParticleSto
       double* __restrict forceX = list.forceX.data() + first;
       double* __restrict forceY = list.forceY.data() + first;
       double* __restrict torqueArm = list.torqueArm.data() + first;
-#pragma omp simd
+      double excess = worstExcess;
+#pragma omp simd reduction(max : excess)
       for (std::uint32_t m = 0; m < n; ++m) {
         const ContactForce c = hertzHistoryContact(params, dt, dx[m], dy[m], dvx[m], dvy[m], radI[m], radJ[m],
                                                    omegaI[m], omegaJ[m], meff[m], shearX[m], shearY[m],
@@ -73,11 +85,16 @@ void computePairForces(std::uint32_t begin, std::uint32_t end, const ParticleSto
         forceX[m] = c.fx;
         forceY[m] = c.fy;
         torqueArm[m] = c.torqueArm;
+        const double closest =
+            std::max(0.0, radI[m] + radJ[m] - alarmFraction * 2.0 * std::min(radI[m], radJ[m]));
+        excess = std::max(excess, closest * closest - (dx[m] * dx[m] + dy[m] * dy[m]));
       }
+      worstExcess = excess;
     };
     if (updateShear) kernel(std::true_type{});
     else kernel(std::false_type{});
   }
+  return worstExcess;
 }
 
 }  // namespace
@@ -229,7 +246,9 @@ void World::step() {
   else if (hasIntruder_ && intruderPairsStale()) rebuildIntruderPairs({});
   computeForces(true);
   finalIntegrate();
-  if (step_ % def_.healthInterval == 0) checkHealth();
+  // The full check is a scan of every particle: every healthInterval steps, and at once when the
+  // force loop saw an overlap far beyond the limit (a blow-up can open and close between two scans).
+  if (overlapAlarm_ || step_ % def_.healthInterval == 0) checkHealth();
 }
 
 void World::prepare() {
@@ -413,14 +432,17 @@ void World::computeForces(bool updateShear) {
   const double width = def_.boxWidth, halfWidth = 0.5 * width;
 
   // 1. Every pair once: force, torque arm and updated history into the pair's own slot.
+  //    The largest overlap excess is a max, so it does not depend on the thread count either.
   const std::uint32_t pairs = list.pairCount();
-#pragma omp parallel
+  const double alarmFraction = kOverlapAlarmFactor * def_.maxOverlapFraction;
+  double worstExcess = -std::numeric_limits<double>::infinity();
+#pragma omp parallel reduction(max : worstExcess)
   {
     const auto threads = static_cast<std::uint32_t>(omp_get_num_threads());
     const auto t = static_cast<std::uint32_t>(omp_get_thread_num());
     const std::uint32_t chunk = (pairs + threads - 1) / threads;
     const std::uint32_t begin = std::min(pairs, t * chunk), end = std::min(pairs, begin + chunk);
-    computePairForces(begin, end, s, list, params, dt, width, updateShear);
+    worstExcess = computePairForces(begin, end, s, list, params, dt, width, updateShear, alarmFraction);
   }
 
   // 2. Every grain sums its own pairs in list order (own row, then as partner), then gravity.
@@ -446,7 +468,9 @@ void World::computeForces(bool updateShear) {
   }
 
   // 3. Intruder contacts, serially in list order (a few hundred pairs): force on the grain, the
-  //    opposite on the clump, whose mass enters meff (as LAMMPS does for rigid bodies).
+  //    opposite on the clump, whose mass enters meff (as LAMMPS does for rigid bodies). The allowed
+  //    overlap is relative to the grain (see checkHealth).
+  overlapAlarm_ = worstExcess > 0.0;
   if (!hasIntruder_) return;
   IntruderPairs& ip = intruderPairs_;
   ClumpState& clump = clumpState_;
@@ -467,6 +491,8 @@ void World::computeForces(bool updateShear) {
     ip.shearY[p] = c.shearY;
     ip.forceX[p] = c.fx;
     ip.forceY[p] = c.fy;
+    const double closest = std::max(0.0, s.radius[g] + clump_.atomRadius - alarmFraction * 2.0 * s.radius[g]);
+    overlapAlarm_ = overlapAlarm_ || closest * closest - (dx * dx + dy * dy) > 0.0;
     if (g < n) {
       s.fx[g] += c.fx;
       s.fy[g] += c.fy;

@@ -28,7 +28,7 @@ struct WorldDef {
   double skin = 0.2;          // Verlet skin of the grain list [d]
   double intruderSkin = 1.0;  // skin of the intruder-grain list [d]; larger, as the intruder is fast
   std::uint64_t sortInterval = 2000;   // steps between spatial re-sorts of the grains (at a rebuild)
-  std::uint64_t healthInterval = 100;  // steps between blow-up checks
+  std::uint64_t healthInterval = 100;  // steps between full blow-up checks (overlaps are checked every step)
   double maxOverlapFraction = 0.1;     // blow-up: overlap above this fraction of the grain's diameter (the smaller grain's)
   double referenceImpactSpeed = 1.0;   // for the time-step check [sqrt(g d)]
   double minStepsPerContact = 5.0;     // refuse dt above (Hertz contact time) / this
@@ -111,7 +111,8 @@ class World {
   std::uint64_t lastSortStep_ = 0;
   std::uint32_t nextTag_ = 0;
   bool prepared_ = false;
-  bool listsStale_ = true;     // structure changed since the last build: rebuild before the next forces
+  bool listsStale_ = true;
+  bool overlapAlarm_ = false;  // the last force evaluation saw an overlap beyond maxOverlapFraction     // structure changed since the last build: rebuild before the next forces
   // Neighbour-list validity: positions at the last build, the largest squared displacement since.
   std::vector<double> xAtBuild_, yAtBuild_;
   double maxDisplacementSq_ = 0.0;
