@@ -1,0 +1,69 @@
+#!/usr/bin/python3
+"""y(t) of several runs of the same case in one figure, with the rise rate of each.
+
+    tools/validation/compare_trajectories.py --out FIG.png [--title T] LABEL=DIR [LABEL=DIR ...]
+
+DIR is a `wiggle run` directory or a directory where an exported LAMMPS deck ran (`wiggle
+export-lammps`: the deck writes the same trajectory.csv columns). Prints, per run, V_y by the
+paper's chord rule over [t_i, t_f] = [0.1 t_end, t_end], the least-squares slope over the same
+window and the final height. The chord here has no plateau rule (summary.json's vy has one): use it
+only for runs whose intruder did not reach the free surface, and compare with summary.json when
+there is one (printed beside it).
+"""
+import argparse
+import json
+import os
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+
+import numpy as np  # noqa: E402
+
+from wiggleplot import readers, style  # noqa: E402
+
+
+def rates(traj):
+    t = np.asarray(traj["t"], dtype=float)
+    y = np.asarray(traj["y"], dtype=float)
+    window = t >= 0.1 * t[-1] - 1e-9
+    first = int(np.argmax(window))
+    chord = (y[-1] - y[first]) / (t[-1] - t[first])
+    slope = np.polyfit(t[window], y[window], 1)[0]
+    return chord, slope, y[-1]
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("runs", nargs="+", metavar="LABEL=DIR")
+    parser.add_argument("--out", required=True)
+    parser.add_argument("--title", default="")
+    args = parser.parse_args()
+    style.apply()
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(7, 4))
+    print(f"{'run':24} {'V_y chord':>10} {'LSQ slope':>10} {'y_end':>8} {'summary vy':>11}")
+    for spec in args.runs:
+        label, sep, path = spec.partition("=")
+        if not sep:
+            sys.exit(f"compare_trajectories: '{spec}' is not LABEL=DIR")
+        traj = readers.read_trajectory(path)
+        chord, slope, y_end = rates(traj)
+        summary_path = os.path.join(path, "summary.json")
+        summary_vy = json.load(open(summary_path)).get("vy") if os.path.exists(summary_path) else None
+        shown = f"{summary_vy:+.4f}" if summary_vy is not None else "-"
+        print(f"{label:24} {chord:+10.4f} {slope:+10.4f} {y_end:8.2f} {shown:>11}")
+        ax.plot(traj["t"], np.asarray(traj["y"]) - traj["y"][0], lw=0.8, label=f"{label}: V_y = {chord:+.3f}")
+    ax.axhline(0.0, color="0.6", lw=0.5)
+    ax.set_xlabel("t [sqrt(d/g)]")
+    ax.set_ylabel("y - y(0) [d]")
+    ax.set_title(args.title)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    tmp = args.out + ".tmp.png"
+    fig.savefig(tmp, dpi=120)
+    os.replace(tmp, args.out)
+
+
+if __name__ == "__main__":
+    main()
