@@ -223,6 +223,7 @@ CachedBed obtainBed(const RunConfig& config, const ClumpDef& clump, const BedPro
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   try {
+    if (ec) throw Error("cannot create " + dir + ": " + ec.message());
     writeStateFile(path, "bed", out.bytes());
   } catch (const Error& e) {
     note += (note.empty() ? "" : "; ") + std::string("bed not cached: ") + e.what();

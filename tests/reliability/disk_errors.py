@@ -147,13 +147,13 @@ def full_disk(w, cfg, work, ref):
         expect_one_line_error(f"full disk ({size} B tmpfs), second run", rc, err, "No space left on device")
         check(snapshot(os.path.join(small, "first")) == first, "full disk: the first run's files changed")
         check(not temporaries(small), f"full disk: temporary files left: {temporaries(small)}")
-        with open(os.path.join(small, "filler"), "wb") as f:  # now fill it up to the last byte
-            try:
+        try:  # now fill it up to the last byte
+            with open(os.path.join(small, "filler"), "wb") as f:
                 while True:
                     f.write(b"\0" * 4096)
                     f.flush()
-            except OSError:
-                pass
+        except OSError:
+            pass
         sweep = tiny_sweep(work)
         rc, err = w.run(["sweep", sweep, "--out", os.path.join(small, "sweep"), "--local"])
         expect_one_line_error("full disk, sweep", rc, err, "No space left on device")
