@@ -4,7 +4,8 @@
 # TARGET: run_config | sweep_file | checkpoint | bed_cache | all (each for SECONDS).
 # Builds the "fuzz" preset (clang-14, ASan + UBSan) into build/fuzz, seeds each target from the
 # shipped configs, the bad-input corpora and small state files made by a tiny run, and fuzzes with
-# a 2 GB memory limit and 10 s per input. The growing corpus stays in build/fuzz/corpus/TARGET;
+# a 2 GB memory limit and 60 s per input (wall clock: generous, as a loaded
+# machine can slow a nice-d fuzzer 30-fold). The growing corpus stays in build/fuzz/corpus/TARGET;
 # findings are written to build/fuzz/findings/. Prints executions and findings per target; exits
 # non-zero when a target found a crash, a hang or an allocation past the limit.
 # Environment: WIGGLE_JOBS (build parallelism, default: nproc); WIGGLE_SEED_BINARY (a wiggle binary
@@ -57,7 +58,7 @@ for t in "${targets[@]}"; do
   esac
   log=$B/findings/$t.log
   set +e
-  "$B/$(binary_of "$t")" -max_total_time="$seconds" -rss_limit_mb=2048 -malloc_limit_mb=2048 -timeout=10 \
+  "$B/$(binary_of "$t")" -max_total_time="$seconds" -rss_limit_mb=2048 -malloc_limit_mb=2048 -timeout=60 \
     -print_final_stats=1 -artifact_prefix="$root/$B/findings/$t-" "$@" "$corpus" "$seed" > "$log" 2>&1
   rc=$?
   set -e

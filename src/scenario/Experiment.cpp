@@ -250,6 +250,7 @@ RunOutcome runExperiment(const RunConfig& config, const RunOptions& options) {
     if (!sameRunConfig(previous, config))
       throw Error("--resume: the config differs from the one in " + dir + "/config.toml (run without a CONFIG to reuse it)");
   }
+  if (options.resume) removeLeftoverTemporaries(dir);  // of a run killed while writing a file
   writeFileAtomically(dir + "/config.toml", configToml);
   RunLog log(dir + "/log.txt");
   log.line(std::string("wiggle ") + WIGGLE_VERSION + (options.resume ? " run --resume" : " run") + " in " + dir +

@@ -615,7 +615,12 @@ SweepOutcome runSweep(const std::string& sweepFile, const SweepOptions& options)
     if (ec) throw Error("cannot create sweep directory " + outDir + ": " + ec.message());
   }
   std::optional<DirectoryLock> lock;
-  if (!options.dryRun) lock.emplace(outDir);
+  if (!options.dryRun) {
+    lock.emplace(outDir);
+    // Only this coordinator writes here (the lock says so): files a killed one was writing go.
+    removeLeftoverTemporaries(outDir);
+    removeLeftoverTemporaries(outDir + "/beds");
+  }
   SweepPlan plan = makeSweepPlan(std::move(spec), outDir);
 
   if (!mpi) {

@@ -249,6 +249,7 @@ def run_trials(h, run_kills, duration):
     p = h.start(["run", "--out", out, "--resume", "--threads", "1"], cache)
     check(p.wait() == 0, "the final resume failed (see processes.log)")
     same = compare_run_dirs(ref, out, "run")
+    same &= check(not [n for n in os.listdir(out) if ".tmp." in n], "the resumed run left temporary files")
     beds, _ = cache_beds(cache)
     for b in beds:
         same &= check(read(os.path.join(cache, b)) == read(os.path.join(ref_cache, b)),
@@ -384,6 +385,8 @@ def sweep_trials(h, duration):
         same &= check(all(a[name][k] == b[name][k] for k in ("status", "vy", "vy_slope", "state_hash", "steps")),
                       f"sweep: case {name} differs: {a[name]['state_hash']} vs {b[name]['state_hash']}")
         same &= compare_run_dirs(os.path.join(ref, "cases", name), os.path.join(out, "cases", name), f"sweep {name}")
+    left = [os.path.join(b, n) for b, _, names in os.walk(out) for n in names if ".tmp." in n]
+    same &= check(not left, f"the sweep left temporary files: {left}")
     log(f"sweep: {kills} kills survived; results {'identical' if same else 'DIFFERENT'}")
     return kills
 
