@@ -32,7 +32,10 @@ seeder=${WIGGLE_SEED_BINARY:-}
 names=()
 [ -n "$seeder" ] || { names+=(wiggle); seeder=$B/wiggle; }
 for t in "${targets[@]}"; do names+=("$(binary_of "$t")"); done
-for n in "${names[@]}"; do cmake --build --preset fuzz -j "${WIGGLE_JOBS:-$(nproc)}" --target "$n" > /dev/null; done
+mkdir -p "$B"
+for n in "${names[@]}"; do
+  cmake --build --preset fuzz -j "${WIGGLE_JOBS:-$(nproc)}" --target "$n" > "$B/build.log" 2>&1 || { cat "$B/build.log" >&2; exit 1; }
+done
 
 # Seed state files: a checkpoint and a cached bed of a tiny run (made once).
 seeds=$B/seeds
