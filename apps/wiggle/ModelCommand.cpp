@@ -5,8 +5,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
-#include <fstream>
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -16,6 +14,7 @@
 
 #include "Commands.h"
 #include "core/Error.h"
+#include "io/AtomicFile.h"
 #include "model/CavityModel.h"
 #include "scenario/Shape.h"
 
@@ -210,19 +209,7 @@ void writeGeometryJson(const Shape& shape, const std::string& path) {
   j["T_rise_left"] = g.left.tRise;
   j["T_rise_right"] = g.right.tRise;
   j["T_max"] = g.tMax;
-  // Written next to the target and renamed, so a reader never sees half a file.
-  const std::filesystem::path target(path);
-  std::filesystem::path tmp = target;
-  tmp += ".tmp";
-  {
-    std::ofstream out(tmp);
-    if (!out) throw Error("--geometry: cannot write '" + tmp.string() + "'");
-    out << j.dump() << "\n";
-    if (!out) throw Error("--geometry: error while writing '" + tmp.string() + "'");
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, target, ec);
-  if (ec) throw Error("--geometry: cannot rename to '" + path + "': " + ec.message());
+  writeFileAtomically(path, j.dump() + "\n");
 }
 
 void runModel(const ModelOptions& opt) {

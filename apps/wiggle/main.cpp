@@ -1,4 +1,5 @@
 // The `wiggle` command: parses the command line and hands each subcommand to its own file.
+#include <csignal>
 #include <cstdio>
 #include <exception>
 
@@ -6,6 +7,10 @@
 #include "core/Error.h"
 
 int main(int argc, char** argv) {
+  // Over a file-size limit (ulimit -f) write() then fails with EFBIG and is reported in one line
+  // like a full disk, instead of SIGXFSZ killing the process without a word. Inherited by the
+  // sweep's children across exec.
+  std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{"wiggle: a horizontally wiggling intruder in a 2D bed of frictional grains"};
   app.set_version_flag("--version", std::string("wiggle ") + WIGGLE_VERSION);
   app.require_subcommand(1);

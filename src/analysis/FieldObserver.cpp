@@ -3,14 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <limits>
 #include <numbers>
 
 #include <omp.h>
 
 #include "core/Error.h"
+#include "io/AtomicFile.h"
 #include "physics/World.h"
 
 namespace wiggle {
@@ -386,39 +385,30 @@ FieldSample FieldObserver::sample(std::size_t phaseIndex, std::size_t ix, std::s
 }
 
 void FieldObserver::writeCsv(const std::string& path) const {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw Error("cannot write field file " + tmp);
-    out << "phase,x,y,phi,vx,vy,sxx,sxy,syy,pressure,frames\n";
-    char line[512];
-    for (std::size_t p = 0; p < def_.phases.size(); ++p) {
-      const std::uint64_t count = frames_[p];
-      for (std::size_t iy = 0; iy < n_; ++iy)
-        for (std::size_t ix = 0; ix < n_; ++ix) {
-          const double x = gridCoordinate(ix), y = gridCoordinate(iy);
-          if (count == 0) {
-            std::snprintf(line, sizeof line, "%.10g,%.10g,%.10g,,,,,,,,0\n", def_.phases[p], x, y);
-          } else {
-            const FieldSample f = sample(p, ix, iy);
-            char vx[40] = "", vy[40] = "";
-            if (!std::isnan(f.vx)) {
-              std::snprintf(vx, sizeof vx, "%.10g", f.vx);
-              std::snprintf(vy, sizeof vy, "%.10g", f.vy);
-            }
-            std::snprintf(line, sizeof line, "%.10g,%.10g,%.10g,%.10g,%s,%s,%.10g,%.10g,%.10g,%.10g,%llu\n",
-                          def_.phases[p], x, y, f.phi, vx, vy, f.sxx, 0.5 * (f.sxy + f.syx), f.syy,
-                          f.pressure, static_cast<unsigned long long>(count));
+  std::string out = "phase,x,y,phi,vx,vy,sxx,sxy,syy,pressure,frames\n";
+  char line[512];
+  for (std::size_t p = 0; p < def_.phases.size(); ++p) {
+    const std::uint64_t count = frames_[p];
+    for (std::size_t iy = 0; iy < n_; ++iy)
+      for (std::size_t ix = 0; ix < n_; ++ix) {
+        const double x = gridCoordinate(ix), y = gridCoordinate(iy);
+        if (count == 0) {
+          std::snprintf(line, sizeof line, "%.10g,%.10g,%.10g,,,,,,,,0\n", def_.phases[p], x, y);
+        } else {
+          const FieldSample f = sample(p, ix, iy);
+          char vx[40] = "", vy[40] = "";
+          if (!std::isnan(f.vx)) {
+            std::snprintf(vx, sizeof vx, "%.10g", f.vx);
+            std::snprintf(vy, sizeof vy, "%.10g", f.vy);
           }
-          out << line;
+          std::snprintf(line, sizeof line, "%.10g,%.10g,%.10g,%.10g,%s,%s,%.10g,%.10g,%.10g,%.10g,%llu\n",
+                        def_.phases[p], x, y, f.phi, vx, vy, f.sxx, 0.5 * (f.sxy + f.syx), f.syy,
+                        f.pressure, static_cast<unsigned long long>(count));
         }
-    }
-    out.flush();
-    if (!out) throw Error("error while writing field file " + tmp);
+        out += line;
+      }
   }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) throw Error("cannot rename " + tmp + " to " + path + ": " + ec.message());
+  writeFileAtomically(path, out);
 }
 
 void FieldObserver::save(BinaryWriter& out) const {

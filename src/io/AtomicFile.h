@@ -8,6 +8,11 @@
 namespace wiggle {
 
 void writeFileAtomically(const std::string& path, const std::string& content);
+// Removes what writeFileAtomically leaves behind when its process is killed mid-write (the
+// temporary NAME.tmp.PID files) from `dir`, not recursively. Only for a directory that no other
+// process is writing to (a run directory being resumed), never for a shared one like the bed cache.
+void removeLeftoverTemporaries(const std::string& dir);
+
 // Whole file as bytes; throws wiggle::Error naming the file when it cannot be read.
 std::string readFile(const std::string& path);
 

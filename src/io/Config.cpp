@@ -731,6 +731,27 @@ void validateRunConfig(const RunConfig& c) {
                 ": must be a whole number of run.dt steps (" + num(c.run.sampleInterval) + " / " +
                 num(c.run.dt) + " = " + num(steps) + ")");
   }
+  // Absurd sizes are refused here, before anything is allocated or run: the step counter, the
+  // trajectory kept in memory and the field sums (one grid of 7 doubles per phase) stay bounded.
+  constexpr double kMaxSteps = 1e12, kMaxSamples = 1e8, kMaxFieldBytes = 4e9;
+  if (c.run.duration / c.run.dt > kMaxSteps) {
+    throw Error("run.duration = " + num(c.run.duration) + ": " + num(c.run.duration / c.run.dt) +
+                " time steps of run.dt = " + num(c.run.dt) + ", more than the 1e12 wiggle accepts");
+  }
+  if (c.run.duration / c.run.sampleInterval > kMaxSamples) {
+    throw Error("run.sample_interval = " + num(c.run.sampleInterval) + ": " +
+                num(c.run.duration / c.run.sampleInterval) +
+                " trajectory samples over run.duration, more than the 1e8 wiggle keeps");
+  }
+  if (c.fields.enabled) {
+    const double side = std::floor(2.0 * c.fields.radius / c.fields.spacing + 1e-9) + 1.0;
+    const double bytes = 7.0 * 8.0 * side * side * static_cast<double>(c.fields.phases.size());
+    if (bytes > kMaxFieldBytes) {
+      throw Error("fields: " + std::to_string(c.fields.phases.size()) + " fields.phases on a grid of " + num(side) +
+                  " x " + num(side) + " points (fields.radius / fields.spacing) need " + num(bytes / 1e9) +
+                  " GB, more than the 4 GB wiggle accepts");
+    }
+  }
   if (c.run.dumpInterval > 0 && !wholeSteps(c.run.dumpInterval, c.run.dt, steps)) {
     throw Error("run.dump_interval = " + num(c.run.dumpInterval) +
                 ": must be 0 or a whole number of run.dt steps (" + num(c.run.dumpInterval) + " / " +

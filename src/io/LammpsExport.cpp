@@ -194,8 +194,7 @@ World withoutContactHistory(const World& world) {
 }
 
 LammpsExportResult exportLammps(const RunConfig& config, const std::string& dir, bool progressLine) {
-  const ClumpDef clump = makeClump(config.intruder, config.grains.massModel, 1.0);
-  checkGeometry(config, clump);
+  const ClumpDef clump = checkedClump(config);
   const bool terminal = progressLine && ::isatty(STDERR_FILENO);
   CachedBed bed = obtainBed(config, clump, [&](const BedStatus& st) {
     if (!terminal) return;

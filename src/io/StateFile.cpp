@@ -35,7 +35,10 @@ void writeStateFile(const std::string& path, const std::string& kind, const std:
 }
 
 std::string readStateFile(const std::string& path, const std::string& kind) {
-  const std::string file = readFile(path);
+  return parseStateFile(readFile(path), path, kind);
+}
+
+std::string parseStateFile(const std::string& file, const std::string& path, const std::string& kind) {
   if (file.size() < sizeof kMagic || std::memcmp(file.data(), kMagic, sizeof kMagic) != 0)
     throw Error(path + ": not a wiggle state file");
   if (file.size() < kHeaderSize + sizeof(std::uint64_t)) throw Error(path + " is truncated");

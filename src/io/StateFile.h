@@ -16,5 +16,7 @@ void writeStateFile(const std::string& path, const std::string& kind, const std:
 // The payload; throws wiggle::Error ("<path>: not a wiggle <kind> file", "... is truncated",
 // "... fails its checksum", "... was written by format version N, this wiggle reads M").
 std::string readStateFile(const std::string& path, const std::string& kind);
+// The same checks on a file's bytes already in memory; `name` starts every error message.
+std::string parseStateFile(const std::string& file, const std::string& name, const std::string& kind);
 
 }  // namespace wiggle

@@ -7,6 +7,7 @@
 
 #include "core/Hash.h"
 #include "core/Rng.h"
+#include "io/AtomicFile.h"
 #include "io/StateFile.h"
 
 namespace wiggle {
@@ -194,6 +195,15 @@ std::string bedCachePath(const RunConfig& config, const std::string& key) {
   return bedCacheDir(config) + "/bed-" + key + ".bin";
 }
 
+World parseCachedBed(const std::string& file, const std::string& name, const std::string& key) {
+  const std::string payload = parseStateFile(file, name, "bed");
+  BinaryReader in(payload.data(), payload.size(), name);
+  if (in.string() != key) throw Error(name + " holds a bed for other parameters");
+  World world = World::load(in);
+  if (!in.atEnd()) throw Error(name + " has trailing data");
+  return world;
+}
+
 CachedBed obtainBed(const RunConfig& config, const ClumpDef& clump, const BedProgress& progress) {
   const std::string key = bedKey(config, clump);
   const std::string dir = bedCacheDir(config);
@@ -201,12 +211,7 @@ CachedBed obtainBed(const RunConfig& config, const ClumpDef& clump, const BedPro
   std::string note;
   if (std::filesystem::exists(path)) {
     try {
-      const std::string payload = readStateFile(path, "bed");
-      BinaryReader in(payload.data(), payload.size(), path);
-      if (in.string() != key) throw Error(path + " holds a bed for other parameters");
-      World world = World::load(in);
-      if (!in.atEnd()) throw Error(path + " has trailing data");
-      return CachedBed{std::move(world), key, path, true, ""};
+      return CachedBed{parseCachedBed(readFile(path), path, key), key, path, true, ""};
     } catch (const Error& e) {
       note = std::string("cached bed refused and rebuilt: ") + e.what();
     }
@@ -218,6 +223,7 @@ CachedBed obtainBed(const RunConfig& config, const ClumpDef& clump, const BedPro
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   try {
+    if (ec) throw Error("cannot create " + dir + ": " + ec.message());
     writeStateFile(path, "bed", out.bytes());
   } catch (const Error& e) {
     note += (note.empty() ? "" : "; ") + std::string("bed not cached: ") + e.what();

@@ -50,6 +50,10 @@ std::string bedCacheDir(const RunConfig& config);
 // The cache file of the bed with this key.
 std::string bedCachePath(const RunConfig& config, const std::string& key);
 
+// The bed in a cache file's bytes (`name` starts every error message); throws wiggle::Error when
+// the file is truncated, corrupt, foreign or holds the bed of another key.
+World parseCachedBed(const std::string& file, const std::string& name, const std::string& key);
+
 // Loads the bed from the cache when a valid entry exists; otherwise makes it and stores it. A corrupt
 // or foreign entry is reported in `note` and rebuilt, never trusted.
 CachedBed obtainBed(const RunConfig& config, const ClumpDef& clump, const BedProgress& progress = {});

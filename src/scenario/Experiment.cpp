@@ -20,9 +20,9 @@
 #include "io/AtomicFile.h"
 #include "io/Config.h"
 #include "io/LammpsDump.h"
-#include "io/StateFile.h"
 #include "model/CavityModel.h"
 #include "scenario/BedMaker.h"
+#include "scenario/Checkpoint.h"
 #include "scenario/Shape.h"
 
 namespace wiggle {
@@ -30,8 +30,6 @@ namespace wiggle {
 namespace fs = std::filesystem;
 
 namespace {
-
-constexpr int kPhaseBins = 20;
 
 std::atomic<int> gSignal{0};
 extern "C" void onSignal(int sig) { gSignal = sig; }
@@ -97,57 +95,6 @@ class Progress {
   Clock::time_point start_ = Clock::now();
   double lastTerminal_ = -1.0, lastLog_ = 0.0;
 };
-
-// Everything the run loop accumulates besides the World: saved in checkpoints.
-struct RunState {
-  std::vector<TrajectorySample> samples;
-  std::vector<double> phaseSum = std::vector<double>(kPhaseBins, 0.0);
-  std::vector<std::uint64_t> phaseCount = std::vector<std::uint64_t>(kPhaseBins, 0);
-  std::uint64_t dumpBytes = 0;     // length of dumps/dump.lammpstrj at this state
-  double runWallSeconds = 0.0;     // stepping time so far (for ns per particle-step)
-  double bedWallSeconds = 0.0;
-  std::string bedKey;
-  bool bedFromCache = false;
-
-  void save(BinaryWriter& out) const {
-    out.array(samples);
-    out.array(phaseSum);
-    out.array(phaseCount);
-    out.value(dumpBytes);
-    out.value(runWallSeconds);
-    out.value(bedWallSeconds);
-    out.string(bedKey);
-    out.value(static_cast<std::uint8_t>(bedFromCache));
-  }
-  void load(BinaryReader& in) {
-    samples = in.array<TrajectorySample>();
-    phaseSum = in.array<double>();
-    phaseCount = in.array<std::uint64_t>();
-    if (phaseSum.size() != kPhaseBins || phaseCount.size() != kPhaseBins)
-      throw Error(in.what() + " is corrupt: phase bins");
-    dumpBytes = in.value<std::uint64_t>();
-    runWallSeconds = in.value<double>();
-    bedWallSeconds = in.value<double>();
-    bedKey = in.string();
-    bedFromCache = in.value<std::uint8_t>() != 0;
-  }
-};
-
-std::string checkpointPath(const std::string& dir) { return dir + "/checkpoint.bin"; }
-std::string previousCheckpointPath(const std::string& dir) { return dir + "/checkpoint.prev.bin"; }
-
-void writeCheckpoint(const std::string& dir, const std::string& configToml, const World& world,
-                     const RunState& state, const FieldObserver& fields) {
-  BinaryWriter out;
-  out.string(configToml);
-  world.save(out);
-  state.save(out);
-  fields.save(out);
-  // Keep the previous good checkpoint until the new one is safely in place.
-  std::error_code ec;
-  if (fs::exists(checkpointPath(dir))) fs::rename(checkpointPath(dir), previousCheckpointPath(dir), ec);
-  writeStateFile(checkpointPath(dir), "checkpoint", out.bytes());
-}
 
 std::string csvNumber(double v) {
   char text[32];
@@ -260,12 +207,24 @@ void checkGeometry(const RunConfig& config, const ClumpDef& clump) {
                 "): need at least two grain layers above it");
 }
 
+ClumpDef checkedClump(const RunConfig& config) {
+  const Shape shape = makeShape(config.intruder);
+  const OutlineBox box = boundingBox(shape.outline);
+  if (!(box.width() <= config.box.width && box.height() <= config.box.bedHeight))
+    throw Error(std::string(config.intruder.shape == "polygon" ? "intruder.vertices" : "intruder.shape") +
+                ": the outline is " + number(box.width()) + " x " + number(box.height()) +
+                ", larger than the bed (box.width = " + number(config.box.width) +
+                ", box.bed_height = " + number(config.box.bedHeight) + ")");
+  const ClumpDef clump = makeClump(config.intruder, config.grains.massModel, 1.0);
+  checkGeometry(config, clump);
+  return clump;
+}
+
 RunOutcome runExperiment(const RunConfig& config, const RunOptions& options) {
   if (options.threads > 0) omp_set_num_threads(options.threads);
   const std::string dir = options.outDir;
   const Shape shape = makeShape(config.intruder);
-  const ClumpDef clump = makeClump(config.intruder, config.grains.massModel, 1.0);
-  checkGeometry(config, clump);
+  const ClumpDef clump = checkedClump(config);
   const double dt = config.run.dt;
   const std::uint64_t totalSteps = stepsIn(config.run.duration, dt, "run.duration");
   const std::uint64_t sampleEvery = stepsIn(config.run.sampleInterval, dt, "run.sample_interval");
@@ -291,6 +250,7 @@ RunOutcome runExperiment(const RunConfig& config, const RunOptions& options) {
     if (!sameRunConfig(previous, config))
       throw Error("--resume: the config differs from the one in " + dir + "/config.toml (run without a CONFIG to reuse it)");
   }
+  if (options.resume) removeLeftoverTemporaries(dir);  // of a run killed while writing a file
   writeFileAtomically(dir + "/config.toml", configToml);
   RunLog log(dir + "/log.txt");
   log.line(std::string("wiggle ") + WIGGLE_VERSION + (options.resume ? " run --resume" : " run") + " in " + dir +
@@ -303,18 +263,10 @@ RunOutcome runExperiment(const RunConfig& config, const RunOptions& options) {
     for (const std::string& path : {checkpointPath(dir), previousCheckpointPath(dir)}) {
       if (!fs::exists(path)) continue;
       try {
-        const std::string payload = readStateFile(path, "checkpoint");
-        BinaryReader in(payload.data(), payload.size(), path);
-        if (in.string() != configToml) throw Error(path + " belongs to another config");
-        World world = World::load(in);
-        RunState candidate;
-        candidate.load(in);
-        FieldObserver candidateFields(config.fields, config.box.width);
-        candidateFields.load(in);
-        if (!in.atEnd()) throw Error(path + " has trailing data");
-        loaded.emplace(std::move(world));
-        state = std::move(candidate);
-        fields = std::move(candidateFields);
+        Checkpoint checkpoint = parseCheckpoint(readFile(path), path, config, configToml);
+        loaded.emplace(std::move(checkpoint.world));
+        state = std::move(checkpoint.state);
+        fields = std::move(checkpoint.fields);
         log.line("resumed from " + path + " at step " + std::to_string(loaded->stepCount()));
         break;
       } catch (const Error& e) {

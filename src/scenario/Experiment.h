@@ -34,6 +34,11 @@ struct RunOutcome {
 // Throws wiggle::Error naming the key.
 void checkGeometry(const RunConfig& config, const ClumpDef& clump);
 
+// Everything `wiggle run` checks on the intruder before it makes a bed: the outline (which must fit
+// in the bed before a single atom is placed, so a huge polygon cannot exhaust memory), the clump
+// of atoms, then checkGeometry. Returns the clump; throws wiggle::Error naming the key.
+ClumpDef checkedClump(const RunConfig& config);
+
 // Releases the bed's intruder: x(t) = W/2 + A sin(2 pi t / T), y free, t = 0 now.
 void startDrive(World& world, const RunConfig& config);
 

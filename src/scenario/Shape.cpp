@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <functional>
 #include <limits>
 #include <numbers>
+#include <unordered_map>
 
 #include "core/Error.h"
 
@@ -179,17 +181,40 @@ double minDistanceToAtoms(const std::vector<OutlinePoint>& a, const std::vector<
   return std::sqrt(best2);
 }
 
-// Is p within `radius` of any atom? (Early exit: the coverage loops mostly answer yes.)
-bool anyAtomWithin(const std::vector<OutlinePoint>& a, const std::vector<OutlinePoint>& b,
-                   OutlinePoint p, double radius) {
-  const double r2 = radius * radius;
-  for (const auto* list : {&a, &b})
-    for (const OutlinePoint& c : *list) {
-      const double dx = p[0] - c[0], dy = p[1] - c[1];
-      if (dx * dx + dy * dy <= r2) return true;
-    }
-  return false;
-}
+// Atom centres binned in square cells, for "is any atom within `radius` of p?" on the fine grids
+// of placeAtoms and measureClump. A linear scan there made the cost grow as (size)^3.4 (2.4 s for
+// a 40 d square, minutes under the sanitizers: found by fuzzing); with cells no smaller than the
+// radius, a query looks at the 3 x 3 cells around p. The answer is the linear scan's, bit for bit
+// (same comparison on the same numbers), so the atoms placed do not change.
+class AtomCells {
+ public:
+  AtomCells(double cellSize, const std::vector<OutlinePoint>& atoms) : size_(cellSize) {
+    for (const OutlinePoint& c : atoms) add(c);
+  }
+  void add(OutlinePoint c) { cells_[key(cell(c[0]), cell(c[1]))].push_back(c); }
+  bool anyWithin(OutlinePoint p, double radius) const {
+    const double r2 = radius * radius;
+    const std::int64_t cx = cell(p[0]), cy = cell(p[1]);
+    for (std::int64_t j = cy - 1; j <= cy + 1; ++j)
+      for (std::int64_t i = cx - 1; i <= cx + 1; ++i) {
+        const auto it = cells_.find(key(i, j));
+        if (it == cells_.end()) continue;
+        for (const OutlinePoint& c : it->second) {
+          const double dx = p[0] - c[0], dy = p[1] - c[1];
+          if (dx * dx + dy * dy <= r2) return true;
+        }
+      }
+    return false;
+  }
+ private:
+  std::int64_t cell(double v) const { return static_cast<std::int64_t>(std::floor(v / size_)); }
+  // Unsigned (wrapping) mixing: far-apart cells that share a key only cost a few comparisons.
+  static std::uint64_t key(std::int64_t i, std::int64_t j) {
+    return static_cast<std::uint64_t>(i) * 0x9E3779B97F4A7C15ULL ^ static_cast<std::uint64_t>(j);
+  }
+  double size_;
+  std::unordered_map<std::uint64_t, std::vector<OutlinePoint>> cells_;
+};
 
 std::string fixed3(double value) {
   char buf[32];
@@ -286,13 +311,18 @@ ClumpAtoms placeAtoms(const Shape& shape, const ClumpOptions& o) {
     for (double x = a * std::ceil(box.xMin / a); x <= box.xMax; x += a)
       if (depth({x, y}) >= 2.0 * r + o.minGrainRadius - o.guardMargin)
         atoms.guard.push_back({x, y});
+  AtomCells cells(cover, atoms.surface);
+  for (const OutlinePoint& g : atoms.guard) cells.add(g);
   const double step = 0.05;
   for (double y = box.yMin + 0.5 * step; y < box.yMax; y += step)
     for (double x = box.xMin + 0.5 * step; x < box.xMax; x += step) {
       const double dp = depth({x, y});
       if (dp <= 0.0) continue;
-      if (anyAtomWithin(atoms.surface, atoms.guard, {x, y}, cover)) continue;
-      if (dp >= r) atoms.guard.push_back({x, y});
+      if (cells.anyWithin({x, y}, cover)) continue;
+      if (dp >= r) {
+        atoms.guard.push_back({x, y});
+        cells.add({x, y});
+      }
     }
   return atoms;
 }
@@ -378,10 +408,12 @@ ClumpQuality measureClump(const Shape& shape, const ClumpAtoms& atoms, const Clu
 
   // Interior coverage on a grid offset from the one placeAtoms used.
   const OutlineBox box = boundingBox(shape.outline);
+  AtomCells cells(rr, atoms.surface);
+  for (const OutlinePoint& g : atoms.guard) cells.add(g);
   const double step = 0.05;
   for (double y = box.yMin + 0.013; y < box.yMax; y += step)
     for (double x = box.xMin + 0.029; x < box.xMax; x += step) {
-      if (depth({x, y}) <= 0.0 || anyAtomWithin(atoms.surface, atoms.guard, {x, y}, rr)) continue;
+      if (depth({x, y}) <= 0.0 || cells.anyWithin({x, y}, rr)) continue;
       const double excess = minDistanceToAtoms(atoms.surface, atoms.guard, {x, y}) - rr;
       q.maxUncoveredInterior = std::max(q.maxUncoveredInterior, excess);
     }

@@ -57,8 +57,7 @@ SweepPlan makeSweepPlan(SweepSpec spec, const std::string& outDir) {
     try {
       // The same checks `wiggle run` makes before touching the bed, so a bad case fails here with
       // the message the run would give, without a process or a bed being spent on it.
-      const ClumpDef clump = makeClump(c.config.intruder, c.config.grains.massModel, 1.0);
-      checkGeometry(c.config, clump);
+      const ClumpDef clump = checkedClump(c.config);
       p.bedKey = bedKey(c.config, clump);
     } catch (const Error& e) {
       p.state = CaseState::Failed;

@@ -569,8 +569,7 @@ std::string dryRunListing(const SweepPlan& plan, int jobs, int threads) {
 void makeSweepBed(const std::string& configPath, int threads) {
   if (threads > 0) omp_set_num_threads(threads);
   const RunConfig config = parseRunConfig(readFile(configPath), configPath);
-  const ClumpDef clump = makeClump(config.intruder, config.grains.massModel, 1.0);
-  checkGeometry(config, clump);
+  const ClumpDef clump = checkedClump(config);
   const CachedBed bed = obtainBed(config, clump);
   if (!bed.note.empty()) std::fprintf(stderr, "wiggle: warning: %s\n", bed.note.c_str());
   std::printf("bed %s %s (%u grains)\n", bed.key.c_str(), bed.fromCache ? "was cached" : "made and cached",
@@ -616,7 +615,12 @@ SweepOutcome runSweep(const std::string& sweepFile, const SweepOptions& options)
     if (ec) throw Error("cannot create sweep directory " + outDir + ": " + ec.message());
   }
   std::optional<DirectoryLock> lock;
-  if (!options.dryRun) lock.emplace(outDir);
+  if (!options.dryRun) {
+    lock.emplace(outDir);
+    // Only this coordinator writes here (the lock says so): files a killed one was writing go.
+    removeLeftoverTemporaries(outDir);
+    removeLeftoverTemporaries(outDir + "/beds");
+  }
   SweepPlan plan = makeSweepPlan(std::move(spec), outDir);
 
   if (!mpi) {

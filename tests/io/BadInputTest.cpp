@@ -1,39 +1,38 @@
-// The corpus of bad inputs in tests/data/bad_inputs: each file's first line says which words its
-// one-line error must contain ("# expect: ..."); files without that line must be accepted.
-// Every file goes through what `wiggle run` does before it makes a bed: parse, validate, build the
-// intruder, check the geometry.
+// The corpora of bad inputs in tests/data/bad_inputs (run configs) and tests/data/bad_sweeps (sweep
+// files): each file's first line says which words its one-line error must contain
+// ("# expect: ..."); an empty file must be accepted (it is the default case). Every file goes
+// through what `wiggle run` / `wiggle sweep` do before a bed is made: parse, validate, build the
+// intruder, check the geometry (for a sweep, of every case). None may crash, hang or allocate
+// without bound; the ASan+UBSan build (CI) and the fuzz targets (tools/fuzz.sh) watch for that.
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <functional>
 
 #include "core/Error.h"
 #include "io/AtomicFile.h"
 #include "io/Config.h"
+#include "io/SweepSpec.h"
 #include "scenario/Experiment.h"
-#include "scenario/Shape.h"
 
 namespace wiggle {
 namespace {
 
-void checkCase(const std::string& text, const std::string& name) {
-  const RunConfig config = parseRunConfig(text, name);
-  checkGeometry(config, makeClump(config.intruder, config.grains.massModel, 1.0));
-}
-
-TEST(BadInput, EveryFileOfTheCorpusGetsItsOneLineError) {
+// Returns the number of files checked.
+int checkCorpus(const std::string& dir, const std::function<void(const std::string&, const std::string&)>& check) {
   int files = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(std::string(WIGGLE_TEST_DATA) + "/bad_inputs")) {
+  for (const auto& entry : std::filesystem::directory_iterator(std::string(WIGGLE_TEST_DATA) + "/" + dir)) {
     const std::string path = entry.path().string();
     const std::string text = readFile(path);
     const std::string firstLine = text.substr(0, text.find('\n'));
     const std::string marker = "# expect: ";
     ++files;
     if (text.empty()) {
-      EXPECT_NO_THROW(checkCase(text, path)) << path << ": an empty file is the default case";
+      EXPECT_NO_THROW(check(text, path)) << path << ": an empty file is the default case";
       continue;
     }
     try {
-      checkCase(text, path);
+      check(text, path);
       ADD_FAILURE() << path << " was accepted";
     } catch (const Error& e) {
       const std::string message = e.what();
@@ -44,7 +43,23 @@ TEST(BadInput, EveryFileOfTheCorpusGetsItsOneLineError) {
       }
     }
   }
-  EXPECT_GE(files, 25);
+  return files;
+}
+
+TEST(BadInput, EveryRunConfigOfTheCorpusGetsItsOneLineError) {
+  const int files = checkCorpus("bad_inputs", [](const std::string& text, const std::string& path) {
+    checkedClump(parseRunConfig(text, path));
+  });
+  EXPECT_GE(files, 50);
+}
+
+TEST(BadInput, EverySweepFileOfTheCorpusGetsItsOneLineError) {
+  const int files = checkCorpus("bad_sweeps", [](const std::string& text, const std::string& path) {
+    const SweepSpec spec = parseSweepSpec(text, path);
+    // `wiggle sweep` records a case failing these checks as failed in results.csv, with this message.
+    for (const SweepCase& c : spec.cases) checkedClump(c.config);
+  });
+  EXPECT_GE(files, 24);
 }
 
 }  // namespace

@@ -194,7 +194,8 @@ TEST(World, HistorySurvivesRebuildAndResort) {
     const auto after = historyByTags();
     for (const auto& [tags, shear] : before) {
       if (shear.first == 0.0 && shear.second == 0.0) continue;
-      auto it = std::find_if(after.begin(), after.end(), [&](const auto& e) { return e.first == tags; });
+      // (A copy: clang 14 cannot capture a structured binding.)
+      auto it = std::find_if(after.begin(), after.end(), [&, key = tags](const auto& e) { return e.first == key; });
       ASSERT_NE(it, after.end());
       // One step of sliding changes the history by at most |vt| dt = 1e-5; a lost history would
       // reset it to about that size from a value of ~1e-3 or more.

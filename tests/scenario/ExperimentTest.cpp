@@ -3,11 +3,15 @@
 
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <nlohmann/json.hpp>
 
 #include "core/Error.h"
 #include "io/AtomicFile.h"
 #include "io/Config.h"
+#include "io/StateFile.h"
+#include "scenario/BedMaker.h"
+#include "scenario/Checkpoint.h"
 #include "scenario/Experiment.h"
 
 namespace wiggle {
@@ -140,6 +144,85 @@ TEST(Experiment, CorruptCheckpointFallsBackToThePreviousOne) {
   resume.resume = true;
   EXPECT_EQ(runExperiment(config, resume).stateHash, expected.stateHash);
   EXPECT_NE(readFile(dir + "/log.txt").find("checksum"), std::string::npos);
+}
+
+
+TEST(Experiment, DamagedCheckpointsAndBedsAreNeverLoaded) {
+  // A real checkpoint and a real cached bed, each damaged 100 ways (50 truncations at random
+  // lengths, 50 random runs of 1-16 bytes overwritten): every version is refused by the readers
+  // `--resume` and the bed cache use, with a one-line error naming the file.
+  const RunConfig config = tinyConfig(scratch(""));
+  const std::string dir = scratch("damaged");
+  RunOptions stop = quiet(dir);
+  stop.stopAfterSteps = 300;
+  stop.checkpointAtStop = true;
+  runExperiment(config, stop);
+  const std::string configToml = toToml(config);
+  const std::string checkpoint = readFile(checkpointPath(dir));
+  const std::string key = bedKey(config, checkedClump(config));
+  const std::string bed = readFile(bedCachePath(config, key));
+  ASSERT_NO_THROW(parseCheckpoint(checkpoint, "c.bin", config, configToml));
+  ASSERT_NO_THROW(parseCachedBed(bed, "b.bin", key));
+  std::mt19937_64 rng(7);
+  int refused = 0;
+  for (const bool isBed : {false, true}) {
+    const std::string& good = isBed ? bed : checkpoint;
+    for (int trial = 0; trial < 100; ++trial) {
+      std::string bad = good;
+      if (trial < 50) {
+        bad.resize(rng() % good.size());
+      } else {
+        const std::size_t at = rng() % good.size(), n = 1 + rng() % 16;
+        for (std::size_t i = at; i < std::min(good.size(), at + n); ++i) bad[i] = static_cast<char>(rng());
+        if (bad == good) continue;
+      }
+      try {
+        if (isBed) parseCachedBed(bad, "b.bin", key);
+        else parseCheckpoint(bad, "c.bin", config, configToml);
+        ADD_FAILURE() << (isBed ? "bed" : "checkpoint") << " damage " << trial << " was loaded";
+      } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos);
+        EXPECT_EQ(std::string(e.what()).rfind(isBed ? "b.bin" : "c.bin", 0), 0u) << e.what();
+        ++refused;
+      }
+    }
+  }
+  EXPECT_GE(refused, 195);  // (a random overwrite may leave the bytes as they were: skipped)
+  // A checkpoint of another config is refused too.
+  RunConfig other = config;
+  other.drive.period = 1.0;
+  EXPECT_THROW(parseCheckpoint(checkpoint, "c.bin", other, toToml(other)), Error);
+}
+
+TEST(Experiment, CorruptOrForeignCachedBedIsRebuiltIdentically) {
+  const RunConfig config = tinyConfig(scratch("bed-rebuild"));
+  const ClumpDef clump = checkedClump(config);
+  const std::string path = bedCachePath(config, bedKey(config, clump));
+  const CachedBed first = obtainBed(config, clump);
+  const std::string good = readFile(path);
+  const std::string hash = first.world.stateHash();
+  std::string flipped = good;
+  flipped[good.size() / 3] ^= 0x01;
+  std::string foreign;  // a bed file of the right kind holding another key
+  {
+    BinaryWriter out;
+    out.string("0123456789abcdef");
+    first.world.save(out);
+    writeStateFile(path + ".foreign", "bed", out.bytes());
+    foreign = readFile(path + ".foreign");
+  }
+  const std::pair<std::string, std::string> damages[] = {{flipped, "checksum"},
+                                                         {good.substr(0, good.size() / 2), "truncated"},
+                                                         {foreign, "other parameters"},
+                                                         {readFile(path + ".foreign").substr(0, 8) + "junk", "truncated"}};
+  for (const auto& [bytes, why] : damages) {
+    writeFileAtomically(path, bytes);
+    const CachedBed bed = obtainBed(config, clump);
+    EXPECT_FALSE(bed.fromCache) << why;
+    EXPECT_NE(bed.note.find(why), std::string::npos) << bed.note;
+    EXPECT_EQ(bed.world.stateHash(), hash) << "the rebuilt bed differs (" << why << ")";
+    EXPECT_EQ(readFile(path), good) << "the cache file was not rewritten whole (" << why << ")";
+  }
 }
 
 }  // namespace

@@ -2,9 +2,12 @@
 // the cases run as child processes of the real wiggle binary (WIGGLE_BINARY). The bed is made once
 // per test binary run (about 5 s) into a private cache and shared by every test here.
 #include <gtest/gtest.h>
+
+#include <cctype>
 #include <signal.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <filesystem>
@@ -235,6 +238,16 @@ TEST_F(SweepRunnerTest, RunsEveryCaseRecordsFailuresAndResumes) {
   EXPECT_NE(rows["amplitude=0.5_period=0.0003"].at("error").find("blew up"), std::string::npos)
       << rows["amplitude=0.5_period=0.0003"].at("error");
   EXPECT_EQ(rows["amplitude=0.5_period=0.0003"].at("vy"), "");
+  // Guard rail end to end: the blow-up passed the up-front time-step check (the drive's speed is
+  // in it, and 1e-4 is below its limit) and was stopped by the health check; no NaN or inf
+  // reached results.csv, and the case left no summary.json to be mistaken for a result.
+  {
+    std::string lower = readFile(out + "/results.csv");
+    std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char ch) { return std::tolower(ch); });
+    for (const auto& row : parseCsv(lower))
+      for (const auto& cell : row) EXPECT_TRUE(cell != "nan" && cell != "inf" && cell != "-inf") << cell;
+    EXPECT_FALSE(fs::exists(out + "/cases/amplitude=0.5_period=0.0003/summary.json"));
+  }
   EXPECT_EQ(rows["amplitude=7_period=1"].at("status"), "failed");
   EXPECT_NE(rows["amplitude=7_period=1"].at("error").find("box.width = 20 is too narrow"), std::string::npos);
   EXPECT_EQ(rows["amplitude=7_period=1"].at("drive.amplitude"), "7");

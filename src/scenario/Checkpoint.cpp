@@ -1,0 +1,65 @@
+#include "scenario/Checkpoint.h"
+
+#include <filesystem>
+
+#include "core/Error.h"
+#include "io/StateFile.h"
+
+namespace wiggle {
+
+void RunState::save(BinaryWriter& out) const {
+  out.array(samples);
+  out.array(phaseSum);
+  out.array(phaseCount);
+  out.value(dumpBytes);
+  out.value(runWallSeconds);
+  out.value(bedWallSeconds);
+  out.string(bedKey);
+  out.value(static_cast<std::uint8_t>(bedFromCache));
+}
+
+void RunState::load(BinaryReader& in) {
+  samples = in.array<TrajectorySample>();
+  phaseSum = in.array<double>();
+  phaseCount = in.array<std::uint64_t>();
+  if (phaseSum.size() != kPhaseBins || phaseCount.size() != kPhaseBins)
+    throw Error(in.what() + " is corrupt: phase bins");
+  dumpBytes = in.value<std::uint64_t>();
+  runWallSeconds = in.value<double>();
+  bedWallSeconds = in.value<double>();
+  bedKey = in.string();
+  bedFromCache = in.value<std::uint8_t>() != 0;
+}
+
+std::string checkpointPath(const std::string& runDir) { return runDir + "/checkpoint.bin"; }
+std::string previousCheckpointPath(const std::string& runDir) { return runDir + "/checkpoint.prev.bin"; }
+
+void writeCheckpoint(const std::string& runDir, const std::string& configToml, const World& world,
+                     const RunState& state, const FieldObserver& fields) {
+  BinaryWriter out;
+  out.string(configToml);
+  world.save(out);
+  state.save(out);
+  fields.save(out);
+  // Keep the previous good checkpoint until the new one is safely in place.
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::exists(checkpointPath(runDir))) fs::rename(checkpointPath(runDir), previousCheckpointPath(runDir), ec);
+  writeStateFile(checkpointPath(runDir), "checkpoint", out.bytes());
+}
+
+Checkpoint parseCheckpoint(const std::string& file, const std::string& name, const RunConfig& config,
+                           const std::string& configToml) {
+  const std::string payload = parseStateFile(file, name, "checkpoint");
+  BinaryReader in(payload.data(), payload.size(), name);
+  if (in.string() != configToml) throw Error(name + " belongs to another config");
+  World world = World::load(in);
+  RunState state;
+  state.load(in);
+  FieldObserver fields(config.fields, config.box.width);
+  fields.load(in);
+  if (!in.atEnd()) throw Error(name + " has trailing data");
+  return Checkpoint{std::move(world), std::move(state), std::move(fields)};
+}
+
+}  // namespace wiggle

@@ -1,0 +1,55 @@
+#pragma once
+// A run's checkpoint (DIR/checkpoint.bin; the one before it is kept as DIR/checkpoint.prev.bin):
+// the resolved config's TOML, the World, the run's own bookkeeping (RunState) and the field sums,
+// framed as a state file of kind "checkpoint" (io/StateFile.h: magic, version, checksum). A
+// checkpoint is used only when every part reads back whole and it belongs to the same config.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "analysis/FieldObserver.h"
+#include "analysis/RiseRate.h"
+#include "io/BinaryStream.h"
+#include "io/RunConfig.h"
+#include "physics/World.h"
+
+namespace wiggle {
+
+inline constexpr int kPhaseBins = 20;  // 10 phi / pi in [0, 20), one bin per unit (SPEC 6)
+
+// Everything the run loop accumulates besides the World.
+struct RunState {
+  std::vector<TrajectorySample> samples;
+  std::vector<double> phaseSum = std::vector<double>(kPhaseBins, 0.0);
+  std::vector<std::uint64_t> phaseCount = std::vector<std::uint64_t>(kPhaseBins, 0);
+  std::uint64_t dumpBytes = 0;     // length of dumps/dump.lammpstrj at this state
+  double runWallSeconds = 0.0;     // stepping time so far (for ns per particle-step)
+  double bedWallSeconds = 0.0;
+  std::string bedKey;
+  bool bedFromCache = false;
+
+  void save(BinaryWriter& out) const;
+  void load(BinaryReader& in);
+};
+
+struct Checkpoint {
+  World world;
+  RunState state;
+  FieldObserver fields;
+};
+
+std::string checkpointPath(const std::string& runDir);
+std::string previousCheckpointPath(const std::string& runDir);
+
+// Moves the current checkpoint to checkpoint.prev.bin, then writes the new one atomically, so a
+// crash at any moment leaves at least one good checkpoint. Throws wiggle::Error when it cannot write.
+void writeCheckpoint(const std::string& runDir, const std::string& configToml, const World& world,
+                     const RunState& state, const FieldObserver& fields);
+
+// The checkpoint in a file's bytes (`name` starts every error message). `configToml` is
+// toToml(config): a checkpoint of any other config is refused. Throws wiggle::Error for anything
+// truncated, corrupt, foreign or inconsistent.
+Checkpoint parseCheckpoint(const std::string& file, const std::string& name, const RunConfig& config,
+                           const std::string& configToml);
+
+}  // namespace wiggle
