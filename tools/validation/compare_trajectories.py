@@ -47,6 +47,8 @@ def main():
         label, sep, path = spec.partition("=")
         if not sep:
             sys.exit(f"compare_trajectories: '{spec}' is not LABEL=DIR")
+        if not os.path.isfile(os.path.join(path, "trajectory.csv")):
+            sys.exit(f"compare_trajectories: no trajectory.csv in '{path}' (the label ends at the first '=')")
         traj = readers.read_trajectory(path)
         chord, slope, y_end = rates(traj)
         summary_path = os.path.join(path, "summary.json")
