@@ -40,7 +40,7 @@ void requireFinite(double v, const char* what) {
 // (ContactLaw.h) over the block. The kernel is a chain of dependent sqrt and divisions, and only
 // SIMD lanes hide that latency; gathering by hand vectorises whatever the compiler thinks of
 // gather instructions.
-// Returns the largest (radsum - allowed)^2 - r^2 over the block's pairs, where allowed is
+// Returns the largest (radsum - allowed)^2 - r^2 over pairs [begin, end), where allowed is
 // `alarmFraction` of the smaller diameter: positive when some pair overlaps more than that, which is
 // how a blow-up shows between two health checks. Squared, so that it costs no sqrt.
 double computePairForces(std::uint32_t begin, std::uint32_t end, const ParticleStore& s, NeighbourList& list,
