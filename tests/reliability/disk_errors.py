@@ -23,20 +23,10 @@ import tempfile
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from kill_resume import RUN_CONFIG, compare_run_dirs, read  # noqa: E402  (one tiny case for both)
+from kill_resume import RUN_CONFIG, Reporter, compare_run_dirs, read  # noqa: E402  (one tiny case for both)
 
-failures = []
-
-
-def log(text):
-    print("disk_errors: " + text, flush=True)
-
-
-def check(ok, text):
-    if not ok:
-        failures.append(text)
-        log("FAIL: " + text)
-    return ok
+_report = Reporter("disk_errors")
+log, check, failures = _report.log, _report.check, _report.failures
 
 
 def snapshot(directory):

@@ -91,18 +91,25 @@ enabled = false
 period = [0.5, 1.0, 2.0]
 """
 
-failures = []
+class Reporter:
+    """One script's log lines (prefixed with its name) and the failed checks it collects."""
+
+    def __init__(self, name):
+        self.name = name
+        self.failures = []
+
+    def log(self, text):
+        print(f"{self.name}: {text}", flush=True)
+
+    def check(self, ok, text):
+        if not ok:
+            self.failures.append(text)
+            self.log("FAIL: " + text)
+        return ok
 
 
-def log(text):
-    print("kill_resume: " + text, flush=True)
-
-
-def check(ok, text):
-    if not ok:
-        failures.append(text)
-        log("FAIL: " + text)
-    return ok
+_report = Reporter("kill_resume")
+log, check, failures = _report.log, _report.check, _report.failures
 
 
 def read(path):
