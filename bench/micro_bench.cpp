@@ -1,5 +1,8 @@
 // Google Benchmark micro-benchmarks of the engine's hot parts (docs/PERFORMANCE.md):
-//   BM_ContactKernel   hertzHistoryContact over a batch of pairs (SoA inputs, ~70 % touching)
+//   BM_ContactKernel   the engine's chunked pair evaluation (PairKernel.h: 4 lanes where the CPU has
+//                      AVX) over a batch of pairs (~75 % touching), the chunk's inputs filled from arrays
+//   BM_ContactKernelScalar  the same pairs one at a time through the composed law (the reference)
+//   BM_IntruderContacts addIntruderContactForces: the clump's contacts and force sum in the pile
 //   BM_NeighbourBuild  NeighbourList::build on a settled pile, carrying history from the old list
 //   BM_WorldStep       one full World::step of the settled pile with a wiggling disk
 //   BM_FieldFrame      one FieldObserver frame (Phi, v, contact stress on the 61 x 61 grid)
@@ -8,13 +11,16 @@
 // Items per second are pairs (kernel), particles (build, step) or grains in reach (frame).
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 #include "analysis/FieldObserver.h"
 #include "io/RunConfig.h"
 #include "physics/ContactLaw.h"
+#include "physics/PairKernel.h"
 #include "physics/World.h"
 #include "scenario/BedMaker.h"
 #include "scenario/Shape.h"
@@ -31,42 +37,80 @@ struct Lcg {
   }
 };
 
-void BM_ContactKernel(benchmark::State& state) {
-  const std::size_t n = static_cast<std::size_t>(state.range(0));
-  Lcg rng{42};
-  std::vector<double> dx(n), dy(n), dvx(n), dvy(n), ri(n), rj(n), wi(n), wj(n), meff(n), sx(n), sy(n);
-  for (std::size_t k = 0; k < n; ++k) {
-    ri[k] = 0.45 + 0.1 * rng.next();
-    rj[k] = 0.45 + 0.1 * rng.next();
-    const double angle = 2.0 * 3.141592653589793 * rng.next();
-    const double dist = (ri[k] + rj[k]) * (0.995 + 0.02 * rng.next());  // ~75 % overlapping, up to 0.5 %
-    dx[k] = dist * std::cos(angle);
-    dy[k] = dist * std::sin(angle);
-    dvx[k] = 0.1 * (rng.next() - 0.5);
-    dvy[k] = 0.1 * (rng.next() - 0.5);
-    wi[k] = rng.next() - 0.5;
-    wj[k] = rng.next() - 0.5;
-    meff[k] = 0.26;
-    sx[k] = 1e-5 * (rng.next() - 0.5);
-    sy[k] = 1e-5 * (rng.next() - 0.5);
-  }
-  const ContactParams params;
-  std::vector<double> fx(n), fy(n), arm(n);
-  for (auto _ : state) {
+// A batch of pairs with ~75 % overlapping (by up to 0.5 %), as gathered pair inputs in arrays.
+struct PairBatch {
+  std::vector<double> dx, dy, dvx, dvy, ri, rj, wi, wj, invMassSum, alarm, sx, sy, fx, fy, arm;
+  explicit PairBatch(std::size_t n) {
+    for (auto* v : {&dx, &dy, &dvx, &dvy, &ri, &rj, &wi, &wj, &invMassSum, &alarm, &sx, &sy, &fx, &fy, &arm})
+      v->resize(n);
+    Lcg rng{42};
     for (std::size_t k = 0; k < n; ++k) {
-      const ContactForce c = hertzHistoryContact(params, 1e-4, dx[k], dy[k], dvx[k], dvy[k], ri[k], rj[k], wi[k], wj[k],
-                                                 meff[k], sx[k], sy[k], true);
-      fx[k] = c.fx;
-      fy[k] = c.fy;
-      arm[k] = c.torqueArm;
+      ri[k] = 0.45 + 0.1 * rng.next();
+      rj[k] = 0.45 + 0.1 * rng.next();
+      const double angle = 2.0 * 3.141592653589793 * rng.next();
+      const double dist = (ri[k] + rj[k]) * (0.995 + 0.02 * rng.next());
+      dx[k] = dist * std::cos(angle);
+      dy[k] = dist * std::sin(angle);
+      dvx[k] = 0.1 * (rng.next() - 0.5);
+      dvy[k] = 0.1 * (rng.next() - 0.5);
+      wi[k] = rng.next() - 0.5;
+      wj[k] = rng.next() - 0.5;
+      invMassSum[k] = 1.0 / 0.26;  // meff 0.26
+      alarm[k] = std::min(ri[k], rj[k]);
+      sx[k] = 1e-5 * (rng.next() - 0.5);
+      sy[k] = 1e-5 * (rng.next() - 0.5);
     }
-    benchmark::DoNotOptimize(fx.data());
-    benchmark::DoNotOptimize(fy.data());
-    benchmark::DoNotOptimize(arm.data());
+  }
+  template <class V>
+  PairInputs<V> inputs(std::size_t k) const {
+    auto load = [k](const std::vector<double>& v) { return simd::load<V>(v.data() + k); };
+    return {load(dx), load(dy), load(dvx), load(dvy), load(ri), load(rj), load(wi), load(wj), load(invMassSum),
+            load(alarm)};
+  }
+  PairSlots slots() { return {sx.data(), sy.data(), fx.data(), fy.data(), arm.data()}; }
+};
+
+// The engine's chunked evaluation (PairKernel.h) over the batch, 64 pairs at a time; with
+// `scalar`, the composed law one pair at a time instead (the reference: same bits, no lanes).
+void runContactKernel(benchmark::State& state, bool scalar) {
+  const std::size_t n = static_cast<std::size_t>(state.range(0));
+  PairBatch batch(n);
+  const ContactParams params;
+  const PairSlots slots = batch.slots();
+  // The history is written back, so every pass starts from the same one.
+  const std::vector<double> sx0 = batch.sx, sy0 = batch.sy;
+  PairChunk chunk;
+  for (auto _ : state) {
+    std::copy(sx0.begin(), sx0.end(), batch.sx.begin());
+    std::copy(sy0.begin(), sy0.end(), batch.sy.begin());
+    if (scalar) {
+      for (std::size_t k = 0; k < n; ++k) {
+        const PairInputs<double> in = batch.inputs<double>(k);
+        const ContactForce c = hertzHistoryContact(params, 1e-4, in.dx, in.dy, in.dvx, in.dvy, in.radI, in.radJ,
+                                                   in.omegaI, in.omegaJ, in.invMassSum, batch.sx[k], batch.sy[k], true);
+        batch.sx[k] = c.shearX;
+        batch.sy[k] = c.shearY;
+        batch.fx[k] = c.fx;
+        batch.fy[k] = c.fy;
+        batch.arm[k] = c.torqueArm;
+      }
+    } else {
+      for (std::size_t first = 0; first < n; first += kChunk) {
+        const auto count = static_cast<std::uint32_t>(std::min<std::size_t>(kChunk, n - first));
+        for (std::uint32_t m = 0; m < count; ++m) chunk.set(m, batch.inputs<double>(first + m));
+        const double excess =
+            evaluateChunk(chunk, count, static_cast<std::uint32_t>(first), slots, params, 1e-4, true, 0.25);
+        benchmark::DoNotOptimize(excess);
+      }
+    }
     benchmark::ClobberMemory();
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * static_cast<std::int64_t>(n));
 }
+
+void BM_ContactKernel(benchmark::State& state) { runContactKernel(state, false); }
+void BM_ContactKernelScalar(benchmark::State& state) { runContactKernel(state, true); }
+BENCHMARK(BM_ContactKernelScalar)->Arg(4096);
 BENCHMARK(BM_ContactKernel)->Arg(4096)->Arg(65536);
 
 // A settled pile of about 1,200 grains in a 40-wide box with a disk held in it, then driven
@@ -113,6 +157,21 @@ void BM_NeighbourBuild(benchmark::State& state) {
   state.counters["pairs"] = static_cast<double>(pile.neighbours().pairCount());
 }
 BENCHMARK(BM_NeighbourBuild)->Unit(benchmark::kMicrosecond);
+
+void BM_IntruderContacts(benchmark::State& state) {
+  const World& pile = settledPile();
+  ParticleStore store = pile.particles();
+  ClumpState clump = pile.intruder();
+  IntruderPairs pairs = pile.intruderPairs();
+  for (auto _ : state) {
+    const double excess = addIntruderContactForces(store, pile.clump(), clump, pairs, pile.def().contact,
+                                                   pile.def().dt, pile.def().boxWidth, true, 0.25);
+    benchmark::DoNotOptimize(excess);
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * pairs.size());
+  state.counters["pairs"] = static_cast<double>(pairs.size());
+}
+BENCHMARK(BM_IntruderContacts)->Unit(benchmark::kMicrosecond);
 
 void BM_WorldStep(benchmark::State& state) {
   World world = settledPile();

@@ -2,12 +2,16 @@
 // The contact law of LAMMPS `pair_style gran/hertz/history` (SPEC 2), restricted to 2D.
 //
 // Source: LAMMPS src/GRANULAR/pair_gran_hertz_history.cpp, PairGranHertzHistory::compute()
-// (version 29 Sep 2021). The arithmetic below follows that routine operation by operation, with
-// the z terms dropped: in 2D every dropped term is an exact zero (delz, vr3, omega_x, omega_y), so
-// removing it does not change a single bit of the result. Symbols (only here):
+// (version 29 Sep 2021). The arithmetic below follows that routine's formulas with the z terms
+// dropped (in 2D each is an exact zero: delz, vr3, omega_x, omega_y). It is not LAMMPS's operation
+// order everywhere: LAMMPS divides seven times per pair (1/r, 1/r^2, Reff, meff, fn/fs and twice by
+// kt), and divisions are what bound the kernel's speed (docs/PERFORMANCE.md). Here one division
+// gives 1/r, 1/(Ri + Rj) and meff together, 1/r^2 is (1/r)^2 and 1/kt is computed once, so a
+// result can differ from LAMMPS's by a few ulps; the LAMMPS comparison tests bound what that does
+// to trajectories. Symbols (only here):
 //   dx, dy     x_i - x_j (minimum image) [d]            dvx, dvy   v_i - v_j [sqrt(g d)]
 //   radI, radJ radii [d]                                omegaI/J   spins about z [sqrt(g/d)]
-//   meff       mi mj/(mi+mj), or the free partner's mass when the other is frozen [rho d^3]
+//   invMassSum 1/mi + 1/mj (1/mi alone when j is frozen), so meff = 1 / invMassSum [1/(rho d^3)]
 //   kn, kt     Hertz normal and tangential stiffness      gammaN/T   viscoelastic damping
 //   mu         Coulomb friction coefficient               dt         time step
 //   shearX/Y   stored tangential displacement (history) of the pair, in i's frame
@@ -17,7 +21,7 @@
 // plus damping give exactly the capped force.
 // Outputs: (fx, fy) is the force on i (j gets the opposite); the torques are
 // torque_i -= radI * torqueArm, torque_j -= radJ * torqueArm.
-#include <cmath>
+#include "core/Simd.h"
 
 namespace wiggle {
 
@@ -29,77 +33,135 @@ struct ContactParams {
   double mu = 0.1;        // Coulomb friction coefficient
 };
 
-struct ContactForce {
-  double fx, fy;          // force on i
-  double torqueArm;       // rinv (dx fs_y - dy fs_x); torque_i -= radI * torqueArm
-  double shearX, shearY;  // the pair's history after this step (0 when not touching) [d]
+template <class V>  // double, or lanes of doubles (core/Simd.h)
+struct ContactForceOf {
+  V fx, fy;          // force on i
+  V torqueArm;       // rinv (dx fs_y - dy fs_x); torque_i -= radI * torqueArm
+  V shearX, shearY;  // the pair's history after this step (0 when not touching) [d]
 };
+using ContactForce = ContactForceOf<double>;
 
-// Returns the force and the pair's new history (shearX, shearY are the history before the step). When the pair does not touch the force is
-// zero and the history is reset, as LAMMPS does for a neighbour that stopped touching.
-// `updateShear` is false only for the set-up force evaluation before the first step (LAMMPS does
-// not advance the history while update->setupflag is set).
-//
-// Written without branches: every quantity is computed and the cases (touching or not, capped or
-// not, history update or not) are selected afterwards, so that the pair loop vectorises. Each
-// selected value is produced by exactly the operations LAMMPS performs in that case, so the result
-// is bitwise the same as the branching form. Lanes of pairs that do not touch compute NaN (sqrt of
-// a negative overlap) that is never selected.
-inline ContactForce hertzHistoryContact(const ContactParams& p, double dt, double dx, double dy,
-                                        double dvx, double dvy, double radI, double radJ,
-                                        double omegaI, double omegaJ, double meff,
-                                        double shearX, double shearY, bool updateShear) {
-  const double rsq = dx * dx + dy * dy;
-  const double radsum = radI + radJ;
-  const bool touching = rsq < radsum * radsum;
-  const double r = std::sqrt(rsq);
-  const double rinv = 1.0 / r;
-  const double rsqinv = 1.0 / rsq;
+// The law in three stages: the geometry (a sqrt and the one division for three reciprocals), the
+// trial force (a sqrt) and the Coulomb cap (a sqrt and a division); hertzHistoryContact composes
+// them. These five operations bound the kernel's speed (docs/PERFORMANCE.md: running the stages as
+// three loops over a chunk of pairs was measured, and did not pay: the divider is saturated, not
+// idle). V is double (the reference) or a vector of lanes (core/Simd.h) with the same bits per lane.
+
+// Stage 1: the distance and one division for three reciprocals, q = 1 / (r (Ri + Rj) invMassSum).
+template <class V>
+struct ContactGeometry {
+  V r, q;
+};
+template <class V>
+inline ContactGeometry<V> contactGeometry(V dx, V dy, V radI, V radJ, V invMassSum) {
+  using simd::sqrt;
+  const V r = sqrt(dx * dx + dy * dy);
+  return {r, V(1.0) / (r * (radI + radJ) * invMassSum)};
+}
+
+// Stage 2: relative velocities, the normal force, the history update and the uncapped tangential
+// force.
+template <class V>
+struct ContactTrial {
+  V ccel;            // normal force over r
+  V fs1, fs2;        // tangential force before the Coulomb cap
+  V sx, sy;          // history after the update (before the cap)
+  V shrmagSq;        // squared history before the projection (the cap leaves a zero history alone)
+  V dampX, dampY;    // the damping part of the tangential force in history units: meff gammaT vtr / kt
+  V rinv;
+};
+template <class V>
+inline ContactTrial<V> contactTrial(const ContactParams& p, double dt, V dx, V dy, V dvx, V dvy, V radI, V radJ,
+                                    V omegaI, V omegaJ, V invMassSum, V shearX, V shearY, bool updateShear,
+                                    ContactGeometry<V> g) {
+  using simd::sqrt;
+  const V radsum = radI + radJ;
+  const V r = g.r;
+  const V rRadsum = r * radsum;
+  const V rinv = g.q * radsum * invMassSum;
+  const V meff = g.q * rRadsum;
+  const V reff = radI * radJ * (g.q * r * invMassSum);  // Ri Rj / (Ri + Rj)
+  const V rsqinv = rinv * rinv;
 
   // Normal and tangential parts of the relative velocity.
-  const double vnnr = dvx * dx + dvy * dy;
-  const double vn1 = dx * vnnr * rsqinv;
-  const double vn2 = dy * vnnr * rsqinv;
-  const double vt1 = dvx - vn1;
-  const double vt2 = dvy - vn2;
-  const double wr3 = (radI * omegaI + radJ * omegaJ) * rinv;
+  const V vnnr = dvx * dx + dvy * dy;
+  const V vn1 = dx * vnnr * rsqinv;
+  const V vn2 = dy * vnnr * rsqinv;
+  const V vt1 = dvx - vn1;
+  const V vt2 = dvy - vn2;
+  const V wr3 = (radI * omegaI + radJ * omegaJ) * rinv;
 
   // Normal force: Hertz spring plus velocity damping, scaled by sqrt(delta Reff).
-  const double damp = meff * p.gammaN * vnnr * rsqinv;
-  const double polyhertz = std::sqrt((radsum - r) * radI * radJ / radsum);
-  const double ccel = (p.kn * (radsum - r) * rinv - damp) * polyhertz;
+  const V damp = meff * p.gammaN * vnnr * rsqinv;
+  const V polyhertz = sqrt((radsum - r) * reff);
+  const V ccel = (p.kn * (radsum - r) * rinv - damp) * polyhertz;
 
   // Relative tangential velocity at the contact point, rotation included.
-  const double vtr1 = vt1 + dy * wr3;
-  const double vtr2 = vt2 - dx * wr3;
+  const V vtr1 = vt1 + dy * wr3;
+  const V vtr2 = vt2 - dx * wr3;
 
   // History: accumulate, then project onto the current tangent plane (length not restored).
-  const double accX = updateShear ? shearX + vtr1 * dt : shearX;
-  const double accY = updateShear ? shearY + vtr2 * dt : shearY;
-  const double shrmagSq = accX * accX + accY * accY;
-  const double rsht = (accX * dx + accY * dy) * rsqinv;
-  double sx = updateShear ? accX - rsht * dx : accX;
-  double sy = updateShear ? accY - rsht * dy : accY;
+  const V accX = updateShear ? shearX + vtr1 * dt : shearX;
+  const V accY = updateShear ? shearY + vtr2 * dt : shearY;
+  const V shrmagSq = accX * accX + accY * accY;
+  const V rsht = (accX * dx + accY * dy) * rsqinv;
+  const V sx = updateShear ? accX - rsht * dx : accX;
+  const V sy = updateShear ? accY - rsht * dy : accY;
 
-  const double dampT = meff * p.gammaT;
-  double fs1 = -polyhertz * (p.kt * sx + dampT * vtr1);
-  double fs2 = -polyhertz * (p.kt * sy + dampT * vtr2);
+  const V dampT = meff * p.gammaT;
+  const double ktInv = 1.0 / p.kt;
+  return {ccel,
+          -polyhertz * (p.kt * sx + dampT * vtr1),
+          -polyhertz * (p.kt * sy + dampT * vtr2),
+          sx,
+          sy,
+          shrmagSq,
+          dampT * vtr1 * ktInv,
+          dampT * vtr2 * ktInv,
+          rinv};
+}
 
-  // Coulomb cap: |Ft| <= mu |Fn|, with the history rescaled to give exactly the capped force.
-  const double fs = std::sqrt(fs1 * fs1 + fs2 * fs2);
-  const double fn = p.mu * std::fabs(ccel * r);
-  const bool capped = fs > fn;
-  const bool rescale = capped && shrmagSq != 0.0;
-  const double ratio = fn / fs;
-  const double cappedX = ratio * (sx + dampT * vtr1 / p.kt) - dampT * vtr1 / p.kt;
-  const double cappedY = ratio * (sy + dampT * vtr2 / p.kt) - dampT * vtr2 / p.kt;
-  sx = rescale ? cappedX : sx;
-  sy = rescale ? cappedY : sy;
-  fs1 = capped ? (rescale ? fs1 * ratio : 0.0) : fs1;
-  fs2 = capped ? (rescale ? fs2 * ratio : 0.0) : fs2;
+// Stage 3: the Coulomb cap (|Ft| <= mu |Fn|, with the history rescaled to give exactly the capped
+// force) and the outputs; zero force and history for a pair that does not touch.
+template <class V>
+inline ContactForceOf<V> contactForce(const ContactParams& p, V dx, V dy, V radI, V radJ, ContactGeometry<V> g,
+                                      const ContactTrial<V>& t) {
+  using simd::abs;
+  using simd::select;
+  using simd::sqrt;
+  const V radsum = radI + radJ;
+  const auto touching = dx * dx + dy * dy < radsum * radsum;
+  const V fs = sqrt(t.fs1 * t.fs1 + t.fs2 * t.fs2);
+  const V fn = p.mu * abs(t.ccel * g.r);
+  const auto capped = fs > fn;
+  const auto rescale = capped & (t.shrmagSq != V(0.0));
+  const V ratio = fn / fs;
+  const V zero(0.0);
+  const V sx = select(rescale, ratio * (t.sx + t.dampX) - t.dampX, t.sx);
+  const V sy = select(rescale, ratio * (t.sy + t.dampY) - t.dampY, t.sy);
+  const V fs1 = select(capped, select(rescale, t.fs1 * ratio, zero), t.fs1);
+  const V fs2 = select(capped, select(rescale, t.fs2 * ratio, zero), t.fs2);
+  return {select(touching, dx * t.ccel + fs1, zero), select(touching, dy * t.ccel + fs2, zero),
+          select(touching, t.rinv * (dx * fs2 - dy * fs1), zero), select(touching, sx, zero),
+          select(touching, sy, zero)};
+}
 
-  return {touching ? dx * ccel + fs1 : 0.0, touching ? dy * ccel + fs2 : 0.0,
-          touching ? rinv * (dx * fs2 - dy * fs1) : 0.0, touching ? sx : 0.0, touching ? sy : 0.0};
+// Returns the force and the pair's new history (shearX, shearY are the history before the step).
+// When the pair does not touch the force is zero and the history is reset, as LAMMPS does for a
+// neighbour that stopped touching. `updateShear` is false only for the set-up force evaluation
+// before the first step (LAMMPS does not advance the history while update->setupflag is set).
+//
+// Written without branches: every quantity is computed and the cases (touching or not, capped or
+// not, history update or not) are selected afterwards, so that the pair loop vectorises. Lanes of
+// pairs that do not touch compute NaN (sqrt of a negative overlap) that is never selected.
+template <class V>
+inline ContactForceOf<V> hertzHistoryContact(const ContactParams& p, double dt, V dx, V dy, V dvx, V dvy, V radI,
+                                             V radJ, V omegaI, V omegaJ, V invMassSum, V shearX, V shearY,
+                                             bool updateShear) {
+  const ContactGeometry<V> g = contactGeometry(dx, dy, radI, radJ, invMassSum);
+  const ContactTrial<V> t =
+      contactTrial(p, dt, dx, dy, dvx, dvy, radI, radJ, omegaI, omegaJ, invMassSum, shearX, shearY, updateShear, g);
+  return contactForce(p, dx, dy, radI, radJ, g, t);
 }
 
 }  // namespace wiggle

@@ -160,21 +160,32 @@ void NeighbourList::build(const ParticleStore& s, double boxWidth, double skin,
   forceX.assign(pairs, 0.0);
   forceY.assign(pairs, 0.0);
   torqueArm.assign(pairs, 0.0);
-  deriveIndex(s.size());
+  deriveIndex(forceBlockRows(boxWidth));
 }
 
-void NeighbourList::deriveIndex(std::uint32_t particleCount) {
-  const std::uint32_t rows = static_cast<std::uint32_t>(rowStart.size() - 1);
+std::uint32_t forceBlockRows(double boxWidth) {
+  return static_cast<std::uint32_t>(std::clamp(4.0 * std::ceil(boxWidth), 64.0, 1e6));
+}
+
+void NeighbourList::deriveIndex(std::uint32_t rows) {
+  WIGGLE_ASSERT(rows > 0);
+  blockRows = rows;
+  const std::uint32_t grains = rowCount();
   const std::uint32_t pairs = pairCount();
   owner.resize(pairs);
-  for (std::uint32_t i = 0; i < rows; ++i)
+  for (std::uint32_t i = 0; i < grains; ++i)
     for (std::uint32_t k = rowStart[i]; k < rowStart[i + 1]; ++k) owner[k] = i;
-  revStart.assign(particleCount + 1, 0);
-  for (std::uint32_t k = 0; k < pairs; ++k) ++revStart[partner[k] + 1];
-  for (std::uint32_t p = 0; p < particleCount; ++p) revStart[p + 1] += revStart[p];
-  revPair.resize(pairs);
-  std::vector<std::uint32_t> fill(revStart.begin(), revStart.end() - 1);
-  for (std::uint32_t k = 0; k < pairs; ++k) revPair[fill[partner[k]]++] = k;
+  auto isCross = [&](std::uint32_t k) {
+    return partner[k] < grains && partner[k] / blockRows != owner[k] / blockRows;
+  };
+  crossStart.assign(grains + 1, 0);
+  for (std::uint32_t k = 0; k < pairs; ++k)
+    if (isCross(k)) ++crossStart[partner[k] + 1];
+  for (std::uint32_t p = 0; p < grains; ++p) crossStart[p + 1] += crossStart[p];
+  crossPair.resize(crossStart[grains]);
+  std::vector<std::uint32_t> fill(crossStart.begin(), crossStart.end() - 1);
+  for (std::uint32_t k = 0; k < pairs; ++k)
+    if (isCross(k)) crossPair[fill[partner[k]]++] = k;
 }
 
 }  // namespace wiggle

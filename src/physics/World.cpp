@@ -35,66 +35,67 @@ void requireFinite(double v, const char* what) {
   if (!std::isfinite(v)) throw Error(std::string(what) + " is not a finite number");
 }
 
-// Contact forces of pairs [begin, end) into their slots. Pairs go in blocks: a scalar loop gathers
-// each pair's inputs into small contiguous arrays, then a SIMD loop runs the branch-free kernel
-// (ContactLaw.h) over the block. The kernel is a chain of dependent sqrt and divisions, and only
-// SIMD lanes hide that latency; gathering by hand vectorises whatever the compiler thinks of
-// gather instructions.
-// Returns the largest (radsum - allowed)^2 - r^2 over pairs [begin, end), where allowed is
-// `alarmFraction` of the smaller diameter: positive when some pair overlaps more than that, which is
-// how a blow-up shows between two health checks. Squared, so that it costs no sqrt.
-double computePairForces(std::uint32_t begin, std::uint32_t end, const ParticleStore& s, NeighbourList& list,
-                         const ContactParams params, const double dt, const double width, const bool updateShear,
-                         const double alarmFraction) {
-  constexpr std::uint32_t kBlock = 64;
-  const double halfWidth = 0.5 * width;
-  alignas(64) double dx[kBlock], dy[kBlock], dvx[kBlock], dvy[kBlock], radI[kBlock], radJ[kBlock],
-      omegaI[kBlock], omegaJ[kBlock], meff[kBlock];
-  double worstExcess = -std::numeric_limits<double>::infinity();
-  for (std::uint32_t first = begin; first < end; first += kBlock) {
-    const std::uint32_t n = std::min(kBlock, end - first);
-    for (std::uint32_t m = 0; m < n; ++m) {
-      const std::uint32_t i = list.owner[first + m], j = list.partner[first + m];
-      const double rawDx = s.x[i] - s.x[j];
-      dx[m] = rawDx > halfWidth ? rawDx - width : (rawDx < -halfWidth ? rawDx + width : rawDx);
-      dy[m] = s.y[i] - s.y[j];
-      dvx[m] = s.vx[i] - s.vx[j];
-      dvy[m] = s.vy[i] - s.vy[j];
-      radI[m] = s.radius[i];
-      radJ[m] = s.radius[j];
-      omegaI[m] = s.omega[i];
-      omegaJ[m] = s.omega[j];
-      meff[m] = 1.0 / (s.invMass[i] + s.invMass[j]);  // frozen j: invMass 0, meff = m_i
-    }
-    // The history flag is made a compile-time constant: a run-time bool in the body stops GCC 12
-    // from vectorising it.
-    auto kernel = [&](auto updateShearConstant) {
-      double* __restrict shearX = list.shearX.data() + first;
-      double* __restrict shearY = list.shearY.data() + first;
-      double* __restrict forceX = list.forceX.data() + first;
-      double* __restrict forceY = list.forceY.data() + first;
-      double* __restrict torqueArm = list.torqueArm.data() + first;
-      double excess = worstExcess;
-#pragma omp simd reduction(max : excess)
-      for (std::uint32_t m = 0; m < n; ++m) {
-        const ContactForce c = hertzHistoryContact(params, dt, dx[m], dy[m], dvx[m], dvy[m], radI[m], radJ[m],
-                                                   omegaI[m], omegaJ[m], meff[m], shearX[m], shearY[m],
-                                                   decltype(updateShearConstant)::value);
-        shearX[m] = c.shearX;
-        shearY[m] = c.shearY;
-        forceX[m] = c.fx;
-        forceY[m] = c.fy;
-        torqueArm[m] = c.torqueArm;
-        const double closest =
-            std::max(0.0, radI[m] + radJ[m] - alarmFraction * 2.0 * std::min(radI[m], radJ[m]));
-        excess = std::max(excess, closest * closest - (dx[m] * dx[m] + dy[m] * dy[m]));
+// Force block b of the grain list (NeighbourList.h): every pair of its rows is evaluated, and its
+// force added to the owner and, if the partner is a grain of this block, to the partner, in pair
+// order. The block's grains start from zero: they get no other contribution before this. Pairs go
+// in chunks of kChunk: evaluated (PairKernel.h), then added while their slots are in L1.
+// Returns the block's largest overlap excess (see evaluateChunk).
+double accumulateBlock(std::uint32_t b, ParticleStore& s, const Kinematics* kin, NeighbourList& list,
+                       const ContactParams& params, double dt, double width, bool updateShear, double alarmFraction) {
+  const std::uint32_t r0 = b * list.blockRows;
+  const std::uint32_t r1 = std::min(r0 + list.blockRows, list.rowCount());
+  std::fill(s.fx.begin() + r0, s.fx.begin() + r1, 0.0);
+  std::fill(s.fy.begin() + r0, s.fy.begin() + r1, 0.0);
+  std::fill(s.torque.begin() + r0, s.torque.begin() + r1, 0.0);
+  const PairSlots slots{list.shearX.data(), list.shearY.data(), list.forceX.data(), list.forceY.data(),
+                        list.torqueArm.data()};
+  const std::uint32_t* owner = list.owner.data();
+  const std::uint32_t* partner = list.partner.data();
+  double excess = -std::numeric_limits<double>::infinity();
+  // The owner's sums stay in registers along its row: its partner contributions all come from
+  // earlier rows, so loading them at the row's start adds the same terms in the same order.
+  std::uint32_t current = r0;
+  double ownFx = 0.0, ownFy = 0.0, ownTorque = 0.0;
+  const std::uint32_t end = list.rowStart[r1];
+  for (std::uint32_t first = list.rowStart[r0]; first < end; first += kChunk) {
+    const std::uint32_t last = std::min(first + kChunk, end);
+    // Gathered straight into registers, four pairs at a time.
+    excess = std::max(excess, maxOverLanes(last - first, [&](std::uint32_t m, auto lane) {
+      const std::uint32_t k = first + m;
+      if constexpr (std::is_same_v<decltype(lane), double>)
+        return evaluatePairs(grainPairInputs(kin, s, owner[k], partner[k], width), k, slots, params, dt, updateShear,
+                             alarmFraction);
+      else
+        return evaluatePairs(grainPairInputs(kin, s, owner + k, partner + k, width), k, slots, params, dt,
+                             updateShear, alarmFraction);
+    }));
+    for (std::uint32_t k = first; k < last; ++k) {
+      const std::uint32_t i = owner[k], j = partner[k];
+      if (i != current) {
+        s.fx[current] = ownFx;
+        s.fy[current] = ownFy;
+        s.torque[current] = ownTorque;
+        current = i;
+        ownFx = s.fx[i];
+        ownFy = s.fy[i];
+        ownTorque = s.torque[i];
       }
-      worstExcess = excess;
-    };
-    if (updateShear) kernel(std::true_type{});
-    else kernel(std::false_type{});
+      ownFx += slots.forceX[k];
+      ownFy += slots.forceY[k];
+      ownTorque -= s.radius[i] * slots.torqueArm[k];
+      if (j < r1) {  // a grain of this block (j > i >= r0); frozen and later-block partners are not
+        s.fx[j] -= slots.forceX[k];
+        s.fy[j] -= slots.forceY[k];
+        s.torque[j] -= s.radius[j] * slots.torqueArm[k];
+      }
+    }
   }
-  return worstExcess;
+  if (end > list.rowStart[r0]) {
+    s.fx[current] = ownFx;
+    s.fy[current] = ownFy;
+    s.torque[current] = ownTorque;
+  }
+  return excess;
 }
 
 }  // namespace
@@ -122,6 +123,50 @@ World::World(const WorldDef& def) : def_(def) {
   if (!(def.skin > 0) || !(def.intruderSkin > 0.5 * def.skin))
     throw Error("neighbour skins must be > 0 and intruder_skin > skin / 2");
   if (def.healthInterval == 0 || def.sortInterval == 0) throw Error("intervals must be >= 1 step");
+}
+
+double addIntruderContactForces(ParticleStore& s, const ClumpDef& clump, ClumpState& state, IntruderPairs& ip,
+                                const ContactParams& params, double dt, double width, bool updateShear,
+                                double alarmFraction) {
+  double worstExcess = -std::numeric_limits<double>::infinity();
+  const double invClumpMass = 1.0 / clump.mass;
+  const std::uint32_t n = s.grainCount;
+  double clumpFx = 0.0, clumpFy = 0.0;
+  const PairSlots slots{ip.shearX.data(), ip.shearY.data(), ip.forceX.data(), ip.forceY.data(),
+                        ip.torqueArm.data()};
+  auto inputs = [&](std::uint32_t p) {
+    const std::uint32_t g = ip.grain[p], a = ip.atom[p];
+    return PairInputs<double>{minimumImage(s.x[g] - (state.x + clump.offsetX[a]), width),
+                              s.y[g] - (state.y + clump.offsetY[a]),
+                              s.vx[g] - state.vx,
+                              s.vy[g] - state.vy,
+                              s.radius[g],
+                              clump.atomRadius,
+                              s.omega[g],
+                              0.0,
+                              s.invMass[g] + invClumpMass,
+                              s.radius[g]};
+  };
+  PairChunk chunk;
+  for (std::uint32_t first = 0; first < ip.size(); first += kChunk) {
+    const std::uint32_t count = std::min(kChunk, ip.size() - first);
+    for (std::uint32_t m = 0; m < count; ++m) chunk.set(m, inputs(first + m));
+    worstExcess = std::max(worstExcess, evaluateChunk(chunk, count, first, slots, params, dt, updateShear, alarmFraction));
+  }
+  // The sums in list order, serially: the clump's total does not depend on the thread count.
+  for (std::uint32_t p = 0; p < ip.size(); ++p) {
+    const std::uint32_t g = ip.grain[p];
+    if (g < n) {
+      s.fx[g] += ip.forceX[p];
+      s.fy[g] += ip.forceY[p];
+      s.torque[g] -= s.radius[g] * ip.torqueArm[p];
+    }
+    clumpFx -= ip.forceX[p];
+    clumpFy -= ip.forceY[p];
+  }
+  state.contactFx = clumpFx;
+  state.contactFy = clumpFy;
+  return worstExcess;
 }
 
 // ---------------------------------------------------------------- set-up
@@ -244,8 +289,8 @@ void World::step() {
   placeIntruder();
   if (listsStale_ || maxDisplacementSq_ > 0.25 * def_.skin * def_.skin) rebuildNeighbours();
   else if (hasIntruder_ && intruderPairsStale()) rebuildIntruderPairs({});
-  computeForces(true);
-  finalIntegrate();
+  computeContactForces(true);
+  completeForces(true);  // with the second half kick
   // The full check is a scan of every particle: every healthInterval steps, and at once when the
   // force loop saw an overlap far beyond the limit (a blow-up can open and close between two scans).
   if (overlapAlarm_ || step_ % def_.healthInterval == 0) checkHealth();
@@ -255,7 +300,8 @@ void World::prepare() {
   checkTimeStep();
   placeIntruder();
   rebuildNeighbours();
-  computeForces(false);
+  computeContactForces(false);
+  completeForces(false);
   prepared_ = true;
 }
 
@@ -294,12 +340,16 @@ void World::initialIntegrate() {
     const double vy = s.vy[i] + kick * s.fy[i];
     const double x = s.x[i] + dt * vx;
     const double y = s.y[i] + dt * vy;
+    const double omega = s.omega[i] + halfDt * s.invInertia[i] * s.torque[i];
     s.vx[i] = vx;
     s.vy[i] = vy;
     s.x[i] = x;
     s.y[i] = y;
-    s.omega[i] += halfDt * s.invInertia[i] * s.torque[i];
+    s.omega[i] = omega;
+    // With the structure changed (grains added or removed), indices moved: the rebuild that follows
+    // in this step refreshes the displacement base and the kinematics records instead.
     if (track) {
+      kinematics_[i] = Kinematics{x, y, vx, vy};
       const double dx = x - xAtBuild_[i];
       const double dy = y - yAtBuild_[i];
       maxSq = std::max(maxSq, dx * dx + dy * dy);
@@ -359,7 +409,14 @@ void World::rebuildNeighbours() {
   maxDisplacementSq_ = 0.0;
   listsStale_ = false;
   ++rebuilds_;
+  refreshKinematics();  // x was wrapped, grains may be re-sorted
   if (hasIntruder_) rebuildIntruderPairs(newToOld);
+}
+
+void World::refreshKinematics() {
+  const ParticleStore& s = store_;
+  kinematics_.resize(s.size());
+  for (std::uint32_t i = 0; i < s.size(); ++i) kinematics_[i] = Kinematics{s.x[i], s.y[i], s.vx[i], s.vy[i]};
 }
 
 bool World::intruderPairsStale() const {
@@ -419,104 +476,65 @@ void World::rebuildIntruderPairs(const std::vector<std::uint32_t>& newToOld) {
   }
   pairs.forceX.assign(pairs.size(), 0.0);
   pairs.forceY.assign(pairs.size(), 0.0);
+  pairs.torqueArm.assign(pairs.size(), 0.0);
   clumpXAtBuild_ = cx;
   clumpYAtBuild_ = cy;
   grainDisplacementAtIntruderBuild_ = std::sqrt(maxDisplacementSq_);
 }
 
-void World::computeForces(bool updateShear) {
+void World::computeContactForces(bool updateShear) {
   ParticleStore& s = store_;
   NeighbourList& list = list_;
   const ContactParams params = def_.contact;
   const double dt = def_.dt;
-  const double width = def_.boxWidth, halfWidth = 0.5 * width;
-
-  // 1. Every pair once: force, torque arm and updated history into the pair's own slot.
-  //    The largest overlap excess is a max, so it does not depend on the thread count either.
-  const std::uint32_t pairs = list.pairCount();
+  const double width = def_.boxWidth;
   const double alarmFraction = kOverlapAlarmFactor * def_.maxOverlapFraction;
+
+  // 1. Force blocks, each on one thread (any thread: a block's sums do not depend on which).
+  //    The largest overlap excess is a max, so it does not depend on the thread count either.
   double worstExcess = -std::numeric_limits<double>::infinity();
-#pragma omp parallel reduction(max : worstExcess)
-  {
-    const auto threads = static_cast<std::uint32_t>(omp_get_num_threads());
-    const auto t = static_cast<std::uint32_t>(omp_get_thread_num());
-    const std::uint32_t chunk = (pairs + threads - 1) / threads;
-    const std::uint32_t begin = std::min(pairs, t * chunk), end = std::min(pairs, begin + chunk);
-    worstExcess = computePairForces(begin, end, s, list, params, dt, width, updateShear, alarmFraction);
-  }
+  const auto blocks = static_cast<std::int64_t>(list.blockCount());
+#pragma omp parallel for schedule(dynamic, 1) reduction(max : worstExcess)
+  for (std::int64_t b = 0; b < blocks; ++b)
+    worstExcess = std::max(worstExcess, accumulateBlock(static_cast<std::uint32_t>(b), s, kinematics_.data(), list,
+                                                        params, dt, width, updateShear, alarmFraction));
 
-  // 2. Every grain sums its own pairs in list order (own row, then as partner), then gravity.
-  const double gravity = def_.gravity;
-  const std::uint32_t n = s.grainCount;
-#pragma omp parallel for schedule(static)
-  for (std::uint32_t i = 0; i < n; ++i) {
-    double fx = 0.0, fy = 0.0, arm = 0.0;
-    for (std::uint32_t k = list.rowStart[i]; k < list.rowStart[i + 1]; ++k) {
-      fx += list.forceX[k];
-      fy += list.forceY[k];
-      arm += list.torqueArm[k];
-    }
-    for (std::uint32_t r = list.revStart[i]; r < list.revStart[i + 1]; ++r) {
-      const std::uint32_t k = list.revPair[r];
-      fx -= list.forceX[k];
-      fy -= list.forceY[k];
-      arm += list.torqueArm[k];
-    }
-    s.fx[i] = fx;
-    s.fy[i] = fy - s.mass[i] * gravity;
-    s.torque[i] = -s.radius[i] * arm;
-  }
-
-  // 3. Intruder contacts, serially in list order (a few hundred pairs): force on the grain, the
-  //    opposite on the clump, whose mass enters meff (as LAMMPS does for rigid bodies). The allowed
-  //    overlap is relative to the grain (see checkHealth).
+  // 2. Intruder contacts (a few hundred pairs).
+  if (hasIntruder_)
+    worstExcess = std::max(worstExcess, addIntruderContactForces(s, clump_, clumpState_, intruderPairs_, params, dt,
+                                                                 width, updateShear, alarmFraction));
   overlapAlarm_ = worstExcess > 0.0;
-  if (!hasIntruder_) return;
-  IntruderPairs& ip = intruderPairs_;
-  ClumpState& clump = clumpState_;
-  const double invClumpMass = 1.0 / clump_.mass;
-  double clumpFx = 0.0, clumpFy = 0.0;
-  for (std::uint32_t p = 0; p < ip.size(); ++p) {
-    const std::uint32_t g = ip.grain[p], a = ip.atom[p];
-    double dx = s.x[g] - (clump.x + clump_.offsetX[a]);
-    if (dx > halfWidth) dx -= width;
-    else if (dx < -halfWidth) dx += width;
-    const double dy = s.y[g] - (clump.y + clump_.offsetY[a]);
-    const double meff = 1.0 / (s.invMass[g] + invClumpMass);
-    const ContactForce c =
-        hertzHistoryContact(params, dt, dx, dy, s.vx[g] - clump.vx, s.vy[g] - clump.vy, s.radius[g],
-                            clump_.atomRadius, s.omega[g], 0.0, meff, ip.shearX[p], ip.shearY[p],
-                            updateShear);
-    ip.shearX[p] = c.shearX;
-    ip.shearY[p] = c.shearY;
-    ip.forceX[p] = c.fx;
-    ip.forceY[p] = c.fy;
-    const double closest = std::max(0.0, s.radius[g] + clump_.atomRadius - alarmFraction * 2.0 * s.radius[g]);
-    overlapAlarm_ = overlapAlarm_ || closest * closest - (dx * dx + dy * dy) > 0.0;
-    if (g < n) {
-      s.fx[g] += c.fx;
-      s.fy[g] += c.fy;
-      s.torque[g] -= s.radius[g] * c.torqueArm;
-    }
-    clumpFx -= c.fx;
-    clumpFy -= c.fy;
-  }
-  clump.contactFx = clumpFx;
-  clump.contactFy = clumpFy;
 }
 
-void World::finalIntegrate() {
+void World::completeForces(bool kick) {
+  // 3. Cross pairs reach their partner grain, in pair order; then gravity; then, in a step, the
+  //    second half kick (fused here: one pass over the grains instead of two).
   const double halfDt = 0.5 * def_.dt;
+  const double gravity = def_.gravity;
   ParticleStore& s = store_;
+  const NeighbourList& list = list_;
   const std::uint32_t n = s.grainCount;
 #pragma omp parallel for schedule(static)
   for (std::uint32_t i = 0; i < n; ++i) {
-    const double kick = halfDt * s.invMass[i];
-    s.vx[i] += kick * s.fx[i];
-    s.vy[i] += kick * s.fy[i];
-    s.omega[i] += halfDt * s.invInertia[i] * s.torque[i];
+    double fx = s.fx[i], fy = s.fy[i], torque = s.torque[i];
+    for (std::uint32_t c = list.crossStart[i]; c < list.crossStart[i + 1]; ++c) {
+      const std::uint32_t k = list.crossPair[c];
+      fx -= list.forceX[k];
+      fy -= list.forceY[k];
+      torque -= s.radius[i] * list.torqueArm[k];
+    }
+    fy -= s.mass[i] * gravity;
+    s.fx[i] = fx;
+    s.fy[i] = fy;
+    s.torque[i] = torque;
+    if (kick) {
+      const double kickScale = halfDt * s.invMass[i];
+      s.vx[i] += kickScale * fx;
+      s.vy[i] += kickScale * fy;
+      s.omega[i] += halfDt * s.invInertia[i] * torque;
+    }
   }
-  if (hasIntruder_ && motion_.verticalFree)
+  if (kick && hasIntruder_ && motion_.verticalFree)
     clumpState_.vy += halfDt * (clumpState_.contactFy - clump_.mass * def_.gravity) / clump_.mass;
 }
 
@@ -597,6 +615,25 @@ double World::kineticEnergy() const {
     energy += 0.5 * s.mass[i] * (s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i]) + 0.5 * inertia * s.omega[i] * s.omega[i];
   }
   return energy;
+}
+
+namespace {
+template <class... Vectors>
+std::size_t arrayBytes(const Vectors&... v) {
+  return ((v.size() * sizeof(typename Vectors::value_type)) + ...);
+}
+}  // namespace
+
+std::size_t World::stateBytes() const {
+  const ParticleStore& s = store_;
+  const NeighbourList& l = list_;
+  const IntruderPairs& ip = intruderPairs_;
+  return arrayBytes(s.x, s.y, s.vx, s.vy, s.omega, s.fx, s.fy, s.torque, s.radius, s.invMass, s.invInertia, s.mass,
+                       s.tag, kinematics_, xAtBuild_, yAtBuild_, pendingNewToOld_) +
+         arrayBytes(l.rowStart, l.owner, l.partner, l.shearX, l.shearY, l.forceX, l.forceY, l.torqueArm,
+                       l.crossStart, l.crossPair) +
+         arrayBytes(ip.grain, ip.atom, ip.shearX, ip.shearY, ip.forceX, ip.forceY, ip.torqueArm, clump_.offsetX,
+                       clump_.offsetY);
 }
 
 std::string World::stateHash() const {
@@ -738,7 +775,7 @@ World World::load(BinaryReader& in) {
   list.forceX.assign(pairs, 0.0);
   list.forceY.assign(pairs, 0.0);
   list.torqueArm.assign(pairs, 0.0);
-  if (!neverBuilt) list.deriveIndex(static_cast<std::uint32_t>(n));
+  if (!neverBuilt) list.deriveIndex(forceBlockRows(def.boxWidth));
 
   IntruderPairs& ip = w.intruderPairs_;
   ip.grain = in.array<std::uint32_t>();
@@ -747,6 +784,7 @@ World World::load(BinaryReader& in) {
   ip.shearY = in.array<double>();
   ip.forceX.assign(ip.grain.size(), 0.0);
   ip.forceY.assign(ip.grain.size(), 0.0);
+  ip.torqueArm.assign(ip.grain.size(), 0.0);
 
   w.hasIntruder_ = in.value<std::uint8_t>() != 0;
   w.clump_.offsetX = in.array<double>();
@@ -791,6 +829,7 @@ World World::load(BinaryReader& in) {
   w.pendingNewToOld_ = in.array<std::uint32_t>();
   if (!w.listsStale_ && (w.xAtBuild_.size() != s.grainCount || w.yAtBuild_.size() != s.grainCount))
     throw Error(in.what() + " is corrupt: build positions do not match the grains");
+  w.refreshKinematics();
   return w;
 }
 

@@ -14,6 +14,7 @@
 #include "physics/ContactLaw.h"
 #include "physics/Intruder.h"
 #include "physics/NeighbourList.h"
+#include "physics/PairKernel.h"
 #include "physics/ParticleStore.h"
 
 namespace wiggle {
@@ -44,6 +45,14 @@ class SimulationError : public Error {
 // `speed`, with F = kn sqrt(Reff) delta^(3/2) (no damping): t_c = 2.9433 * delta_max / speed,
 // delta_max = (5 meff v^2 / (4 kn sqrt(Reff)))^(2/5), meff = m/2, Reff = r/2.
 double hertzContactTime(double kn, double radius, double mass, double speed);
+
+// Stage 5c of the step (ARCHITECTURE.md): the contacts between grains and the clump's atoms, in list
+// order. Adds each force to its grain (base particles get none), sets the clump's contact force
+// (the sum, serially in list order) and returns the largest overlap excess (PairKernel.h).
+// The clump's total mass enters meff, as LAMMPS does for rigid bodies.
+double addIntruderContactForces(ParticleStore& s, const ClumpDef& clump, ClumpState& state, IntruderPairs& pairs,
+                                const ContactParams& params, double dt, double width, bool updateShear,
+                                double alarmFraction);
 
 class World {
  public:
@@ -78,6 +87,9 @@ class World {
   const NeighbourList& neighbours() const { return list_; }
   const IntruderPairs& intruderPairs() const { return intruderPairs_; }
   double kineticEnergy() const;   // translational + rotational, grains only
+  // Bytes of the simulation state's arrays, by their lengths (deterministic, unlike their
+  // allocations, which differ after a load).
+  std::size_t stateBytes() const;
   std::string stateHash() const;  // hash of the bits of the whole dynamic state
 
   // --- persistence: the full state, so that a loaded world continues bit for bit ---
@@ -91,14 +103,16 @@ class World {
   void rebuildNeighbours();       // wrap, maybe re-sort, rebuild both lists carrying history
   void rebuildIntruderPairs(const std::vector<std::uint32_t>& newToOld);
   bool intruderPairsStale() const;
-  void computeForces(bool updateShear);
-  void finalIntegrate();
+  void computeContactForces(bool updateShear);  // contacts only: grains' sums are completed by...
+  void completeForces(bool kick);                // ...cross pairs and gravity, then the half kick
+  void refreshKinematics();       // every particle's Kinematics record from the store
   void checkHealth() const;
   void checkTimeStep() const;
   void invalidate();              // structure changed: rebuild and re-prepare before the next step
 
   WorldDef def_;
   ParticleStore store_;
+  std::vector<Kinematics> kinematics_;  // mirror of the store's x, y, vx, vy
   NeighbourList list_;
   IntruderPairs intruderPairs_;
   bool hasIntruder_ = false;

@@ -14,7 +14,7 @@ namespace wiggle {
 
 namespace {
 
-constexpr std::uint64_t kBedFormat = 3;  // bump when the bed-making algorithm changes
+constexpr std::uint64_t kBedFormat = 4;  // bump when bed making or the engine's arithmetic changes (4: the contact kernel with fewer divisions and block-wise force sums)
 constexpr std::uint64_t kStepsPerCheck = 1000;
 
 // Does a grain of radius r at (x, y) overlap any intruder atom (or sit inside the clump, which

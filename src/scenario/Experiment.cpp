@@ -429,6 +429,11 @@ RunOutcome runExperiment(const RunConfig& config, const RunOptions& options) {
   summary["bed_key"] = state.bedKey;
   summary["ns_per_particle_step"] = 1e9 * state.runWallSeconds / (particles * static_cast<double>(world.stepCount()));
   summary["state_hash"] = world.stateHash();
+  // Engine diagnostics at the end of the run (docs/PERFORMANCE.md): list sizes and the memory of the
+  // simulation state per grain.
+  summary["neighbour_pairs"] = world.neighbours().pairCount();
+  summary["intruder_pairs"] = world.intruderPairs().size();
+  summary["state_bytes_per_grain"] = static_cast<double>(world.stateBytes()) / std::max(1u, world.grainCount());
   summary["shape"] = config.intruder.shape;
   summary["amplitude"] = config.drive.amplitude;
   summary["period"] = config.drive.period;

@@ -1,0 +1,152 @@
+#pragma once
+// The pair loop's building blocks, shared by the grain pairs and the intruder pairs of World and by
+// the micro-benchmarks: a pair's inputs (gathered for one pair or for four at once), and the
+// contact law over them writing the pair's slots. Every vector path gives the scalar path's bits
+// (core/Simd.h), so which one runs never changes a result.
+#include <cstdint>
+#include <limits>
+#include <type_traits>
+#include <vector>
+
+#include "core/Simd.h"
+#include "physics/ContactLaw.h"
+#include "physics/ParticleStore.h"
+
+namespace wiggle {
+
+// A particle's position and velocity in one 32-byte record: a copy of the store's values that World
+// refreshes whenever they change (the drift, a rebuild, a load), so that one vector subtraction
+// gives a pair's dx, dy, dvx, dvy where the store's arrays need eight scalar loads.
+struct alignas(32) Kinematics {
+  double x, y, vx, vy;
+};
+
+// A pair's inputs to the contact law, for one pair (V = double) or for lanes of pairs.
+template <class V>
+struct PairInputs {
+  V dx, dy, dvx, dvy;     // i minus j, x minimum-imaged
+  V radI, radJ, omegaI, omegaJ;
+  V invMassSum;           // 1/mi + 1/mj
+  V alarmRadius;          // the radius the overlap alarm is relative to
+};
+
+template <class V>
+inline V minimumImage(V dx, double width) {
+  using simd::select;
+  const double halfWidth = 0.5 * width;
+  return select(dx > V(halfWidth), dx - V(width), select(dx < V(-halfWidth), dx + V(width), dx));
+}
+
+// Where pairs' results go: history (read and written), force on i and torque arm, indexed by pair.
+struct PairSlots {
+  double *shearX, *shearY, *forceX, *forceY, *torqueArm;
+};
+
+// The contact law for the pairs in `in` (one, or lanes of four), whose slots start at k: history
+// read from and written to shearX/Y[k..], force and torque arm written to forceX/Y and torqueArm.
+// Returns, per lane, (radI + radJ - allowed)^2 - r^2, allowed being `alarmFraction` of the diameter
+// 2 alarmRadius: positive when a pair overlaps more than that, which is how a blow-up shows between
+// two health checks. Squared, so that it costs no sqrt.
+template <class V>
+inline V evaluatePairs(const PairInputs<V>& in, std::uint32_t k, PairSlots slots, const ContactParams& params,
+                       double dt, bool updateShear, double alarmFraction) {
+  using simd::load;
+  using simd::store;
+  const ContactForceOf<V> c =
+      hertzHistoryContact(params, dt, in.dx, in.dy, in.dvx, in.dvy, in.radI, in.radJ, in.omegaI, in.omegaJ,
+                          in.invMassSum, load<V>(slots.shearX + k), load<V>(slots.shearY + k), updateShear);
+  store(slots.shearX + k, c.shearX);
+  store(slots.shearY + k, c.shearY);
+  store(slots.forceX + k, c.fx);
+  store(slots.forceY + k, c.fy);
+  store(slots.torqueArm + k, c.torqueArm);
+  using simd::max;
+  const V closest = max(V(0.0), in.radI + in.radJ - V(alarmFraction * 2.0) * in.alarmRadius);
+  return closest * closest - (in.dx * in.dx + in.dy * in.dy);
+}
+
+// Calls evaluate(m, V{}) for m = 0, 4, 8, ... < n in lanes of four where the CPU has them, then one
+// by one with V = double, and returns the largest value it returned over every lane.
+template <class Evaluate>
+inline double maxOverLanes(std::uint32_t n, Evaluate&& evaluate) {
+  double excess = -std::numeric_limits<double>::infinity();
+  std::uint32_t m = 0;
+#if WIGGLE_SIMD_DOUBLE4
+  simd::Double4 excess4(excess);
+  for (; m + simd::Double4::kLanes <= n; m += simd::Double4::kLanes) excess4 = max(excess4, evaluate(m, simd::Double4{}));
+  excess = simd::horizontalMax(excess4);
+#endif
+  for (; m < n; ++m) excess = simd::max(excess, evaluate(m, 0.0));
+  return excess;
+}
+
+// Inputs of up to kChunk pairs gathered one by one (the intruder's contacts, the benchmarks), to be
+// read back as lanes.
+constexpr std::uint32_t kChunk = 64;
+struct PairChunk {
+  alignas(32) double dx[kChunk], dy[kChunk], dvx[kChunk], dvy[kChunk], radI[kChunk], radJ[kChunk], omegaI[kChunk],
+      omegaJ[kChunk], invMassSum[kChunk], alarmRadius[kChunk];
+
+  void set(std::uint32_t m, const PairInputs<double>& in) {
+    dx[m] = in.dx;
+    dy[m] = in.dy;
+    dvx[m] = in.dvx;
+    dvy[m] = in.dvy;
+    radI[m] = in.radI;
+    radJ[m] = in.radJ;
+    omegaI[m] = in.omegaI;
+    omegaJ[m] = in.omegaJ;
+    invMassSum[m] = in.invMassSum;
+    alarmRadius[m] = in.alarmRadius;
+  }
+  template <class V>
+  PairInputs<V> inputs(std::uint32_t m) const {
+    using simd::load;
+    return {load<V>(dx + m),     load<V>(dy + m),     load<V>(dvx + m),        load<V>(dvy + m),
+            load<V>(radI + m),   load<V>(radJ + m),   load<V>(omegaI + m),     load<V>(omegaJ + m),
+            load<V>(invMassSum + m), load<V>(alarmRadius + m)};
+  }
+};
+
+// Evaluates pairs [0, n) of a chunk whose slots start at k0; returns the largest overlap excess.
+inline double evaluateChunk(const PairChunk& c, std::uint32_t n, std::uint32_t k0, PairSlots slots,
+                            const ContactParams& params, double dt, bool updateShear, double alarmFraction) {
+  return maxOverLanes(n, [&](std::uint32_t m, auto lane) {
+    using V = decltype(lane);
+    return evaluatePairs(c.inputs<V>(m), k0 + m, slots, params, dt, updateShear, alarmFraction);
+  });
+}
+
+// Inputs of grain pair (i, j): positions and velocities from the Kinematics records (the same
+// values as the store's), the rest from the store.
+inline PairInputs<double> grainPairInputs(const Kinematics* kin, const ParticleStore& s, std::uint32_t i, std::uint32_t j,
+                                   double width) {
+  const Kinematics& a = kin[i];
+  const Kinematics& b = kin[j];
+  return {minimumImage(a.x - b.x, width), a.y - b.y, a.vx - b.vx, a.vy - b.vy, s.radius[i], s.radius[j],
+          s.omega[i], s.omega[j], s.invMass[i] + s.invMass[j], simd::min(s.radius[i], s.radius[j])};
+}
+
+#if WIGGLE_SIMD_DOUBLE4
+// The same for four pairs at once, with the same operations: one subtraction of two records gives
+// a pair's (dx, dy, dvx, dvy) as a row, and a 4 x 4 transpose turns four pairs' rows into lanes.
+inline PairInputs<simd::Double4> grainPairInputs(const Kinematics* kin, const ParticleStore& s, const std::uint32_t* owner,
+                                          const std::uint32_t* partner, double width) {
+  __m256d d[4];
+  for (int m = 0; m < 4; ++m)
+    d[m] = _mm256_sub_pd(_mm256_load_pd(&kin[owner[m]].x), _mm256_load_pd(&kin[partner[m]].x));
+  const __m256d t0 = _mm256_unpacklo_pd(d[0], d[1]), t1 = _mm256_unpackhi_pd(d[0], d[1]);
+  const __m256d t2 = _mm256_unpacklo_pd(d[2], d[3]), t3 = _mm256_unpackhi_pd(d[2], d[3]);
+  using V = simd::Double4;
+  auto lanes = [](const std::vector<double>& v, const std::uint32_t* index) {
+    return V{_mm256_set_pd(v[index[3]], v[index[2]], v[index[1]], v[index[0]])};
+  };
+  const V radI = lanes(s.radius, owner), radJ = lanes(s.radius, partner);
+  return {minimumImage(V{_mm256_permute2f128_pd(t0, t2, 0x20)}, width), V{_mm256_permute2f128_pd(t1, t3, 0x20)},
+          V{_mm256_permute2f128_pd(t0, t2, 0x31)}, V{_mm256_permute2f128_pd(t1, t3, 0x31)}, radI, radJ,
+          lanes(s.omega, owner), lanes(s.omega, partner), lanes(s.invMass, owner) + lanes(s.invMass, partner),
+          min(radI, radJ)};
+}
+#endif
+
+}  // namespace wiggle
