@@ -432,6 +432,12 @@ RunOutcome runExperiment(const RunConfig& config, const RunOptions& options) {
   // Engine diagnostics at the end of the run (docs/PERFORMANCE.md): list sizes and the memory of the
   // simulation state per grain.
   summary["neighbour_pairs"] = world.neighbours().pairCount();
+  summary["contacts"] = [&] {  // listed pairs that touch (a non-zero force) at the last step
+    const NeighbourList& list = world.neighbours();
+    std::uint32_t touching = 0;
+    for (std::uint32_t k = 0; k < list.pairCount(); ++k) touching += list.forceX[k] != 0.0 || list.forceY[k] != 0.0;
+    return touching;
+  }();
   summary["intruder_pairs"] = world.intruderPairs().size();
   summary["state_bytes_per_grain"] = static_cast<double>(world.stateBytes()) / std::max(1u, world.grainCount());
   summary["shape"] = config.intruder.shape;
