@@ -3,6 +3,8 @@
 //                      AVX) over a batch of pairs (~75 % touching), the chunk's inputs filled from arrays
 //   BM_ContactKernelScalar  the same pairs one at a time through the composed law (the reference)
 //   BM_IntruderContacts addIntruderContactForces: the clump's contacts and force sum in the pile
+//   BM_LaneSqrt, BM_LaneDivide  throughput of the lanes' sqrt and division over varied operands,
+//                      the hardware figures behind docs/PERFORMANCE.md's limit estimate
 //   BM_NeighbourBuild  NeighbourList::build on a settled pile, carrying history from the old list
 //   BM_WorldStep       one full World::step of the settled pile with a wiggling disk
 //   BM_FieldFrame      one FieldObserver frame (Phi, v, contact stress on the 61 x 61 grid)
@@ -107,6 +109,39 @@ void runContactKernel(benchmark::State& state, bool scalar) {
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * static_cast<std::int64_t>(n));
 }
+
+// One operation over 4,096 varied operands in [0.5, 2), 4 lanes at a time (doubles without AVX):
+// independent operations, so the time per operation is the unit's throughput, not its latency, on
+// operands like the kernel's. Items are lanes.
+template <class Op>
+void runLaneThroughput(benchmark::State& state, Op op) {
+#if WIGGLE_SIMD_DOUBLE4
+  using V = simd::Double4;
+#else
+  using V = double;
+#endif
+  constexpr std::size_t kCount = 4096;
+  std::vector<double> in(kCount), out(kCount);
+  Lcg rng{3};
+  for (double& v : in) v = 0.5 + 1.5 * rng.next();
+  for (auto _ : state) {
+    for (std::size_t k = 0; k < kCount; k += simd::kLaneCount<V>) simd::store(out.data() + k, op(simd::load<V>(in.data() + k)));
+    benchmark::DoNotOptimize(out.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * kCount);
+}
+void BM_LaneSqrt(benchmark::State& state) {
+  runLaneThroughput(state, [](auto x) {
+    using simd::sqrt;
+    return sqrt(x);
+  });
+}
+void BM_LaneDivide(benchmark::State& state) {
+  runLaneThroughput(state, [](auto x) { return decltype(x)(1.0) / x; });
+}
+BENCHMARK(BM_LaneSqrt);
+BENCHMARK(BM_LaneDivide);
 
 void BM_ContactKernel(benchmark::State& state) { runContactKernel(state, false); }
 void BM_ContactKernelScalar(benchmark::State& state) { runContactKernel(state, true); }
