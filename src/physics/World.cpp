@@ -60,14 +60,16 @@ double accumulateBlock(std::uint32_t b, ParticleStore& s, const Kinematics* kin,
   for (std::uint32_t first = list.rowStart[r0]; first < end; first += kChunk) {
     const std::uint32_t last = std::min(first + kChunk, end);
     // Gathered straight into registers, four pairs at a time.
-    excess = std::max(excess, maxOverLanes(last - first, [&](std::uint32_t m, auto lane) {
+    excess = std::max(excess, maxOverLanes(last - first, [&](std::uint32_t m, [[maybe_unused]] auto lane) {
       const std::uint32_t k = first + m;
-      if constexpr (std::is_same_v<decltype(lane), double>)
-        return evaluatePairs(grainPairInputs(kin, s, owner[k], partner[k], width), k, slots, params, dt, updateShear,
-                             alarmFraction);
-      else
+#if WIGGLE_SIMD_DOUBLE4
+      if constexpr (!std::is_same_v<decltype(lane), double>)  // four pairs: the vector gather
         return evaluatePairs(grainPairInputs(kin, s, owner + k, partner + k, width), k, slots, params, dt,
                              updateShear, alarmFraction);
+      else
+#endif
+        return evaluatePairs(grainPairInputs(kin, s, owner[k], partner[k], width), k, slots, params, dt, updateShear,
+                             alarmFraction);
     }));
     for (std::uint32_t k = first; k < last; ++k) {
       const std::uint32_t i = owner[k], j = partner[k];

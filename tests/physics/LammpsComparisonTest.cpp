@@ -12,9 +12,9 @@
 // the same formula (lammpsSingle below, a transcription of single() in 2D): agreement checks
 // wiggle's shear history itself, not only its effect on the motion.
 //
-// Tolerance (why these numbers). wiggle does not add a particle's pair forces in LAMMPS's order
-// and writes meff as 1/(1/mi + 1/mj) and the kick as dt/2 * (1/m), so a force can differ from
-// LAMMPS's by an ulp or so at any step, and the dynamics then amplify that difference: stiff Hertz
+// Tolerance (why these numbers). wiggle does not add a particle's pair forces in LAMMPS's order,
+// divides twice per pair where LAMMPS divides seven times (ContactLaw.h) and writes the kick as
+// dt/2 * (1/m), so a force can differ from LAMMPS's by a few ulps at any step, and the dynamics then amplify that difference: stiff Hertz
 // contacts and every collision multiply it (by ~1e6 over 8000 steps of the pile). Rather than guess
 // the amplification, each case is also run in wiggle a second time with every initial grain
 // coordinate, velocity and spin moved by one ulp; the distance between the two wiggle runs (the
@@ -22,8 +22,8 @@
 // deviation from LAMMPS is below kRoundOffFactor (100) times the probe's, plus kFloor (1e-12) of
 // its scale (largest |value| LAMMPS reports for it) for stretches where the probe is still exactly
 // zero. 100x leaves room for LAMMPS's round-off being a different perturbation than one ulp in the
-// initial state. Measured (relative to scale): oblique 4e-16, bounce 0 (bit for bit), pile 6e-12,
-// clump 8e-10, each 4x to 1e5x below its bound (printed by each test). Real modelling errors (a
+// initial state. Measured (relative to scale): oblique 6e-16, bounce 1.7e-12, pile 8e-12,
+// clump 2.7e-9, each 4x to 1e5x below its bound (printed by each test). Real modelling errors (a
 // factor in a damping term, meff of a frozen or rigid partner, no history projection, a wrong cap
 // rescaling, disc instead of sphere inertia) exceed the bound by 3e4x to 2e11x
 // (tools/lammps_reference/README.md lists what was tried).
