@@ -60,7 +60,8 @@ inline ContactGeometry<V> contactGeometry(V dx, V dy, V radI, V radJ, V invMassS
 }
 
 // Stage 2: relative velocities, the normal force, the history update and the uncapped tangential
-// force.
+// force. (Callers pass the parameters as a local copy, so that the compiler can hoist 1/kt out of
+// their pair loops: a reference might alias the slots they store to.)
 template <class V>
 struct ContactTrial {
   V ccel;            // normal force over r

@@ -48,7 +48,7 @@ struct PairSlots {
 // 2 alarmRadius: positive when a pair overlaps more than that, which is how a blow-up shows between
 // two health checks. Squared, so that it costs no sqrt.
 template <class V>
-inline V evaluatePairs(const PairInputs<V>& in, std::uint32_t k, PairSlots slots, const ContactParams& params,
+inline V evaluatePairs(const PairInputs<V>& in, std::uint32_t k, PairSlots slots, const ContactParams params,
                        double dt, bool updateShear, double alarmFraction) {
   using simd::load;
   using simd::store;
@@ -73,10 +73,12 @@ inline double maxOverLanes(std::uint32_t n, Evaluate&& evaluate) {
   std::uint32_t m = 0;
 #if WIGGLE_SIMD_DOUBLE4
   simd::Double4 excess4(excess);
-  for (; m + simd::Double4::kLanes <= n; m += simd::Double4::kLanes) excess4 = max(excess4, evaluate(m, simd::Double4{}));
+  // The new value first: max returns its second argument for a NaN, so a NaN lane (a blow-up, which
+  // the health check reports) never displaces an excess already seen.
+  for (; m + simd::Double4::kLanes <= n; m += simd::Double4::kLanes) excess4 = max(evaluate(m, simd::Double4{}), excess4);
   excess = simd::horizontalMax(excess4);
 #endif
-  for (; m < n; ++m) excess = simd::max(excess, evaluate(m, 0.0));
+  for (; m < n; ++m) excess = simd::max(evaluate(m, 0.0), excess);
   return excess;
 }
 

@@ -41,7 +41,7 @@ void requireFinite(double v, const char* what) {
 // in chunks of kChunk: evaluated (PairKernel.h), then added while their slots are in L1.
 // Returns the block's largest overlap excess (see evaluateChunk).
 double accumulateBlock(std::uint32_t b, ParticleStore& s, const Kinematics* kin, NeighbourList& list,
-                       const ContactParams& params, double dt, double width, bool updateShear, double alarmFraction) {
+                       const ContactParams params, double dt, double width, bool updateShear, double alarmFraction) {
   const std::uint32_t r0 = b * list.blockRows;
   const std::uint32_t r1 = std::min(r0 + list.blockRows, list.rowCount());
   std::fill(s.fx.begin() + r0, s.fx.begin() + r1, 0.0);
@@ -128,7 +128,7 @@ World::World(const WorldDef& def) : def_(def) {
 }
 
 double addIntruderContactForces(ParticleStore& s, const ClumpDef& clump, ClumpState& state, IntruderPairs& ip,
-                                const ContactParams& params, double dt, double width, bool updateShear,
+                                const ContactParams params, double dt, double width, bool updateShear,
                                 double alarmFraction) {
   double worstExcess = -std::numeric_limits<double>::infinity();
   const double invClumpMass = 1.0 / clump.mass;
@@ -773,6 +773,11 @@ World World::load(BinaryReader& in) {
   for (std::size_t i = 0; listOk && i + 1 < list.rowStart.size(); ++i)
     listOk = list.rowStart[i] <= list.rowStart[i + 1];
   for (std::size_t k = 0; listOk && k < pairs; ++k) listOk = list.partner[k] < n;
+  // Row i holds partners above i in ascending order: the force blocks rely on it (a pair only ever
+  // adds to its own block's grains or, later, to a cross partner).
+  for (std::size_t i = 0; listOk && i + 1 < list.rowStart.size(); ++i)
+    for (std::uint32_t k = list.rowStart[i]; listOk && k < list.rowStart[i + 1]; ++k)
+      listOk = list.partner[k] > i && (k == list.rowStart[i] || list.partner[k] > list.partner[k - 1]);
   if (!listOk) throw Error(in.what() + " is corrupt: the neighbour list is inconsistent");
   list.forceX.assign(pairs, 0.0);
   list.forceY.assign(pairs, 0.0);

@@ -51,7 +51,7 @@ double hertzContactTime(double kn, double radius, double mass, double speed);
 // (the sum, serially in list order) and returns the largest overlap excess (PairKernel.h).
 // The clump's total mass enters meff, as LAMMPS does for rigid bodies.
 double addIntruderContactForces(ParticleStore& s, const ClumpDef& clump, ClumpState& state, IntruderPairs& pairs,
-                                const ContactParams& params, double dt, double width, bool updateShear,
+                                ContactParams params, double dt, double width, bool updateShear,
                                 double alarmFraction);
 
 class World {
