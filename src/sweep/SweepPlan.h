@@ -19,9 +19,9 @@ namespace wiggle {
 // One place for the numbers; docs/SWEEPS.md quotes them and says how they were measured.
 struct CostModel {
   // Wall time per particle per step of one single-threaded case on this project's reference
-  // machine [ns]: 79 ns, bench/run_bench.sh --quick on the configs/small.toml bed, 1 thread
-  // (docs/PERFORMANCE.md, 2026-11-22).
-  static constexpr double nsPerParticleStep = 79.0;
+  // machine [ns]: 55 ns, bench/run_bench.sh on the configs/small.toml bed, 1 thread, median of
+  // 3 rounds on the AMD EPYC (Zen 3) machine (docs/PERFORMANCE.md, session 3, 2026-11-22).
+  static constexpr double nsPerParticleStep = 55.0;
   // Random loose packing of the poured bed: area fraction of grains below the free surface.
   static constexpr double packing = 0.84;
   // Simulated time a bed spends per poured batch (falling and settling), and on the final
