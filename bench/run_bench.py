@@ -43,10 +43,10 @@ def log(msg):
     print(msg, flush=True)
 
 
-def run(cmd, cwd=None, env=None, capture=True):
+def run(cmd, cwd=None, env=None, capture=True, show_stderr=False):
     r = subprocess.run(cmd, cwd=cwd, env=env, text=True,
                        stdout=subprocess.PIPE if capture else None,
-                       stderr=subprocess.PIPE if capture else None)
+                       stderr=subprocess.PIPE if capture and not show_stderr else None)
     if r.returncode != 0:
         sys.exit("command failed (%d): %s\n%s%s" % (r.returncode, " ".join(cmd),
                                                     r.stdout or "", r.stderr or ""))
@@ -163,7 +163,8 @@ def main():
         deck_dir = os.path.join(args.work_dir, case, "deck")
         log("[%s] bed + export-lammps (the bed is made once and cached; that can take long) ..." % case)
         t0 = datetime.datetime.now()
-        r = run([wiggle, "export-lammps"] + sets(case_sets) + ["--out", deck_dir], env=env)
+        # stderr passes through: making the paper bed takes long, and its progress lines say how far it is.
+        r = run([wiggle, "export-lammps"] + sets(case_sets) + ["--out", deck_dir], env=env, show_stderr=True)
         log("  " + r.stdout.strip().replace("\n", "\n  ") +
             "  (%.0f s)" % (datetime.datetime.now() - t0).total_seconds())
         for rnd in range(1, args.rounds + 1):

@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -195,11 +196,18 @@ World withoutContactHistory(const World& world) {
 
 LammpsExportResult exportLammps(const RunConfig& config, const std::string& dir, bool progressLine) {
   const ClumpDef clump = checkedClump(config);
+  // On a terminal a rewritten status line; otherwise (a log, a benchmark script) a line every 30 s,
+  // so that a bed that takes an hour to make shows that it is getting on.
   const bool terminal = progressLine && ::isatty(STDERR_FILENO);
+  auto lastLine = std::chrono::steady_clock::now();
   CachedBed bed = obtainBed(config, clump, [&](const BedStatus& st) {
-    if (!terminal) return;
-    std::fprintf(stderr, "\r\033[K[bed] %s batch %d, %u grains, surface %.4g / %.4g, t = %.4g", st.stage.c_str(),
-                 st.batch, st.grains, st.surface, config.box.bedHeight, st.time);
+    if (!progressLine) return;
+    const auto now = std::chrono::steady_clock::now();
+    if (!terminal && now - lastLine < std::chrono::seconds(30)) return;
+    lastLine = now;
+    std::fprintf(stderr, "%s[bed] %s batch %d, %u grains, surface %.4g / %.4g, t = %.4g%s", terminal ? "\r\033[K" : "",
+                 st.stage.c_str(), st.batch, st.grains, st.surface, config.box.bedHeight, st.time,
+                 terminal ? "" : "\n");
     std::fflush(stderr);
   });
   if (terminal) std::fprintf(stderr, "\r\033[K");
