@@ -39,7 +39,7 @@ void requireFinite(double v, const char* what) {
 // force added to the owner and, if the partner is a grain of this block, to the partner, in pair
 // order. The block's grains start from zero: they get no other contribution before this. Pairs go
 // in chunks of kChunk: evaluated (PairKernel.h), then added while their slots are in L1.
-// Returns the block's largest overlap excess (see evaluateChunk).
+// Returns the block's largest overlap excess (see evaluatePairs).
 double accumulateBlock(std::uint32_t b, ParticleStore& s, const Kinematics* kin, NeighbourList& list,
                        const ContactParams params, double dt, double width, bool updateShear, double alarmFraction) {
   const std::uint32_t r0 = b * list.blockRows;
