@@ -175,7 +175,7 @@ const std::vector<KeyInfo>& keyTable() {
       number("run.sample_interval", [](C& c) -> double& { return c.run.sampleInterval; }, above(0),
              noBound, "sqrt(d/g)", "trajectory sampling interval; a whole number of run.dt steps"),
       number("run.checkpoint_interval", [](C& c) -> double& { return c.run.checkpointInterval; },
-             above(0), noBound, "s", "wall-clock time between checkpoints"),
+             above(0), noBound, "s", "wall-clock time between checkpoints (of the run, and of a bed being made)"),
       number("run.dump_interval", [](C& c) -> double& { return c.run.dumpInterval; }, atLeast(0),
              noBound, "sqrt(d/g)",
              "interval of LAMMPS text dump frames (0 = none); a whole number of run.dt steps"),

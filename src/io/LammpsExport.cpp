@@ -10,6 +10,7 @@
 #include <numbers>
 
 #include "core/Error.h"
+#include "core/StopSignal.h"
 #include "io/AtomicFile.h"
 #include "scenario/BedMaker.h"
 #include "scenario/Experiment.h"
@@ -200,6 +201,7 @@ LammpsExportResult exportLammps(const RunConfig& config, const std::string& dir,
   // so that a bed that takes an hour to make shows that it is getting on.
   const bool terminal = progressLine && ::isatty(STDERR_FILENO);
   auto lastLine = std::chrono::steady_clock::now();
+  const StopSignalGuard stopOnSignal;  // SIGINT/SIGTERM while the bed is made: save it, then stop
   CachedBed bed = obtainBed(config, clump, [&](const BedStatus& st) {
     if (!progressLine) return;
     const auto now = std::chrono::steady_clock::now();

@@ -1,12 +1,15 @@
 #include "scenario/BedMaker.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
 
 #include "core/Hash.h"
 #include "core/Rng.h"
+#include "core/StopSignal.h"
 #include "io/AtomicFile.h"
 #include "io/StateFile.h"
 
@@ -50,12 +53,14 @@ WorldDef worldDefFor(const RunConfig& config) {
 }
 
 std::string bedKey(const RunConfig& c, const ClumpDef& clump) {
+  // bed.max_time is left out on purpose: it only bounds the work, and a bed that completes is the
+  // same bed whatever the bound (paper.toml and the benchmark share the paper bed this way).
   Hasher h;
   h.addValue(kBedFormat);
   h.addValue(kStateFormatVersion);
   for (double v : {c.box.width, c.box.bedHeight, c.grains.dMin, c.grains.dMax, c.contact.kn, c.contact.kt,
                    c.contact.gammaN, c.contact.gammaT, c.contact.mu, c.intruder.y0, c.bed.batchHeight,
-                   c.bed.settleSpeed, c.bed.restEnergy, c.bed.maxTime, c.run.dt, c.engine.skin,
+                   c.bed.settleSpeed, c.bed.restEnergy, c.run.dt, c.engine.skin,
                    c.engine.intruderSkin, clump.atomRadius, clump.mass})
     h.addValue(v);
   h.addValue(c.box.seed);
@@ -81,107 +86,193 @@ double freeSurfaceHeight(const World& world) {
   return top[columns / 2];
 }
 
-World makeBed(const RunConfig& config, const ClumpDef& clump, const BedProgress& progress) {
-  const double width = config.box.width;
-  const double target = config.box.bedHeight;
-  World world(worldDefFor(config));
-  for (int i = 0; i < static_cast<int>(std::lround(width)); ++i) world.addFrozen(i + 0.5, 0.0, 0.5);
-  const double cx = 0.5 * width, cy = config.intruder.y0;
-  world.setIntruder(clump, cx, cy);
+namespace {
 
-  // Each batch is a loose lattice (spacing above the largest diameter: no overlaps) starting one
-  // spacing above the current surface, with small random velocities to break the lattice.
+enum class BedStage : std::uint8_t { Pouring, Settling, Relaxing };
+
+// A bed in the making: the World and the maker's bookkeeping at a point where the maker can stop
+// and later continue with the same bits as if it never had (the end of a settling or relaxing
+// chunk). Saved in the cache directory beside the finished beds (bedPartialPath).
+struct PartialBed {
+  World world;
+  BedStage stage = BedStage::Pouring;
+  int batch = 0;               // batches poured so far
+  std::uint64_t serial = 0;    // grains offered so far (the random streams' index)
+  std::uint64_t steps = 0;     // steps of bed making so far
+  std::uint64_t batchSteps = 0, batchLimit = 0;  // of the batch settling now
+  double surface = 0.0;        // free surface when the last batch had settled
+  std::vector<double> recent;  // relaxing: kinetic energy per grain of the last time unit's checks
+
+  void save(BinaryWriter& out, const std::string& key) const {
+    out.string(key);
+    out.value(stage);
+    out.value<std::int64_t>(batch);
+    for (std::uint64_t v : {serial, steps, batchSteps, batchLimit}) out.value(v);
+    out.value(surface);
+    out.array(recent);
+    world.save(out);
+  }
+};
+
+PartialBed parsePartialBed(const std::string& file, const std::string& name, const std::string& key) {
+  const std::string payload = parseStateFile(file, name, "bed-partial");
+  BinaryReader in(payload.data(), payload.size(), name);
+  if (in.string() != key) throw Error(name + " holds a bed for other parameters");
+  const auto stage = in.value<BedStage>();
+  if (stage != BedStage::Settling && stage != BedStage::Relaxing) throw Error(name + " has an unknown stage");
+  const auto batch = in.value<std::int64_t>();
+  const auto serial = in.value<std::uint64_t>(), steps = in.value<std::uint64_t>();
+  const auto batchSteps = in.value<std::uint64_t>(), batchLimit = in.value<std::uint64_t>();
+  const auto surface = in.value<double>();
+  std::vector<double> recent = in.array<double>(1u << 20);
+  PartialBed p{World::load(in), stage, static_cast<int>(batch), serial, steps, batchSteps, batchLimit, surface,
+               std::move(recent)};
+  if (!in.atEnd()) throw Error(name + " has trailing data");
+  if (batch < 0 || batch > (1 << 30)) throw Error(name + " has an impossible batch count");
+  return p;
+}
+
+PartialBed startBed(const RunConfig& config, const ClumpDef& clump) {
+  World world(worldDefFor(config));
+  const double width = config.box.width;
+  for (int i = 0; i < static_cast<int>(std::lround(width)); ++i) world.addFrozen(i + 0.5, 0.0, 0.5);
+  world.setIntruder(clump, 0.5 * width, config.intruder.y0);
+  PartialBed p{std::move(world), BedStage::Pouring, 0, 0, 0, 0, 0, 0.0, {}};
+  p.surface = freeSurfaceHeight(p.world);
+  return p;
+}
+
+// Each batch is a loose lattice (spacing above the largest diameter: no overlaps) starting one
+// spacing above the highest grain, with small random velocities to break the lattice.
+void pourBatch(const RunConfig& config, const ClumpDef& clump, PartialBed& p) {
+  const double width = config.box.width;
+  const double cx = 0.5 * width, cy = config.intruder.y0;
   const double dMin = config.grains.dMin, dMax = config.grains.dMax;
   const double spacing = 1.05 * dMax;
   const int perRow = std::max(1, static_cast<int>(std::floor(width / spacing)));
   const double rowPitch = width / perRow;
   const std::uint64_t seed = config.box.seed;
-  std::uint64_t serial = 0;
+  // Start above the highest grain (not the median surface): a new grain must never overlap one
+  // left standing above the surface, or the overlap's repulsion blows the pile apart.
+  double highest = 0.5;
+  const ParticleStore& s = p.world.particles();
+  for (std::uint32_t i = 0; i < s.grainCount; ++i) highest = std::max(highest, s.y[i] + s.radius[i]);
+  const double yStart = highest + spacing;
+  for (double y = yStart; y < yStart + config.bed.batchHeight; y += spacing) {
+    for (int c = 0; c < perRow; ++c, ++p.serial) {
+      const double d = dMin + (dMax - dMin) * uniform01(seed, RngStream::GrainDiameter, p.serial);
+      const double jitter = 0.5 * (spacing - dMax) * (2.0 * uniform01(seed, RngStream::PourPosition, p.serial) - 1.0);
+      const double x = (c + 0.5) * rowPitch + jitter;
+      if (touchesClump(clump, cx, cy, x, y, 0.5 * d)) continue;
+      const double vx = 0.2 * (uniform01(seed, RngStream::PourVelocity, p.serial, 0) - 0.5);
+      const double vy = -0.2 * uniform01(seed, RngStream::PourVelocity, p.serial, 1);
+      p.world.addGrain(x, y, 0.5 * d, vx, vy);
+    }
+  }
+  ++p.batch;
+  // Settling ends when no grain is faster than settle_speed, or after the time a grain needs to
+  // fall the batch height and come to rest several times over.
+  const double fallTime = std::sqrt(2.0 * (config.bed.batchHeight + p.surface) / p.world.def().gravity);
+  p.batchLimit = static_cast<std::uint64_t>((4.0 * fallTime + 10.0) / config.run.dt);
+  p.batchSteps = 0;
+}
+
+// Called at every point where the making can stop and continue (PartialBed): saves it when due.
+using BedSaver = std::function<void(const PartialBed&)>;
+
+// Carries a bed in the making through to the end: pouring and settling batches until the free
+// surface reaches the target, levelling it there, relaxing to rest.
+World finishBed(const RunConfig& config, const ClumpDef& clump, PartialBed p, const BedProgress& progress,
+                const BedSaver& save) {
+  const double target = config.box.bedHeight;
   const double dt = config.run.dt;
   const auto maxSteps = static_cast<std::uint64_t>(config.bed.maxTime / dt);
-  std::uint64_t steps = 0;
   BedStatus status;
   auto report = [&](const char* stage) {
     if (!progress) return;
     status.stage = stage;
-    status.grains = world.grainCount();
-    status.time = static_cast<double>(steps) * dt;
+    status.batch = p.batch;
+    status.grains = p.world.grainCount();
+    status.surface = p.surface;
+    status.time = static_cast<double>(p.steps) * dt;
     progress(status);
   };
-
-  double surface = freeSurfaceHeight(world);
-  while (surface < target) {
-    // Start above the highest grain (not the median surface): a new grain must never overlap one
-    // left standing above the surface, or the overlap's repulsion blows the pile apart.
-    double highest = 0.5;
-    const ParticleStore& s = world.particles();
-    for (std::uint32_t i = 0; i < s.grainCount; ++i) highest = std::max(highest, s.y[i] + s.radius[i]);
-    const double yStart = highest + spacing;
-    for (double y = yStart; y < yStart + config.bed.batchHeight; y += spacing) {
-      for (int c = 0; c < perRow; ++c, ++serial) {
-        const double d = dMin + (dMax - dMin) * uniform01(seed, RngStream::GrainDiameter, serial);
-        const double jitter = 0.5 * (spacing - dMax) * (2.0 * uniform01(seed, RngStream::PourPosition, serial) - 1.0);
-        const double x = (c + 0.5) * rowPitch + jitter;
-        if (touchesClump(clump, cx, cy, x, y, 0.5 * d)) continue;
-        const double vx = 0.2 * (uniform01(seed, RngStream::PourVelocity, serial, 0) - 0.5);
-        const double vy = -0.2 * uniform01(seed, RngStream::PourVelocity, serial, 1);
-        world.addGrain(x, y, 0.5 * d, vx, vy);
-      }
-    }
-    ++status.batch;
-    // Settle: until no grain is faster than settle_speed, or the time a grain needs to fall the
-    // batch height and come to rest several times over.
-    const double fallTime = std::sqrt(2.0 * (config.bed.batchHeight + surface) / world.def().gravity);
-    const auto batchLimit = static_cast<std::uint64_t>((4.0 * fallTime + 10.0) / dt);
-    for (std::uint64_t batchSteps = 0; batchSteps < batchLimit && steps < maxSteps;) {
-      world.run(kStepsPerCheck);
-      batchSteps += kStepsPerCheck;
-      steps += kStepsPerCheck;
-      // Settled enough to pour on: the root-mean-square grain speed (a few fast rattlers do not
-      // hold the next batch back).
-      const double meanMass = totalMass(world) / std::max<std::uint32_t>(1, world.grainCount());
-      const double rmsSpeed = std::sqrt(2.0 * world.kineticEnergy() / std::max<std::uint32_t>(1, world.grainCount()) / meanMass);
-      if (rmsSpeed < config.bed.settleSpeed) break;
-      status.progress = std::min(0.9, 0.9 * surface / target);
-      report("pouring");
-    }
-    surface = freeSurfaceHeight(world);
-    status.surface = surface;
-    report("pouring");
-    if (steps >= maxSteps)
-      throw Error("bed making did not reach box.bed_height = " + std::to_string(target) + " within bed.max_time = " +
-                  std::to_string(config.bed.maxTime) + " (surface at " + std::to_string(surface) + ")");
-  }
-
-  // Level the surface at the target height, then relax to rest.
-  std::vector<bool> remove(world.grainCount());
-  const ParticleStore& s = world.particles();
-  for (std::uint32_t i = 0; i < s.grainCount; ++i) remove[i] = s.y[i] > target;
-  world.removeGrains(remove);
-  status.surface = freeSurfaceHeight(world);
   // At rest means the kinetic energy per grain, averaged over the last time unit, is below the
   // threshold: a single reading can catch the bed's slowly damped elastic "breathing" at a
   // turning point, where it is near zero.
   const auto window = static_cast<std::size_t>(std::ceil(1.0 / (kStepsPerCheck * dt)));
-  std::vector<double> recent;
   for (;;) {
-    recent.push_back(world.kineticEnergy() / std::max<std::uint32_t>(1, world.grainCount()));
-    if (recent.size() > window) recent.erase(recent.begin());
-    double perGrain = 0.0;
-    for (double e : recent) perGrain += e;
-    perGrain /= static_cast<double>(recent.size());
-    status.kineticPerGrain = perGrain;
-    status.progress = 0.9 + 0.1 * std::clamp(std::log10(1e-2 / std::max(perGrain, 1e-300)) /
-                                                 std::log10(1e-2 / config.bed.restEnergy), 0.0, 1.0);
-    report("relaxing");
-    if (recent.size() == window && perGrain < config.bed.restEnergy) break;
-    if (steps >= maxSteps)
-      throw Error("the bed did not come to rest (kinetic energy per grain " + std::to_string(perGrain) +
-                  " > bed.rest_energy) within bed.max_time = " + std::to_string(config.bed.maxTime));
-    world.run(kStepsPerCheck);
-    steps += kStepsPerCheck;
+    switch (p.stage) {
+      case BedStage::Pouring:
+        if (p.surface < target) {
+          pourBatch(config, clump, p);
+          p.stage = BedStage::Settling;
+        } else {
+          // Level the surface at the target height, then relax to rest.
+          std::vector<bool> remove(p.world.grainCount());
+          const ParticleStore& s = p.world.particles();
+          for (std::uint32_t i = 0; i < s.grainCount; ++i) remove[i] = s.y[i] > target;
+          p.world.removeGrains(remove);
+          p.surface = freeSurfaceHeight(p.world);
+          p.stage = BedStage::Relaxing;
+        }
+        break;
+      case BedStage::Settling: {
+        bool settled = p.batchSteps >= p.batchLimit || p.steps >= maxSteps;
+        if (!settled) {
+          p.world.run(kStepsPerCheck);
+          p.batchSteps += kStepsPerCheck;
+          p.steps += kStepsPerCheck;
+          // Settled enough to pour on: the root-mean-square grain speed (a few fast rattlers do not
+          // hold the next batch back).
+          const double grains = std::max<std::uint32_t>(1, p.world.grainCount());
+          const double meanMass = totalMass(p.world) / grains;
+          settled = std::sqrt(2.0 * p.world.kineticEnergy() / grains / meanMass) < config.bed.settleSpeed;
+        }
+        if (!settled) {
+          status.progress = std::min(0.9, 0.9 * p.surface / target);
+          report("pouring");
+          save(p);
+          break;
+        }
+        p.surface = freeSurfaceHeight(p.world);
+        report("pouring");
+        if (p.steps >= maxSteps)
+          throw Error("bed making did not reach box.bed_height = " + std::to_string(target) +
+                      " within bed.max_time = " + std::to_string(config.bed.maxTime) + " (surface at " +
+                      std::to_string(p.surface) + ")");
+        p.stage = BedStage::Pouring;
+        break;
+      }
+      case BedStage::Relaxing: {
+        p.recent.push_back(p.world.kineticEnergy() / std::max<std::uint32_t>(1, p.world.grainCount()));
+        if (p.recent.size() > window) p.recent.erase(p.recent.begin());
+        double perGrain = 0.0;
+        for (double e : p.recent) perGrain += e;
+        perGrain /= static_cast<double>(p.recent.size());
+        status.kineticPerGrain = perGrain;
+        status.progress = 0.9 + 0.1 * std::clamp(std::log10(1e-2 / std::max(perGrain, 1e-300)) /
+                                                     std::log10(1e-2 / config.bed.restEnergy), 0.0, 1.0);
+        report("relaxing");
+        if (p.recent.size() == window && perGrain < config.bed.restEnergy) return std::move(p.world);
+        if (p.steps >= maxSteps)
+          throw Error("the bed did not come to rest (kinetic energy per grain " + std::to_string(perGrain) +
+                      " > bed.rest_energy) within bed.max_time = " + std::to_string(config.bed.maxTime));
+        p.world.run(kStepsPerCheck);
+        p.steps += kStepsPerCheck;
+        save(p);
+        break;
+      }
+    }
   }
-  return world;
+}
+
+using Clock = std::chrono::steady_clock;
+
+}  // namespace
+
+World makeBed(const RunConfig& config, const ClumpDef& clump, const BedProgress& progress) {
+  return finishBed(config, clump, startBed(config, clump), progress, [](const PartialBed&) {});
 }
 
 std::string bedCacheDir(const RunConfig& config) {
@@ -204,29 +295,67 @@ World parseCachedBed(const std::string& file, const std::string& name, const std
   return world;
 }
 
+std::string bedPartialPath(const RunConfig& config, const std::string& key) {
+  return bedCacheDir(config) + "/bed-" + key + ".partial.bin";
+}
+
 CachedBed obtainBed(const RunConfig& config, const ClumpDef& clump, const BedProgress& progress) {
   const std::string key = bedKey(config, clump);
   const std::string dir = bedCacheDir(config);
   const std::string path = bedCachePath(config, key);
+  const std::string partialPath = bedPartialPath(config, key);
   std::string note;
+  auto addNote = [&](const std::string& text) { note += (note.empty() ? "" : "; ") + text; };
   if (std::filesystem::exists(path)) {
     try {
       return CachedBed{parseCachedBed(readFile(path), path, key), key, path, true, ""};
     } catch (const Error& e) {
-      note = std::string("cached bed refused and rebuilt: ") + e.what();
+      addNote(std::string("cached bed refused and rebuilt: ") + e.what());
     }
   }
-  World world = makeBed(config, clump, progress);
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  const bool cacheWritable = !ec;
+  if (!cacheWritable) addNote("cannot create " + dir + ": " + ec.message());
+
+  std::optional<PartialBed> start;
+  if (std::filesystem::exists(partialPath)) {
+    try {
+      start.emplace(parsePartialBed(readFile(partialPath), partialPath, key));
+    } catch (const Error& e) {
+      addNote(std::string("unfinished bed refused, starting afresh: ") + e.what());
+    }
+  }
+  if (!start) start.emplace(startBed(config, clump));
+  // The bed in the making is saved every run.checkpoint_interval seconds, and when SIGINT/SIGTERM
+  // asks to stop (if the caller holds a StopSignalGuard): the same command then continues it.
+  auto lastSave = Clock::now();
+  const BedSaver save = [&](const PartialBed& p) {
+    const int signal = stopSignalReceived();
+    if (signal == 0 && std::chrono::duration<double>(Clock::now() - lastSave).count() < config.run.checkpointInterval)
+      return;
+    std::string saved = " (the cache directory is not writable: nothing saved)";
+    if (cacheWritable) {
+      BinaryWriter out;
+      p.save(out, key);
+      writeStateFile(partialPath, "bed-partial", out.bytes());
+      lastSave = Clock::now();
+      saved = "; saved in " + partialPath + ": the same command continues it";
+    }
+    if (signal != 0)
+      throw Error("interrupted by signal " + std::to_string(signal) + " while making the bed at t = " +
+                  std::to_string(static_cast<double>(p.steps) * config.run.dt) + saved);
+  };
+  World world = finishBed(config, clump, std::move(*start), progress, save);
   BinaryWriter out;
   out.string(key);
   world.save(out);
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
   try {
-    if (ec) throw Error("cannot create " + dir + ": " + ec.message());
+    if (!cacheWritable) throw Error("no cache directory");
     writeStateFile(path, "bed", out.bytes());
+    std::filesystem::remove(partialPath, ec);
   } catch (const Error& e) {
-    note += (note.empty() ? "" : "; ") + std::string("bed not cached: ") + e.what();
+    addNote(std::string("bed not cached: ") + e.what());
   }
   return CachedBed{std::move(world), key, path, false, note};
 }

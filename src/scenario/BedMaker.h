@@ -27,7 +27,7 @@ using BedProgress = std::function<void(const BedStatus&)>;
 WorldDef worldDefFor(const RunConfig& config);
 
 // Hex key of everything a bed depends on: box, seed, grains, contact, intruder clump and position,
-// bed-making parameters, time step and engine settings, and the bed format version.
+// bed-making parameters (not bed.max_time, a bound only), time step and engine settings, and the bed format version.
 std::string bedKey(const RunConfig& config, const ClumpDef& clump);
 
 // Free-surface height: the median over 2-d-wide columns of the highest grain top in the column.
@@ -50,12 +50,19 @@ std::string bedCacheDir(const RunConfig& config);
 // The cache file of the bed with this key.
 std::string bedCachePath(const RunConfig& config, const std::string& key);
 
+// The file of the bed with this key while it is being made (saved every run.checkpoint_interval
+// seconds of wall time and on SIGINT/SIGTERM; removed once the bed is cached).
+std::string bedPartialPath(const RunConfig& config, const std::string& key);
+
 // The bed in a cache file's bytes (`name` starts every error message); throws wiggle::Error when
 // the file is truncated, corrupt, foreign or holds the bed of another key.
 World parseCachedBed(const std::string& file, const std::string& name, const std::string& key);
 
-// Loads the bed from the cache when a valid entry exists; otherwise makes it and stores it. A corrupt
-// or foreign entry is reported in `note` and rebuilt, never trusted.
+// Loads the bed from the cache when a valid entry exists; otherwise makes it, continuing from the
+// bed's partial file when there is one, and stores it. A corrupt or foreign entry is reported in
+// `note` and rebuilt, never trusted. While a StopSignalGuard is alive, SIGINT/SIGTERM saves the bed
+// in the making and throws wiggle::Error; the same call later continues it, with the same bits as
+// a bed made in one go.
 CachedBed obtainBed(const RunConfig& config, const ClumpDef& clump, const BedProgress& progress = {});
 
 }  // namespace wiggle

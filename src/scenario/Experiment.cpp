@@ -3,10 +3,8 @@
 #include <omp.h>
 #include <unistd.h>
 
-#include <atomic>
 #include <chrono>
 #include <cmath>
-#include <csignal>
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
@@ -17,6 +15,7 @@
 #include "analysis/FieldObserver.h"
 #include "analysis/RiseRate.h"
 #include "core/Error.h"
+#include "core/StopSignal.h"
 #include "io/AtomicFile.h"
 #include "io/Config.h"
 #include "io/LammpsDump.h"
@@ -30,9 +29,6 @@ namespace wiggle {
 namespace fs = std::filesystem;
 
 namespace {
-
-std::atomic<int> gSignal{0};
-extern "C" void onSignal(int sig) { gSignal = sig; }
 
 using Clock = std::chrono::steady_clock;
 double secondsSince(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
@@ -279,14 +275,25 @@ RunOutcome runExperiment(const RunConfig& config, const RunOptions& options) {
 
   const std::string dumpPath = dir + "/dumps/dump.lammpstrj";
   Progress progress(options.progressLine, log);
+  const StopSignalGuard stopOnSignal;  // SIGINT/SIGTERM: save the bed in the making or a checkpoint, then stop
   if (!loaded) {
     const auto bedStart = Clock::now();
-    CachedBed bed = obtainBed(config, clump, [&](const BedStatus& s) {
-      progress.update("[bed] " + s.stage + " batch " + std::to_string(s.batch) + ", " + std::to_string(s.grains) +
-                      " grains, surface " + number(s.surface) + " / " + number(config.box.bedHeight) + ", t = " +
-                      number(s.time) + (s.stage == "relaxing" ? ", KE/grain " + number(s.kineticPerGrain) : "") +
-                      ", " + duration(secondsSince(bedStart)) + " elapsed");
-    });
+    auto bedOrStop = [&] {
+      try {
+        return obtainBed(config, clump, [&](const BedStatus& s) {
+          progress.update("[bed] " + s.stage + " batch " + std::to_string(s.batch) + ", " +
+                          std::to_string(s.grains) + " grains, surface " + number(s.surface) + " / " +
+                          number(config.box.bedHeight) + ", t = " + number(s.time) +
+                          (s.stage == "relaxing" ? ", KE/grain " + number(s.kineticPerGrain) : "") + ", " +
+                          duration(secondsSince(bedStart)) + " elapsed");
+        });
+      } catch (const Error& e) {  // interrupted (the bed so far is saved) or failed
+        progress.finish();
+        log.line(e.what());
+        throw;
+      }
+    };
+    CachedBed bed = bedOrStop();
     progress.finish();
     state.bedWallSeconds = secondsSince(bedStart);
     state.bedKey = bed.key;
@@ -326,9 +333,6 @@ RunOutcome runExperiment(const RunConfig& config, const RunOptions& options) {
     if (dumpEvery) dumpFrame();
   }
 
-  gSignal = 0;
-  auto previousInt = std::signal(SIGINT, onSignal);
-  auto previousTerm = std::signal(SIGTERM, onSignal);
   const double particles = static_cast<double>(world.particles().size());
   auto lastCheckpoint = Clock::now();
   auto chunkStart = Clock::now();
@@ -362,10 +366,10 @@ RunOutcome runExperiment(const RunConfig& config, const RunOptions& options) {
                         "%  t = " + number(world.time()) + " / " + number(config.run.duration) + "  ETA " +
                         duration(eta) + "  " + number(nsPerParticleStep) + " ns/particle-step  y = " +
                         number(world.intruder().y));
-        if (gSignal != 0) {
+        if (const int signal = stopSignalReceived(); signal != 0) {
           writeCheckpoint(dir, configToml, world, state, fields);
           progress.finish();
-          log.line("interrupted by signal " + std::to_string(gSignal.load()) + " at step " + std::to_string(step) +
+          log.line("interrupted by signal " + std::to_string(signal) + " at step " + std::to_string(step) +
                    "; checkpoint written");
           throw Error("interrupted at t = " + number(world.time()) + "; continue with: wiggle run --out " + dir +
                       " --resume");
@@ -379,20 +383,14 @@ RunOutcome runExperiment(const RunConfig& config, const RunOptions& options) {
       if (options.stopAfterSteps && step - startStep >= options.stopAfterSteps) {
         if (options.checkpointAtStop) writeCheckpoint(dir, configToml, world, state, fields);
         progress.finish();
-        std::signal(SIGINT, previousInt);
-        std::signal(SIGTERM, previousTerm);
         outcome.status = "stopped";
         return outcome;
       }
     }
   } catch (...) {
-    std::signal(SIGINT, previousInt);
-    std::signal(SIGTERM, previousTerm);
     progress.finish();
     throw;
   }
-  std::signal(SIGINT, previousInt);
-  std::signal(SIGTERM, previousTerm);
   progress.finish();
   state.runWallSeconds += secondsSince(chunkStart);
   writeCheckpoint(dir, configToml, world, state, fields);

@@ -25,6 +25,7 @@
 #include <thread>
 
 #include "core/Error.h"
+#include "core/StopSignal.h"
 #include "io/AtomicFile.h"
 #include "io/Config.h"
 #include "scenario/BedMaker.h"
@@ -570,6 +571,7 @@ void makeSweepBed(const std::string& configPath, int threads) {
   if (threads > 0) omp_set_num_threads(threads);
   const RunConfig config = parseRunConfig(readFile(configPath), configPath);
   const ClumpDef clump = checkedClump(config);
+  const StopSignalGuard stopOnSignal;  // the sweep's SIGTERM: save the bed in the making, then stop
   const CachedBed bed = obtainBed(config, clump);
   if (!bed.note.empty()) std::fprintf(stderr, "wiggle: warning: %s\n", bed.note.c_str());
   std::printf("bed %s %s (%u grains)\n", bed.key.c_str(), bed.fromCache ? "was cached" : "made and cached",

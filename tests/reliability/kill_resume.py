@@ -135,8 +135,10 @@ def compare_run_dirs(ref, got, label):
 
 
 def cache_beds(cache):
+    """(finished beds, temporary files, partial beds: the bed in the making, saved as it goes)."""
     names = os.listdir(cache) if os.path.isdir(cache) else []
-    return sorted(n for n in names if n.endswith(".bin")), sorted(n for n in names if ".tmp." in n)
+    return (sorted(n for n in names if n.endswith(".bin") and not n.endswith(".partial.bin")),
+            sorted(n for n in names if ".tmp." in n), sorted(n for n in names if n.endswith(".partial.bin")))
 
 
 class Harness:
@@ -200,9 +202,9 @@ def run_trials(h, run_kills, duration):
     moment = h.rng.uniform(0.1, 0.8) * bed_s
     p = h.start(["run", cfg, "--out", out, "--threads", "1"], cache)
     landed = h.kill_after(p, moment)
-    beds, temps = cache_beds(cache)
+    beds, temps, partials = cache_beds(cache)
     log(f"run kill 1 at {moment:.3f} s (bed making): {'killed' if landed else 'had finished'}; cache holds "
-        f"{beds or 'no bed'}, temporary files {temps or 'none'}")
+        f"{beds or 'no bed'}, partial {partials or 'none'}, temporary files {temps or 'none'}")
     check(landed and not beds and not os.path.exists(os.path.join(out, "checkpoint.bin")),
           "kill 1 did not land during bed making (bed making too fast for the schedule?)")
     kills += landed
@@ -210,10 +212,11 @@ def run_trials(h, run_kills, duration):
     p = h.start(["run", "--out", out, "--resume", "--threads", "1"], cache)
     mine = f".bin.tmp.{p.pid}"
     # On a loaded machine the watcher may miss the short write: then it kills as soon as the
-    # cached bed appears (just after the write), so the run phase is still ahead.
-    landed = h.kill_when(p, lambda: os.path.isdir(cache) and any(n.endswith(mine) or n.endswith(".bin")
-                                                                 for n in os.listdir(cache)))
-    beds, temps = cache_beds(cache)
+    # cached bed appears (just after the write), so the run phase is still ahead. (The bed in the
+    # making is saved as it goes: those files, *.partial.bin, are not the bed.)
+    landed = h.kill_when(p, lambda: os.path.isdir(cache) and any(
+        (n.endswith(mine) or n.endswith(".bin")) and ".partial.bin" not in n for n in os.listdir(cache)))
+    beds, temps, _ = cache_beds(cache)
     caught = any(t.endswith(mine) for t in temps)
     log(f"run kill 2 when the bed cache file was being written: "
         f"{'killed during the write' if caught else 'killed just after the write' if landed else 'missed'}; "
@@ -264,7 +267,8 @@ def run_trials(h, run_kills, duration):
     check(p.wait() == 0, "the final resume failed (see processes.log)")
     same = compare_run_dirs(ref, out, "run")
     same &= check(not [n for n in os.listdir(out) if ".tmp." in n], "the resumed run left temporary files")
-    beds, _ = cache_beds(cache)
+    beds, _, partials = cache_beds(cache)
+    same &= check(not partials, f"the bed's partial file outlived it: {partials}")
     for b in beds:
         same &= check(read(os.path.join(cache, b)) == read(os.path.join(ref_cache, b)),
                       f"the re-made bed {b} differs from the reference's")

@@ -1,12 +1,14 @@
 // One case end to end on a tiny bed: outputs, resume from a checkpoint bit for bit, bad input.
 #include <gtest/gtest.h>
 
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <random>
 #include <nlohmann/json.hpp>
 
 #include "core/Error.h"
+#include "core/StopSignal.h"
 #include "io/AtomicFile.h"
 #include "io/Config.h"
 #include "io/StateFile.h"
@@ -223,6 +225,85 @@ TEST(Experiment, CorruptOrForeignCachedBedIsRebuiltIdentically) {
     EXPECT_EQ(bed.world.stateHash(), hash) << "the rebuilt bed differs (" << why << ")";
     EXPECT_EQ(readFile(path), good) << "the cache file was not rewritten whole (" << why << ")";
   }
+}
+
+// The state hash of tinyConfig's bed made in one go (made once per test process).
+const std::string& tinyBedHash() {
+  static const std::string hash = [] {
+    const RunConfig config = tinyConfig(scratch("bed-reference"));
+    return makeBed(config, checkedClump(config)).stateHash();
+  }();
+  return hash;
+}
+
+TEST(Experiment, BedMakingStoppedBySignalContinuesToTheSameBits) {
+  // SIGTERM while pouring and while relaxing: the bed so far is saved and obtainBed throws; the
+  // same call then continues it to the bits of a bed made in one go. A damaged partial file is
+  // refused and the bed made afresh, to the same bits.
+  const RunConfig base = tinyConfig(scratch("bed-signal-reference"));
+  const ClumpDef clump = checkedClump(base);
+  const std::string hash = tinyBedHash();
+  for (const std::string stage : {"pouring", "relaxing"}) {
+    RunConfig config = base;
+    config.bed.cacheDir = scratch("bed-signal-" + stage);
+    const std::string key = bedKey(config, clump);
+    int reports = 0;
+    {
+      const StopSignalGuard guard;
+      try {
+        obtainBed(config, clump, [&](const BedStatus& s) {
+          if (s.stage == stage && ++reports == 3) std::raise(SIGTERM);
+        });
+        ADD_FAILURE() << "not interrupted while " << stage;
+      } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("interrupted by signal 15"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find(bedPartialPath(config, key)), std::string::npos) << e.what();
+      }
+    }
+    ASSERT_TRUE(fs::exists(bedPartialPath(config, key))) << stage;
+    EXPECT_FALSE(fs::exists(bedCachePath(config, key))) << stage;
+    int reportsAfter = 0;
+    const CachedBed continued = obtainBed(config, clump, [&](const BedStatus&) { ++reportsAfter; });
+    EXPECT_FALSE(continued.fromCache);
+    EXPECT_TRUE(continued.note.empty()) << continued.note;
+    EXPECT_EQ(continued.world.stateHash(), hash) << "continued while " << stage;
+    EXPECT_FALSE(fs::exists(bedPartialPath(config, key))) << "the partial file outlived the bed";
+    if (stage == "relaxing") {  // it continued rather than started again: only the relaxing was left
+      EXPECT_GT(reportsAfter, 0);
+      writeFileAtomically(bedPartialPath(config, key), "WIGGLE\x1a\njunk");
+      fs::remove(bedCachePath(config, key));
+      const CachedBed afresh = obtainBed(config, clump);
+      EXPECT_NE(afresh.note.find("unfinished bed refused"), std::string::npos) << afresh.note;
+      EXPECT_EQ(afresh.world.stateHash(), hash);
+    }
+  }
+}
+
+TEST(Experiment, BedSavedPeriodicallyContinuesAfterAKill) {
+  // With run.checkpoint_interval = 0 the bed in the making is saved at every chance. A copy of
+  // the file taken at the 4th progress report stands for what a SIGKILL leaves behind (the making
+  // is then stopped at the 6th, to keep the test short): continuing from the copy gives the bits
+  // of the bed made in one go.
+  RunConfig config = tinyConfig(scratch("bed-periodic"));
+  config.run.checkpointInterval = 0.0;
+  const ClumpDef clump = checkedClump(config);
+  const std::string key = bedKey(config, clump);
+  const std::string partial = bedPartialPath(config, key), aside = partial + ".aside";
+  {
+    const StopSignalGuard guard;
+    int reports = 0;
+    EXPECT_THROW(obtainBed(config, clump,
+                           [&](const BedStatus&) {
+                             if (++reports == 4) fs::copy_file(partial, aside);
+                             if (reports == 6) std::raise(SIGTERM);
+                           }),
+                 Error);
+  }
+  ASSERT_TRUE(fs::exists(aside));
+  fs::rename(aside, partial);
+  config.run.checkpointInterval = 600.0;  // (saving at every chance costs an fsync each)
+  const CachedBed continued = obtainBed(config, clump);
+  EXPECT_EQ(continued.world.stateHash(), tinyBedHash());
 }
 
 }  // namespace
