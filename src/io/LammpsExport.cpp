@@ -207,9 +207,11 @@ LammpsExportResult exportLammps(const RunConfig& config, const std::string& dir,
     const auto now = std::chrono::steady_clock::now();
     if (!terminal && now - lastLine < std::chrono::seconds(30)) return;
     lastLine = now;
-    std::fprintf(stderr, "%s[bed] %s batch %d, %u grains, surface %.4g / %.4g, t = %.4g%s", terminal ? "\r\033[K" : "",
-                 st.stage.c_str(), st.batch, st.grains, st.surface, config.box.bedHeight, st.time,
-                 terminal ? "" : "\n");
+    char energy[48] = "";
+    if (st.stage == "relaxing") std::snprintf(energy, sizeof energy, ", KE/grain %.3g", st.kineticPerGrain);
+    std::fprintf(stderr, "%s[bed] %s batch %d, %u grains, surface %.4g / %.4g, t = %.4g%s%s",
+                 terminal ? "\r\033[K" : "", st.stage.c_str(), st.batch, st.grains, st.surface, config.box.bedHeight,
+                 st.time, energy, terminal ? "" : "\n");
     std::fflush(stderr);
   });
   if (terminal) std::fprintf(stderr, "\r\033[K");
