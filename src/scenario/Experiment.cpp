@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <numbers>
+#include <optional>
 #include <nlohmann/json.hpp>
 
 #include "analysis/FieldObserver.h"
@@ -275,7 +276,10 @@ RunOutcome runExperiment(const RunConfig& config, const RunOptions& options) {
 
   const std::string dumpPath = dir + "/dumps/dump.lammpstrj";
   Progress progress(options.progressLine, log);
-  const StopSignalGuard stopOnSignal;  // SIGINT/SIGTERM: save the bed in the making or a checkpoint, then stop
+  // SIGINT/SIGTERM while the bed is made or the run steps: save the bed in the making or a
+  // checkpoint, then stop. Not while the outputs are written: there they stop the process at once.
+  std::optional<StopSignalGuard> stopOnSignal;
+  stopOnSignal.emplace();
   if (!loaded) {
     const auto bedStart = Clock::now();
     auto bedOrStop = [&] {
@@ -394,6 +398,7 @@ RunOutcome runExperiment(const RunConfig& config, const RunOptions& options) {
   progress.finish();
   state.runWallSeconds += secondsSince(chunkStart);
   writeCheckpoint(dir, configToml, world, state, fields);
+  stopOnSignal.reset();
 
   double clumpTop = 0.0;
   for (std::size_t a = 0; a < clump.offsetY.size(); ++a) clumpTop = std::max(clumpTop, clump.offsetY[a] + clump.atomRadius);
