@@ -19,6 +19,7 @@ namespace {
 
 constexpr std::uint64_t kBedFormat = 4;  // bump when bed making or the engine's arithmetic changes (4: the contact kernel with fewer divisions and block-wise force sums)
 constexpr std::uint64_t kStepsPerCheck = 1000;
+using Clock = std::chrono::steady_clock;
 
 // Does a grain of radius r at (x, y) overlap any intruder atom (or sit inside the clump, which
 // the clump's interior guard atoms turn into an overlap)?
@@ -170,8 +171,8 @@ void pourBatch(const RunConfig& config, const ClumpDef& clump, PartialBed& p) {
     }
   }
   ++p.batch;
-  // Settling ends when no grain is faster than settle_speed, or after the time a grain needs to
-  // fall the batch height and come to rest several times over.
+  // Settling ends when the rms grain speed is below settle_speed, or after the time a grain needs
+  // to fall the batch height and come to rest several times over.
   const double fallTime = std::sqrt(2.0 * (config.bed.batchHeight + p.surface) / p.world.def().gravity);
   p.batchLimit = static_cast<std::uint64_t>((4.0 * fallTime + 10.0) / config.run.dt);
   p.batchSteps = 0;
@@ -267,8 +268,6 @@ World finishBed(const RunConfig& config, const ClumpDef& clump, PartialBed p, co
   }
 }
 
-using Clock = std::chrono::steady_clock;
-
 }  // namespace
 
 World makeBed(const RunConfig& config, const ClumpDef& clump, const BedProgress& progress) {
@@ -316,7 +315,7 @@ CachedBed obtainBed(const RunConfig& config, const ClumpDef& clump, const BedPro
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   const bool cacheWritable = !ec;
-  if (!cacheWritable) addNote("cannot create " + dir + ": " + ec.message());
+  if (!cacheWritable) addNote("bed not cached: cannot create " + dir + ": " + ec.message());
 
   std::optional<PartialBed> start;
   if (std::filesystem::exists(partialPath)) {
@@ -347,15 +346,16 @@ CachedBed obtainBed(const RunConfig& config, const ClumpDef& clump, const BedPro
                   std::to_string(static_cast<double>(p.steps) * config.run.dt) + saved);
   };
   World world = finishBed(config, clump, std::move(*start), progress, save);
-  BinaryWriter out;
-  out.string(key);
-  world.save(out);
-  try {
-    if (!cacheWritable) throw Error("no cache directory");
-    writeStateFile(path, "bed", out.bytes());
-    std::filesystem::remove(partialPath, ec);
-  } catch (const Error& e) {
-    addNote(std::string("bed not cached: ") + e.what());
+  if (cacheWritable) {
+    BinaryWriter out;
+    out.string(key);
+    world.save(out);
+    try {
+      writeStateFile(path, "bed", out.bytes());
+      std::filesystem::remove(partialPath, ec);
+    } catch (const Error& e) {
+      addNote(std::string("bed not cached: ") + e.what());
+    }
   }
   return CachedBed{std::move(world), key, path, false, note};
 }

@@ -282,22 +282,20 @@ RunOutcome runExperiment(const RunConfig& config, const RunOptions& options) {
   stopOnSignal.emplace();
   if (!loaded) {
     const auto bedStart = Clock::now();
-    auto bedOrStop = [&] {
-      try {
-        return obtainBed(config, clump, [&](const BedStatus& s) {
-          progress.update("[bed] " + s.stage + " batch " + std::to_string(s.batch) + ", " +
-                          std::to_string(s.grains) + " grains, surface " + number(s.surface) + " / " +
-                          number(config.box.bedHeight) + ", t = " + number(s.time) +
-                          (s.stage == "relaxing" ? ", KE/grain " + number(s.kineticPerGrain) : "") + ", " +
-                          duration(secondsSince(bedStart)) + " elapsed");
-        });
-      } catch (const Error& e) {  // interrupted (the bed so far is saved) or failed
-        progress.finish();
-        log.line(e.what());
-        throw;
-      }
-    };
-    CachedBed bed = bedOrStop();
+    std::optional<CachedBed> obtained;
+    try {
+      obtained.emplace(obtainBed(config, clump, [&](const BedStatus& s) {
+        progress.update("[bed] " + s.stage + " batch " + std::to_string(s.batch) + ", " + std::to_string(s.grains) +
+                        " grains, surface " + number(s.surface) + " / " + number(config.box.bedHeight) + ", t = " +
+                        number(s.time) + (s.stage == "relaxing" ? ", KE/grain " + number(s.kineticPerGrain) : "") +
+                        ", " + duration(secondsSince(bedStart)) + " elapsed");
+      }));
+    } catch (const Error& e) {  // interrupted (the bed so far is saved) or failed: say so in the log too
+      progress.finish();
+      log.line(e.what());
+      throw;
+    }
+    CachedBed& bed = *obtained;
     progress.finish();
     state.bedWallSeconds = secondsSince(bedStart);
     state.bedKey = bed.key;
