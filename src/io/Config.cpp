@@ -156,6 +156,9 @@ const std::vector<KeyInfo>& keyTable() {
              noBound, "d", "A in x(t) = x0 + A sin(2 pi t / T)"),
       number("drive.period", [](C& c) -> double& { return c.drive.period; }, above(0), noBound,
              "sqrt(d/g)", "T in x(t) = x0 + A sin(2 pi t / T); a whole number of run.dt steps"),
+      integer("drive.ramp_periods", [](C& c) -> std::uint64_t& { return c.drive.rampPeriods; }, atLeast(0), "",
+              "periods over which the amplitude grows linearly from 0 to A, so the drive starts from rest "
+              "(0 = SPEC 4: x0 + A sin(2 pi t / T) from t = 0, at full speed)"),
       // [bed]
       number("bed.batch_height", [](C& c) -> double& { return c.bed.batchHeight; }, above(0),
              noBound, "d", "height of each poured layer"),

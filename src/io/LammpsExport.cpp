@@ -41,7 +41,8 @@ double wrapX(double x, double width) {
 LammpsDeck makeLammpsDeck(const World& world, const RunConfig& config) {
   if (!world.hasIntruder()) throw Error("export-lammps: the world has no intruder");
   const ClumpMotion& motion = world.intruderMotion();
-  if (motion.kind != HorizontalMotion::Sinusoid || !motion.verticalFree)
+  const bool ramped = motion.kind == HorizontalMotion::RampedSinusoid;
+  if ((motion.kind != HorizontalMotion::Sinusoid && !ramped) || !motion.verticalFree)
     throw Error("export-lammps: the intruder must be driven sinusoidally with y free");
   if (world.stepCount() != 0) throw Error("export-lammps: the world's clock must be at t = 0");
   const WorldDef& def = world.def();
@@ -136,10 +137,22 @@ LammpsDeck makeLammpsDeck(const World& world, const RunConfig& config) {
   in += "neigh_modify delay 0 every 1 check yes\n";
   in += "neigh_modify exclude type 2 2 exclude type 3 3\n";
   in += "timestep " + num(def.dt) + "\n\n";
-  in += "# Drive: x(t) = x0 + A sin(w t), vx = A w cos(w t), t = step dt from 0 (as wiggle).\n";
-  in += "variable w equal " + num(omega) + "\n";
-  in += "variable dx equal " + num(motion.amplitude) + "*sin(v_w*(step*dt))\n";
-  in += "variable vx equal " + num(motion.amplitude) + "*v_w*cos(v_w*(step*dt))\n";
+  if (ramped) {
+    // As World::placeIntruder's ramp: s = t / t_ramp until t_ramp, then 1; ds/dt = 1 / t_ramp, then 0.
+    in += "# Drive: x(t) = x0 + A s(t) sin(w t), s = min(1, t / t_ramp), vx = A (s w cos(w t) + s' sin(w t)),\n"
+          "# t = step dt from 0 (as wiggle).\n";
+    in += "variable w equal " + num(omega) + "\n";
+    in += "variable ramp equal " + num(motion.rampTime) + "\n";
+    in += "variable s equal (step*dt<v_ramp)*(step*dt)/v_ramp+(step*dt>=v_ramp)\n";
+    in += "variable ds equal (step*dt<v_ramp)/v_ramp\n";
+    in += "variable dx equal " + num(motion.amplitude) + "*v_s*sin(v_w*(step*dt))\n";
+    in += "variable vx equal " + num(motion.amplitude) + "*(v_s*v_w*cos(v_w*(step*dt))+v_ds*sin(v_w*(step*dt)))\n";
+  } else {
+    in += "# Drive: x(t) = x0 + A sin(w t), vx = A w cos(w t), t = step dt from 0 (as wiggle).\n";
+    in += "variable w equal " + num(omega) + "\n";
+    in += "variable dx equal " + num(motion.amplitude) + "*sin(v_w*(step*dt))\n";
+    in += "variable vx equal " + num(motion.amplitude) + "*v_w*cos(v_w*(step*dt))\n";
+  }
   in += "# Free y: each atom gets the clump's force F_contact,y - M g (gravity is not applied to the atoms).\n";
   in += "variable Fy equal fcm(intruder,y)-" + num(clump.mass * def.gravity) + "\n\n";
   in += std::string("fix integrate grains nve/sphere") + (disc ? " disc" : "") + "\n";

@@ -35,6 +35,7 @@ struct IntruderDef {
 struct DriveDef {
   double amplitude = 3.0;      // drive.amplitude: A [d]
   double period = 5.0;         // drive.period: T [sqrt(d/g)]
+  std::uint64_t rampPeriods = 0;  // drive.ramp_periods: A grows from 0 over this many periods (0: SPEC 4)
 };
 
 struct BedDef {

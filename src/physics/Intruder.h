@@ -18,6 +18,7 @@ enum class HorizontalMotion : std::uint8_t {
   Held,              // x = x0, vx = 0
   Sinusoid,          // x = x0 + A sin(2 pi t / T), vx = (2 pi A / T) cos(2 pi t / T)
   ConstantVelocity,  // x = x0 + v t, vx = v
+  RampedSinusoid,    // x = x0 + A min(1, t / t_ramp) sin(2 pi t / T): from rest, Sinusoid after t_ramp
 };
 
 struct ClumpMotion {
@@ -27,6 +28,8 @@ struct ClumpMotion {
   double period = 1.0;     // T [sqrt(d/g)] (Sinusoid)
   double velocity = 0.0;   // [sqrt(g d)] (ConstantVelocity)
   bool verticalFree = false;  // false: y held, vy = 0 (while the bed is made)
+  double rampTime = 0.0;   // t_ramp [sqrt(d/g)] (RampedSinusoid); a whole number of periods keeps vx
+                           // continuous where the ramp ends, since sin(2 pi t_ramp / T) = 0 there
 };
 
 struct ClumpState {

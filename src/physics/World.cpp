@@ -241,8 +241,10 @@ void World::setIntruder(const ClumpDef& clump, double x, double y) {
 
 void World::setIntruderMotion(const ClumpMotion& motion) {
   if (!hasIntruder_) throw Error("set an intruder before its motion");
-  if (motion.kind == HorizontalMotion::Sinusoid && !(motion.period > 0))
-    throw Error("drive period must be > 0");
+  const bool sinusoid = motion.kind == HorizontalMotion::Sinusoid || motion.kind == HorizontalMotion::RampedSinusoid;
+  if (sinusoid && !(motion.period > 0)) throw Error("drive period must be > 0");
+  if (motion.kind == HorizontalMotion::RampedSinusoid && !(motion.rampTime > 0 && std::isfinite(motion.rampTime)))
+    throw Error("drive ramp time must be > 0 and finite");
   requireFinite(motion.x0, "drive centre");
   requireFinite(motion.amplitude, "drive amplitude");
   requireFinite(motion.velocity, "drive velocity");
@@ -319,6 +321,16 @@ void World::placeIntruder() {
       const double omega = 2.0 * std::numbers::pi / motion_.period;
       clumpState_.x = motion_.x0 + motion_.amplitude * std::sin(omega * t);
       clumpState_.vx = motion_.amplitude * omega * std::cos(omega * t);
+      break;
+    }
+    case HorizontalMotion::RampedSinusoid: {
+      // Its own branch, not Sinusoid with a factor 1: SPEC 4's drive keeps its bits.
+      const double omega = 2.0 * std::numbers::pi / motion_.period;
+      const bool ramping = t < motion_.rampTime;
+      const double scale = ramping ? t / motion_.rampTime : 1.0;
+      const double growth = ramping ? 1.0 / motion_.rampTime : 0.0;  // d(scale)/dt
+      clumpState_.x = motion_.x0 + motion_.amplitude * scale * std::sin(omega * t);
+      clumpState_.vx = motion_.amplitude * (scale * omega * std::cos(omega * t) + growth * std::sin(omega * t));
       break;
     }
     case HorizontalMotion::ConstantVelocity:
@@ -551,6 +563,8 @@ void World::checkTimeStep() const {
   double speed = def_.referenceImpactSpeed;
   if (hasIntruder_ && motion_.kind == HorizontalMotion::Sinusoid)
     speed = std::max(speed, 2.0 * std::numbers::pi * motion_.amplitude / motion_.period);
+  if (hasIntruder_ && motion_.kind == HorizontalMotion::RampedSinusoid)  // |vx| <= A (omega + 1 / t_ramp)
+    speed = std::max(speed, motion_.amplitude * (2.0 * std::numbers::pi / motion_.period + 1.0 / motion_.rampTime));
   if (hasIntruder_ && motion_.kind == HorizontalMotion::ConstantVelocity)
     speed = std::max(speed, std::fabs(motion_.velocity));
   const double contactTime = hertzContactTime(def_.contact.kn, s.radius[lightest], s.mass[lightest], speed);
@@ -707,6 +721,8 @@ void World::save(BinaryWriter& out) const {
   out.value(motion_.period);
   out.value(motion_.velocity);
   out.value(static_cast<std::uint8_t>(motion_.verticalFree));
+  // Only the ramped drive stores its ramp: files of the other motions keep their earlier layout.
+  if (motion_.kind == HorizontalMotion::RampedSinusoid) out.value(motion_.rampTime);
 
   out.value(step_);
   out.value(rebuilds_);
@@ -811,13 +827,18 @@ World World::load(BinaryReader& in) {
   w.clumpState_.contactFx = in.value<double>();
   w.clumpState_.contactFy = in.value<double>();
   const auto kind = in.value<std::uint8_t>();
-  if (kind > 2) throw Error(in.what() + " is corrupt: unknown intruder motion");
+  if (kind > 3) throw Error(in.what() + " is corrupt: unknown intruder motion");
   w.motion_.kind = static_cast<HorizontalMotion>(kind);
   w.motion_.x0 = in.value<double>();
   w.motion_.amplitude = in.value<double>();
   w.motion_.period = in.value<double>();
   w.motion_.velocity = in.value<double>();
   w.motion_.verticalFree = in.value<std::uint8_t>() != 0;
+  if (w.motion_.kind == HorizontalMotion::RampedSinusoid) {
+    w.motion_.rampTime = in.value<double>();
+    if (!(w.motion_.rampTime > 0 && std::isfinite(w.motion_.rampTime)))
+      throw Error(in.what() + " is corrupt: a ramped drive without a ramp time");
+  }
 
   w.step_ = in.value<std::uint64_t>();
   w.rebuilds_ = in.value<std::uint64_t>();

@@ -162,10 +162,11 @@ std::uint64_t stepsIn(double interval, double dt, const char* key) {
 
 void startDrive(World& world, const RunConfig& config) {
   ClumpMotion motion;
-  motion.kind = HorizontalMotion::Sinusoid;
+  motion.kind = config.drive.rampPeriods > 0 ? HorizontalMotion::RampedSinusoid : HorizontalMotion::Sinusoid;
   motion.x0 = 0.5 * config.box.width;
   motion.amplitude = config.drive.amplitude;
   motion.period = config.drive.period;
+  motion.rampTime = static_cast<double>(config.drive.rampPeriods) * config.drive.period;
   motion.verticalFree = true;
   world.setIntruderMotion(motion);
   world.resetClock();

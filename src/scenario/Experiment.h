@@ -39,7 +39,8 @@ void checkGeometry(const RunConfig& config, const ClumpDef& clump);
 // of atoms, then checkGeometry. Returns the clump; throws wiggle::Error naming the key.
 ClumpDef checkedClump(const RunConfig& config);
 
-// Releases the bed's intruder: x(t) = W/2 + A sin(2 pi t / T), y free, t = 0 now.
+// Releases the bed's intruder: x(t) = W/2 + A sin(2 pi t / T) (its amplitude ramped up over
+// drive.ramp_periods periods when that is not 0), y free, t = 0 now.
 void startDrive(World& world, const RunConfig& config);
 
 RunOutcome runExperiment(const RunConfig& config, const RunOptions& options);

@@ -57,6 +57,7 @@ std::vector<std::string> differingFields(const RunConfig& a, const RunConfig& b)
   num("intruder.mass", a.intruder.mass, b.intruder.mass);
   num("drive.amplitude", a.drive.amplitude, b.drive.amplitude);
   num("drive.period", a.drive.period, b.drive.period);
+  other("drive.rampPeriods", a.drive.rampPeriods == b.drive.rampPeriods);
   num("bed.batchHeight", a.bed.batchHeight, b.bed.batchHeight);
   num("bed.settleSpeed", a.bed.settleSpeed, b.bed.settleSpeed);
   num("bed.restEnergy", a.bed.restEnergy, b.bed.restEnergy);
@@ -105,6 +106,7 @@ const std::vector<std::tuple<std::string, std::string, std::string>>& everyKey()
       {"intruder.mass", "40", "intruder.mass"},
       {"drive.amplitude", "1", "drive.amplitude"},
       {"drive.period", "2", "drive.period"},
+      {"drive.ramp_periods", "3", "drive.rampPeriods"},
       {"bed.batch_height", "10", "bed.batchHeight"},
       {"bed.settle_speed", "0.1", "bed.settleSpeed"},
       {"bed.rest_energy", "1e-5", "bed.restEnergy"},
@@ -146,7 +148,7 @@ TEST(Config, KeyListIsExactlyTheSpecKeys) {
   std::set<std::string> expected;
   for (const auto& [key, value, field] : everyKey()) expected.insert(key);
   const std::vector<std::string> keys = configKeys();
-  EXPECT_EQ(keys.size(), 38u);
+  EXPECT_EQ(keys.size(), 39u);
   EXPECT_EQ(std::set<std::string>(keys.begin(), keys.end()), expected);
 }
 

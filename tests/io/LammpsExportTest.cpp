@@ -17,6 +17,7 @@
 #include "io/AtomicFile.h"
 #include "io/Config.h"
 #include "scenario/BedMaker.h"
+#include "scenario/Experiment.h"
 #include "scenario/Shape.h"
 
 namespace wiggle {
@@ -149,6 +150,16 @@ TEST(LammpsExport, DeckHoldsTheCaseParameters) {
   const std::string inDisc = makeLammpsDeck(smallWorld(MassModel::Disc), disc).input;
   EXPECT_NE(inDisc.find("set group grains density/disc 1\n"), std::string::npos);
   EXPECT_NE(inDisc.find("fix integrate grains nve/sphere disc\n"), std::string::npos);
+
+  World ramped = smallWorld(MassModel::Sphere);
+  ClumpMotion motion = ramped.intruderMotion();
+  motion.kind = HorizontalMotion::RampedSinusoid;
+  motion.rampTime = 4.0;  // two periods
+  ramped.setIntruderMotion(motion);
+  const std::string inRamp = makeLammpsDeck(ramped, config).input;
+  EXPECT_NE(inRamp.find("variable ramp equal 4\n"), std::string::npos);
+  EXPECT_NE(inRamp.find("variable dx equal 3*v_s*sin(v_w*(step*dt))\n"), std::string::npos);
+  EXPECT_EQ(in.find("v_s"), std::string::npos);  // SPEC 4's drive has no ramp
 }
 
 TEST(LammpsExport, RefusesAWorldNotAtTheStartOfADrivenRun) {
@@ -211,16 +222,18 @@ bool haveLammps() { return std::system("command -v lmp > /dev/null 2>&1") == 0; 
 
 // A tiny bed (about 220 grains around the 7-wide disk), made once and cached under the test's
 // temporary directory; 2,000 steps (t = 0.2) of the drive at A = 3, T = 2.
-TEST(LammpsExport, SlowLammpsRunOfTheDeckFollowsWiggle) {
-  if (!haveLammps()) GTEST_SKIP() << "lmp (LAMMPS) not found: apt-get install lammps to run this comparison";
+// Exports a small case (with `rampPeriods` of drive.ramp_periods), runs the deck in LAMMPS for 2,000
+// steps and compares its intruder with wiggle's from the same state.
+void expectLammpsFollowsWiggle(const std::string& rampPeriods) {
   const fs::path root = fs::path(testing::TempDir()) / "wiggle-lammps-export";
   fs::create_directories(root);
   RunConfig config = loadRunConfig(std::nullopt, {"box.width=20", "box.bed_height=14", "box.seed=7",
                                                   "intruder.y0=7", "drive.amplitude=3", "drive.period=2",
+                                                  "drive.ramp_periods=" + rampPeriods,
                                                   "run.duration=0.2", "run.sample_interval=0.01",
                                                   "run.dump_interval=0", "bed.rest_energy=1e-6"});
   config.bed.cacheDir = (root / "cache").string();
-  const std::string dir = (root / "deck").string();
+  const std::string dir = (root / ("deck-ramp" + rampPeriods)).string();
   fs::remove_all(dir);
   const LammpsExportResult exported = exportLammps(config, dir, false);
   ASSERT_EQ(exported.deck.steps, 2000u);
@@ -234,14 +247,7 @@ TEST(LammpsExport, SlowLammpsRunOfTheDeckFollowsWiggle) {
   const ClumpDef clump = makeClump(config.intruder, config.grains.massModel, 1.0);
   CachedBed bed = obtainBed(config, clump);
   ASSERT_TRUE(bed.fromCache);
-  ClumpMotion motion;
-  motion.kind = HorizontalMotion::Sinusoid;
-  motion.x0 = 0.5 * config.box.width;
-  motion.amplitude = 3;
-  motion.period = 2;
-  motion.verticalFree = true;
-  bed.world.setIntruderMotion(motion);
-  bed.world.resetClock();
+  startDrive(bed.world, config);
   const auto fresh = runWiggle(withoutContactHistory(bed.world), 2000, 100);
   const auto withHistory = runWiggle(bed.world, 2000, 100);
 
@@ -280,6 +286,16 @@ TEST(LammpsExport, SlowLammpsRunOfTheDeckFollowsWiggle) {
   EXPECT_LT(dfy, 1e-9 * fyScale);
   // And the comparison can tell: the history alone moves the intruder by far more.
   EXPECT_GT(hfy, 100 * dfy);
+}
+
+TEST(LammpsExport, SlowLammpsRunOfTheDeckFollowsWiggle) {
+  if (!haveLammps()) GTEST_SKIP() << "lmp (LAMMPS) not found: apt-get install lammps to run this comparison";
+  expectLammpsFollowsWiggle("0");
+}
+
+TEST(LammpsExport, SlowLammpsRunOfARampedDriveFollowsWiggle) {
+  if (!haveLammps()) GTEST_SKIP() << "lmp (LAMMPS) not found: apt-get install lammps to run this comparison";
+  expectLammpsFollowsWiggle("1");  // the whole window is inside the ramp (t_ramp = T = 2)
 }
 
 }  // namespace

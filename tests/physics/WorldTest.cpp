@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <set>
 #include <utility>
 
@@ -338,6 +339,54 @@ TEST(World, ClumpAloneFallsFreelyAndHeldClumpStays) {
   const double t = 1.0;
   EXPECT_NEAR(w.intruder().y, 30.0 - 0.5 * t * t, 1e-10);
   EXPECT_NEAR(w.intruder().x, 10.0 + 2.0 * std::sin(2.0 * 3.141592653589793 * t / 4.0), 1e-12);
+}
+
+// drive.ramp_periods: x = x0 + A min(1, t / t_ramp) sin(w t) starts at rest, and from t_ramp on it is
+// SPEC 4's drive, with vx continuous across t_ramp (a whole number of periods, where sin(w t) = 0).
+TEST(World, RampedDriveStartsFromRestAndBecomesTheSinusoid) {
+  World w(smallBox());
+  w.addGrain(1.0, 50.0, 0.5);  // far away
+  w.setIntruder(ClumpDef{{-0.25, 0.25}, {0.0, 0.0}, 0.25, 10.0}, 10.0, 30.0);
+  const double amplitude = 2.0, period = 4.0, ramp = 2 * period;
+  w.setIntruderMotion({HorizontalMotion::RampedSinusoid, 10.0, amplitude, period, 0.0, false, ramp});
+  w.resetClock();
+  EXPECT_EQ(w.intruder().x, 10.0);
+  EXPECT_EQ(w.intruder().vx, 0.0);  // SPEC 4's drive starts at 2 pi A / T = 3.1
+  const double omega = 2.0 * std::numbers::pi / period;
+  const auto expectDrive = [&](double scale, double growth) {
+    const double t = w.time();
+    EXPECT_NEAR(w.intruder().x, 10.0 + amplitude * scale * std::sin(omega * t), 1e-12) << "t = " << t;
+    EXPECT_NEAR(w.intruder().vx, amplitude * (scale * omega * std::cos(omega * t) + growth * std::sin(omega * t)),
+                1e-12)
+        << "t = " << t;
+  };
+  w.run(10000);  // t = 1: a quarter of a period, an eighth of the ramp
+  expectDrive(1.0 / ramp, 1.0 / ramp);
+  const std::uint64_t rampSteps = std::llround(ramp / w.def().dt);
+  w.run(rampSteps - 10000 - 1);  // the last step of the ramp
+  expectDrive(w.time() / ramp, 1.0 / ramp);
+  w.run(1);  // where it ends, both formulas give A w: vx is continuous
+  EXPECT_NEAR(w.intruder().vx, amplitude * omega, 1e-12);
+  w.run(13000);  // past the ramp: SPEC 4's drive
+  expectDrive(1.0, 0.0);
+}
+
+TEST(World, RampedDriveSavedMidRampContinuesBitForBit) {
+  World a = makePile(10, 6, 11);
+  a.run(2000);
+  a.setIntruder(ClumpDef{{-0.25, 0.25}, {0.0, 0.0}, 0.25, 3.0}, 5.0, 12.0);
+  a.setIntruderMotion({HorizontalMotion::RampedSinusoid, 5.0, 1.0, 0.5, 0.0, true, 1.0});
+  a.resetClock();
+  a.run(3000);  // t = 0.3, inside the ramp
+  BinaryWriter out;
+  a.save(out);
+  BinaryReader in(out.bytes().data(), out.bytes().size(), "test state");
+  World b = World::load(in);
+  EXPECT_TRUE(in.atEnd());
+  EXPECT_EQ(b.intruderMotion().rampTime, 1.0);
+  a.run(10000);  // across the end of the ramp
+  b.run(10000);
+  EXPECT_EQ(a.stateHash(), b.stateHash());
 }
 
 }  // namespace
