@@ -41,7 +41,8 @@ def main():
     style.apply()
     import matplotlib.pyplot as plt
 
-    fig, ax = plt.subplots(figsize=(7, 4))
+    many = len(args.runs) > 6  # then the legend goes beside the axes, where it hides no curve
+    fig, ax = plt.subplots(figsize=(9, 4) if many else (7, 4))
     print(f"{'run':24} {'V_y chord':>10} {'LSQ slope':>10} {'y_end':>8} {'summary vy':>11}")
     for spec in args.runs:
         label, sep, path = spec.partition("=")
@@ -60,7 +61,10 @@ def main():
     ax.set_xlabel("t [sqrt(d/g)]")
     ax.set_ylabel("y - y(0) [d]")
     ax.set_title(args.title)
-    ax.legend(fontsize=8)
+    if many:
+        ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    else:
+        ax.legend(fontsize=8)
     fig.tight_layout()
     tmp = args.out + ".tmp.png"
     fig.savefig(tmp, dpi=120)
