@@ -137,19 +137,18 @@ LammpsDeck makeLammpsDeck(const World& world, const RunConfig& config) {
   in += "neigh_modify delay 0 every 1 check yes\n";
   in += "neigh_modify exclude type 2 2 exclude type 3 3\n";
   in += "timestep " + num(def.dt) + "\n\n";
+  in += ramped ? "# Drive: x(t) = x0 + A s(t) sin(w t), s = min(1, t / t_ramp), vx = A (s w cos(w t) + s' sin(w t)),\n"
+                 "# t = step dt from 0 (as wiggle).\n"
+               : "# Drive: x(t) = x0 + A sin(w t), vx = A w cos(w t), t = step dt from 0 (as wiggle).\n";
+  in += "variable w equal " + num(omega) + "\n";
   if (ramped) {
     // As World::placeIntruder's ramp: s = t / t_ramp until t_ramp, then 1; ds/dt = 1 / t_ramp, then 0.
-    in += "# Drive: x(t) = x0 + A s(t) sin(w t), s = min(1, t / t_ramp), vx = A (s w cos(w t) + s' sin(w t)),\n"
-          "# t = step dt from 0 (as wiggle).\n";
-    in += "variable w equal " + num(omega) + "\n";
     in += "variable ramp equal " + num(motion.rampTime) + "\n";
     in += "variable s equal (step*dt<v_ramp)*(step*dt)/v_ramp+(step*dt>=v_ramp)\n";
     in += "variable ds equal (step*dt<v_ramp)/v_ramp\n";
     in += "variable dx equal " + num(motion.amplitude) + "*v_s*sin(v_w*(step*dt))\n";
     in += "variable vx equal " + num(motion.amplitude) + "*(v_s*v_w*cos(v_w*(step*dt))+v_ds*sin(v_w*(step*dt)))\n";
   } else {
-    in += "# Drive: x(t) = x0 + A sin(w t), vx = A w cos(w t), t = step dt from 0 (as wiggle).\n";
-    in += "variable w equal " + num(omega) + "\n";
     in += "variable dx equal " + num(motion.amplitude) + "*sin(v_w*(step*dt))\n";
     in += "variable vx equal " + num(motion.amplitude) + "*v_w*cos(v_w*(step*dt))\n";
   }

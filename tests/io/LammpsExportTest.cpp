@@ -220,10 +220,9 @@ std::map<long, Row> runWiggle(World world, std::uint64_t steps, std::uint64_t ev
 
 bool haveLammps() { return std::system("command -v lmp > /dev/null 2>&1") == 0; }
 
-// A tiny bed (about 220 grains around the 7-wide disk), made once and cached under the test's
-// temporary directory; 2,000 steps (t = 0.2) of the drive at A = 3, T = 2.
-// Exports a small case (with `rampPeriods` of drive.ramp_periods), runs the deck in LAMMPS for 2,000
-// steps and compares its intruder with wiggle's from the same state.
+// Exports a tiny bed (about 220 grains around the 7-wide disk, made once and cached under the
+// test's temporary directory) with drive.ramp_periods = `rampPeriods`, runs the deck in LAMMPS for
+// 2,000 steps (t = 0.2) of the drive at A = 3, T = 2 and compares its intruder with wiggle's.
 void expectLammpsFollowsWiggle(const std::string& rampPeriods) {
   const fs::path root = fs::path(testing::TempDir()) / "wiggle-lammps-export";
   fs::create_directories(root);
