@@ -1,5 +1,5 @@
 #pragma once
-// Coarse-grained continuum fields around the intruder (SPEC 6; paper eqs. 3.1-3.5, figures 9-11):
+// Coarse-grained continuum fields around the intruder (docs/FIELDS.md; paper eqs. 3.1-3.5, figures 9-11):
 // area fraction, velocity and stress on a square grid in the intruder's frame, averaged over the
 // frames taken at each chosen drive phase. An observer: it reads a World and never changes it.
 //

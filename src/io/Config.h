@@ -1,5 +1,5 @@
 #pragma once
-// Reading, checking and writing a run's configuration (SPEC 9; the struct is io/RunConfig.h).
+// Reading, checking and writing a run's configuration (docs/CONFIG.md; the struct is io/RunConfig.h).
 //
 // One table of key descriptors (Config.cpp, `keyTable()`) drives everything: for each TOML key it
 // holds the field it maps to, the value's kind, the allowed range, the unit and a one-line meaning.

@@ -3,7 +3,7 @@
 // deck, so that LAMMPS (Debian's `lmp`, 29 Sep 2021) can run it from the same settled bed
 // (docs/LAMMPS-EXPORT.md). Conventions are those of tools/lammps_reference/ (which wiggle matches
 // to round-off): units lj, dimension 2, atom_style sphere, pair gran/hertz/history, fix freeze on
-// the base, fix enforce2d; the intruder follows the recipe of LAMMPS-NOTES.md: every intruder atom
+// the base, fix enforce2d; the intruder follows the recipe of docs/PHYSICS.md §14: every intruder atom
 // carries the clump's total mass M (so meff of an intruder contact is m M / (m + M), as in wiggle),
 // no gravity on the atoms, `fix move variable` prescribes x(t) = x0 + A sin(2 pi t / T) and leaves
 // y to be integrated, and `fix setforce` gives every atom the force F_contact,y - M g so all atoms

@@ -1,5 +1,5 @@
 #pragma once
-// A sweep file expanded into its cases (SPEC 9; format in docs/CONFIG.md).
+// A sweep file expanded into its cases (format in docs/CONFIG.md).
 //
 //   [sweep]              optional: name, jobs, threads_per_case
 //   [base.<section>]     a run config: the starting point of every case

@@ -1,5 +1,5 @@
 #pragma once
-// The paper's cavity model (section 3.5, SPEC 7): from the outline alone, the rise threshold
+// The paper's cavity model (section 3.5; docs/PHYSICS.md §11): from the outline alone, the rise threshold
 // T_rise and the rise rate V_y(T) of a horizontally wiggling intruder. Pure functions on a vertex
 // list; no simulation types. docs/MODEL.md derives and tabulates it.
 //

@@ -1,5 +1,5 @@
 #pragma once
-// The contact law of LAMMPS `pair_style gran/hertz/history` (SPEC 2), restricted to 2D.
+// The contact law of LAMMPS `pair_style gran/hertz/history` (docs/PHYSICS.md §4), restricted to 2D.
 //
 // Source: LAMMPS src/GRANULAR/pair_gran_hertz_history.cpp, PairGranHertzHistory::compute()
 // (version 29 Sep 2021). The arithmetic below follows that routine's formulas with the z terms
@@ -26,7 +26,7 @@
 namespace wiggle {
 
 struct ContactParams {
-  double kn = 2e6;        // normal stiffness [rho d g]... Kn of SPEC 2 (units of the paper)
+  double kn = 2e6;        // normal stiffness [rho d g]... Kn of docs/PHYSICS.md §4 (units of the paper)
   double kt = 2.46e6;     // tangential stiffness
   double gammaN = 2500;   // normal damping [sqrt(g/d)]
   double gammaT = 2500;   // tangential damping [sqrt(g/d)]

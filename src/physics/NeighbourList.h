@@ -1,6 +1,6 @@
 #pragma once
-// Verlet neighbour lists with contact history (SPEC 2: history lives as long as the pair touches and
-// survives rebuilds, re-sorting and checkpoints).
+// Verlet neighbour lists with contact history (history lives as long as the pair touches and survives
+// rebuilds, re-sorting and checkpoints: docs/PHYSICS.md §4).
 //
 // NeighbourList: a half list over the grains and the frozen base in CSR form: row i holds the
 // partners j > i within radI + radJ + skin, sorted by j. Pair k is (owner[k], partner[k]); its

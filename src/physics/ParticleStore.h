@@ -11,7 +11,7 @@ namespace wiggle {
 
 enum class MassModel { Sphere, Disc };
 
-// Mass and rotational inertia coefficient of a grain of radius r and density rho (SPEC 1).
+// Mass and rotational inertia coefficient of a grain of radius r and density rho (docs/PHYSICS.md §3).
 double particleMass(MassModel model, double density, double radius);
 double inertiaCoefficient(MassModel model);  // I = c m r^2: 2/5 sphere, 1/2 disc
 

@@ -1,5 +1,5 @@
 #pragma once
-// Making the granular bed (SPEC 5): grains poured in batches around the held intruder, each batch
+// Making the granular bed (docs/PHYSICS.md §8): grains poured in batches around the held intruder, each batch
 // left to settle, until the free surface reaches the target height; grains above it removed; then
 // relaxed until the kinetic energy per grain is below bed.rest_energy (or bed.max_time is spent).
 // A bed depends only on its own parameters, so it is cached on disk under a key that hashes exactly

@@ -15,7 +15,7 @@
 
 namespace wiggle {
 
-inline constexpr int kPhaseBins = 20;  // 10 phi / pi in [0, 20), one bin per unit (SPEC 6)
+inline constexpr int kPhaseBins = 20;  // 10 phi / pi in [0, 20), one bin per unit (docs/PHYSICS.md §9)
 
 // Everything the run loop accumulates besides the World.
 struct RunState {

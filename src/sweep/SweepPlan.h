@@ -1,5 +1,5 @@
 #pragma once
-// What a sweep has to do (SPEC 8-9, docs/SWEEPS.md): the cases of a sweep file, each with its run
+// What a sweep has to do (docs/PHYSICS.md §12-13, docs/SWEEPS.md): the cases of a sweep file, each with its run
 // directory and what is already there, grouped by the bed they share, with an estimated cost.
 //
 // Tasks are of two kinds: making a bed (one per distinct bed key whose bed is not cached yet) and

@@ -1,5 +1,5 @@
 #pragma once
-// `wiggle sweep` (SPEC 8-9, docs/SWEEPS.md): runs every case of a sweep file, each in
+// `wiggle sweep` (docs/PHYSICS.md §12-13, docs/SWEEPS.md): runs every case of a sweep file, each in
 // OUT/cases/<case name>/, locally as child processes or over MPI ranks, resumably, and keeps
 // OUT/results.csv (ResultsTable.h) and OUT/sweep.log up to date.
 //

@@ -159,7 +159,7 @@ TEST(LammpsExport, DeckHoldsTheCaseParameters) {
   const std::string inRamp = makeLammpsDeck(ramped, config).input;
   EXPECT_NE(inRamp.find("variable ramp equal 4\n"), std::string::npos);
   EXPECT_NE(inRamp.find("variable dx equal 3*v_s*sin(v_w*(step*dt))\n"), std::string::npos);
-  EXPECT_EQ(in.find("v_s"), std::string::npos);  // SPEC 4's drive has no ramp
+  EXPECT_EQ(in.find("v_s"), std::string::npos);  // the plain drive has no ramp (docs/PHYSICS.md §7)
 }
 
 TEST(LammpsExport, RefusesAWorldNotAtTheStartOfADrivenRun) {

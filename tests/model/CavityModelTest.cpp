@@ -182,7 +182,7 @@ TEST(CavityModel, RejectsBadInput) {
 }
 
 #ifdef WIGGLE_BINARY
-// The `wiggle model` command's stable surface (SPEC 9): csv columns, one row per paper shape, the
+// The `wiggle model` command's stable surface (docs/PHYSICS.md §13): csv columns, one row per paper shape, the
 // :left/:right split, the geometry JSON and a one-line error with a non-zero status.
 std::string runWiggle(const std::string& args, int* status = nullptr) {
   std::string out;

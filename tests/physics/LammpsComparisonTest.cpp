@@ -1,4 +1,4 @@
-// wiggle's engine against LAMMPS itself (SPEC 2, 3): the same small configurations, run in Debian's
+// wiggle's engine against LAMMPS itself (docs/PHYSICS.md §4-5): the same small configurations, run in Debian's
 // LAMMPS (29 Sep 2021, `pair_style gran/hertz/history`, `fix nve/sphere`, `fix freeze`,
 // `fix rigid`), compared step by step. The reference data and the decks that made it are in
 // tests/data/lammps/*.json, written by tools/lammps_reference/make_reference.py (see its README);
@@ -399,7 +399,7 @@ TEST(LammpsComparison, ObliqueCollisionSticksThenSlides) {
   const Comparison cmp = compareCase("oblique");
   checkAndReport("oblique", cmp);
   EXPECT_GT(cmp.contactsCompared, 50);
-  // The case is meant to go through both friction regimes (SPEC 2's cap rescaling is exercised).
+  // The case is meant to go through both friction regimes (the Coulomb cap's rescaling, docs/PHYSICS.md §4).
   EXPECT_GE(cmp.contactsSticking, 10);
   EXPECT_GE(cmp.contactsCapped, 3);
 }

@@ -160,7 +160,7 @@ def write_deck(path, name, particles, s):
     if has_base:
         excl.append("exclude type 2 2")  # frozen-frozen pairs: no effect on motion, keep them out
     if has_clump:
-        excl.append("exclude type 3 3")  # clump atoms do not interact with each other (SPEC 4)
+        excl.append("exclude type 3 3")  # clump atoms do not interact with each other (docs/PHYSICS.md §6)
     if excl:
         d.append("neigh_modify " + " ".join(excl))
     d += [f"timestep {DT!r}", "",
