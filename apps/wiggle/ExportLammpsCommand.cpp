@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "Commands.h"
+#include "PathChecks.h"
 #include "core/Error.h"
 #include "io/Config.h"
 #include "io/LammpsExport.h"
@@ -30,7 +31,9 @@ void addExportLammpsCommand(CLI::App& app) {
       "export-lammps", "Write the case as a LAMMPS data file and deck (same bed as `wiggle run`, made if not cached)");
   cmd->add_option("config", args->config, "Run config (TOML); none = the embedded default case");
   cmd->add_option("--set", args->sets, "Override a key: --set drive.period=2 (repeatable)")->allow_extra_args(false);
-  cmd->add_option("--out", args->out, "Output directory (gets data.lammps and in.wiggle)")->required();
+  cmd->add_option("--out", args->out,
+                  "Output directory (gets data.lammps and in.wiggle; made if missing, its parent must exist)")
+      ->required();
   cmd->add_option("--threads", args->threads, "OpenMP threads for making the bed (default: all cores)")
       ->check(CLI::Range(1, 1024));
   cmd->footer(
@@ -41,6 +44,8 @@ void addExportLammpsCommand(CLI::App& app) {
     if (args->threads > 0) omp_set_num_threads(args->threads);
     std::optional<std::string> path;
     if (!args->config.empty()) path = args->config;
+    if (path) requireInputFile(*path, "config file");
+    requireOutputDirectory("--out", args->out);
     const RunConfig config = loadRunConfig(path, args->sets);
     const LammpsExportResult r = exportLammps(config, args->out);
     std::printf("bed %s %s\n", r.bedFromCache ? "loaded from" : "made and cached at", r.bedPath.c_str());

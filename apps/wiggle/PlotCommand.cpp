@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "Commands.h"
+#include "PathChecks.h"
 #include "core/Error.h"
 
 extern char** environ;
@@ -139,13 +140,14 @@ void addPlotCommand(CLI::App& app) {
   cmd->add_flag("--movie", opts->movie, "also write figures/movie.mp4 from the dump frames (ffmpeg)");
   cmd->add_option("--times", opts->times,
                   "snapshot times, comma-separated [sqrt(d/g)] (default: up to 6 spread over the run)");
-  cmd->add_option("--out", opts->out, "output directory (default DIR/figures)");
+  cmd->add_option("--out", opts->out, "output directory (default DIR/figures; made if missing, its parent must exist)");
   cmd->add_option("--geometry", opts->geometry,
                   "intruder geometry files from `wiggle model --geometry` to draw (paper fig. 13)");
   cmd->callback([opts] {
     if (opts->dir.empty() && opts->geometry.empty()) {
       throw Error("plot: give a run or sweep directory, or --geometry FILE.json ...");
     }
+    requireOutputDirectory("--out", opts->out);  // the plotter creates it (python/wiggleplot/cli.py)
     std::vector<std::string> args;
     if (!opts->dir.empty()) args.push_back(opts->dir);
     args.insert(args.end(), {"--format", opts->format});

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "Commands.h"
+#include "PathChecks.h"
 #include "core/Error.h"
 #include "sweep/SweepRunner.h"
 
@@ -29,7 +30,8 @@ void addSweepCommand(CLI::App& app) {
   auto args = std::make_shared<SweepArgs>();
   auto* cmd = app.add_subcommand("sweep", "Run every case of a sweep file (locally, or under mpirun/srun), resumably");
   cmd->add_option("sweep", args->file, "Sweep file (TOML: [sweep], [base], [grid], [[case]]; docs/CONFIG.md)");
-  cmd->add_option("--out", args->out, "Sweep directory (default: sweep-<sweep name>)");
+  cmd->add_option("--out", args->out,
+                  "Sweep directory (default: sweep-<sweep name>; made if missing, its parent must exist)");
   cmd->add_option("--jobs", args->jobs,
                   "Cases at once (default: sweep.jobs, else one per core); under MPI: per worker rank (default 1)")
       ->check(CLI::Range(1, 100000));
@@ -46,10 +48,13 @@ void addSweepCommand(CLI::App& app) {
       "Exit status: 0 when every case is ok, 1 when some failed or did not finish, 2 for bad input.");
   cmd->callback([args] {
     if (!args->makeBed.empty()) {
+      requireInputFile(args->makeBed, "config file");
       makeSweepBed(args->makeBed, args->threads);
       return;
     }
     if (args->file.empty()) throw Error("sweep: no sweep file given (wiggle sweep SWEEP.toml)");
+    requireInputFile(args->file, "sweep file");
+    requireOutputDirectory("--out", args->out);  // the default, sweep-<name>, is in the current directory
     SweepOptions options;
     options.outDir = args->out;
     options.jobs = args->jobs;

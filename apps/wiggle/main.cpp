@@ -2,9 +2,54 @@
 #include <csignal>
 #include <cstdio>
 #include <exception>
+#include <string>
+#include <vector>
 
 #include "Commands.h"
 #include "core/Error.h"
+
+namespace {
+
+// The one line `wiggle: ...` for a command-line error caught by CLI11 (unknown command or option,
+// bad value, missing argument): CLI11's own text, which names the option, with the subcommand it
+// was given to in front, the arguments of "not expected" in command-line order (CLI11 lists them
+// reversed) and a pointer to the help.
+std::string parseErrorLine(const CLI::App& app, const CLI::ParseError& e) {
+  const CLI::App* context = &app;
+  for (const CLI::App* sub = &app; !sub->get_subcommands().empty();) context = sub = sub->get_subcommands().back();
+  std::string commands;
+  for (const CLI::App* sub : app.get_subcommands({})) commands += (commands.empty() ? "" : ", ") + sub->get_name();
+  if (context == &app && dynamic_cast<const CLI::RequiredError*>(&e) && app.get_subcommands().empty()) {
+    // `wiggle rn`, `wiggle --bogus`: CLI11 says only "A subcommand is required".
+    std::string given, extras;
+    for (const std::string& a : app.remaining()) {
+      if (given.empty() && !a.empty() && a[0] != '-') given = a;
+      extras += " " + a;
+    }
+    const std::string what = !given.empty()   ? "unknown command '" + given + "'"
+                             : extras.empty() ? std::string("no command given")
+                                              : "no command given; not expected:" + extras;
+    return "wiggle: " + what + " (commands: " + commands + "; see wiggle --help)";
+  }
+  std::string message = e.what();
+  if (dynamic_cast<const CLI::ExtrasError*>(&e)) {  // get_name() is the app's name here
+    std::vector<std::string> extras = app.remaining();
+    if (!extras.empty()) context = &app;  // `wiggle --bogus run`: given to wiggle itself
+    else if (context != &app) extras = context->remaining();
+    if (!extras.empty()) {
+      message = extras.size() > 1 ? "The following arguments were not expected:"
+                                  : "The following argument was not expected:";
+      for (const std::string& a : extras) message += " " + a;
+    }
+  }
+  for (char& c : message)
+    if (c == '\n' || c == '\r') c = ' ';
+  const std::string where = context == &app ? "" : context->get_name();
+  const std::string prefix = where.empty() ? "" : where + " ";
+  return "wiggle: " + (where.empty() ? "" : where + ": ") + message + " (see wiggle " + prefix + "--help)";
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   // Over a file-size limit (ulimit -f) write() then fails with EFBIG and is reported in one line
@@ -22,7 +67,12 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // --help and --version print and exit 0; a CLI::RuntimeError carries the status of a command
+    // that has already said why (the plotter); every other parse error is bad input: one line, 2.
+    if (dynamic_cast<const CLI::RuntimeError*>(&e)) return e.get_exit_code();
+    if (dynamic_cast<const CLI::Success*>(&e)) return app.exit(e);  // --help, --version
+    std::fprintf(stderr, "%s\n", parseErrorLine(app, e).c_str());
+    return 2;
   } catch (const wiggle::Error& e) {
     std::fprintf(stderr, "wiggle: %s\n", e.what());
     return 2;

@@ -302,6 +302,43 @@ class FigureFilesTest(DataDirs):
         code, _, err = self.run_cli(self.run_dir, "--format", "gif")
         self.assertEqual(code, 2)
 
+    def test_out_creates_only_its_last_component(self):
+        # A missing parent is refused, nothing is created: --out is one new directory at most.
+        deep = os.path.join(self.tmp, "no_such_parent", "deep", "figs")
+        code, out, err = self.run_cli(self.run_dir, "--format", "png", "--out", deep)
+        self.assertEqual(code, 2)
+        self.assertEqual(err.strip(), f"wiggleplot: --out {deep}: parent directory "
+                                      f"{os.path.dirname(deep)} does not exist")
+        self.assertFalse(os.path.exists(os.path.join(self.tmp, "no_such_parent")))
+        self.assertEqual(out, "")
+        # A file where the directory should be, or a place where no directory can be made (/proc):
+        # one line naming --out, status 2, no Python error text.
+        a_file = os.path.join(self.tmp, "a_file")
+        with open(a_file, "w") as f:
+            f.write("x\n")
+        for bad, words in ((a_file, "exists and is not a directory"),
+                           (os.path.join(a_file, "figs"), "is not a directory"),
+                           ("/proc/nope", "cannot create the directory")):
+            code, _, err = self.run_cli(self.run_dir, "--format", "png", "--out", bad)
+            self.assertEqual(code, 2, bad)
+            self.assertEqual(len(err.strip().splitlines()), 1, err)
+            self.assertTrue(err.startswith(f"wiggleplot: --out {bad}: "), err)
+            self.assertIn(words, err)
+            self.assertNotIn("Errno", err)
+        # The geometry figure's --out is checked the same way.
+        code, _, err = self.run_cli("--geometry", *self.geometry, "--out", deep)
+        self.assertEqual(code, 2)
+        self.assertIn("does not exist", err)
+        # A new last component is created.
+        fresh = os.path.join(self.tmp, "fresh_out")
+        code, _, err = self.run_cli(self.run_dir, "--format", "png", "--out", fresh + "/")
+        self.assertEqual(code, 0, err)
+        self.assert_files(fresh, ["trajectory.png"])
+
+    def test_os_errors_are_one_line_without_errno(self):
+        e = PermissionError(13, "Permission denied", "/ro/figures/trajectory.png")
+        self.assertEqual(cli.os_error_line(e), "/ro/figures/trajectory.png: Permission denied")
+
 
 if __name__ == "__main__":
     unittest.main()

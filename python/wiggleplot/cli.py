@@ -35,6 +35,34 @@ def parse_args(argv):
     return p.parse_args(argv)
 
 
+def make_out_dir(out, given):
+    """Creates the output directory OUT, its last component only (like `wiggle --out`): returns None
+    when OUT is a directory now, else the one-line reason. given: OUT came from --out."""
+    name = f"--out {out}" if given else out
+    path = out.rstrip("/") or out
+    if os.path.isdir(path):
+        return None
+    if os.path.lexists(path):
+        return f"{name}: exists and is not a directory"
+    parent = os.path.dirname(path) or "."
+    if not os.path.isdir(parent):
+        if os.path.exists(parent):
+            return f"{name}: parent {parent} is not a directory"
+        return f"{name}: parent directory {parent} does not exist"
+    try:
+        os.mkdir(path)
+    except OSError as e:
+        return f"{name}: cannot create the directory: {e.strerror or e}"
+    return None
+
+
+def os_error_line(e):
+    """One line for an OSError: 'PATH: Permission denied', not "[Errno 13] Permission denied: 'PATH'"."""
+    if e.strerror and e.filename:
+        return f"{e.filename}: {e.strerror}"
+    return str(e).splitlines()[0] if str(e) else type(e).__name__
+
+
 def fail(message, code=2):
     print(f"wiggleplot: {message}", file=sys.stderr)
     return code
@@ -67,6 +95,11 @@ def main(argv=None):
             missing = [g for g in args.geometry if not os.path.isfile(g)]
             if missing:
                 return fail(f"geometry file not found: {missing[0]}")
+            if args.dir and not os.path.isdir(args.dir):
+                return fail(f"not a directory: {args.dir}")
+            problem = make_out_dir(out, bool(args.out))
+            if problem:
+                return fail(problem)
             geomplots.plot_geometries(args.geometry, out, formats, report)
             if not args.dir:
                 return 0
@@ -76,6 +109,10 @@ def main(argv=None):
             return fail(f"not a directory: {args.dir}")
         kind = directory_kind(args.dir)
         out = args.out or os.path.join(args.dir, "figures")
+        if kind is not None:
+            problem = make_out_dir(out, bool(args.out))
+            if problem:
+                return fail(problem)
         if kind == "sweep":
             sweepplots.plot_sweep(args.dir, out, formats, report)
             if args.movie:
@@ -85,7 +122,9 @@ def main(argv=None):
         else:
             return fail(f"{args.dir} is neither a run directory (summary.json or trajectory.csv) "
                         "nor a sweep directory (results.csv)")
-    except (readers.FormatError, OSError, ValueError) as e:
+    except OSError as e:
+        return fail(os_error_line(e))
+    except (readers.FormatError, ValueError) as e:
         return fail(str(e).splitlines()[0] if str(e) else type(e).__name__)
     if not report.written:
         return fail(f"nothing drawn from {args.dir or 'the geometry files'}", 2)

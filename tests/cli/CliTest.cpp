@@ -1,0 +1,240 @@
+// The `wiggle` command line as a user meets it, by running the built binary (WIGGLE_BINARY): every
+// command-line error is one line "wiggle: ..." naming the argument, with exit status 2, while
+// --help and --version exit 0; a config or sweep file that is a directory, FIFO or device is
+// refused before anything is written; --out creates at most its last component (issue 18).
+#include <gtest/gtest.h>
+
+#include <sys/stat.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+  int status = -1;  // exit status; -1 when killed or not run
+  std::string out, err;
+  // stderr's lines (without the final newline).
+  std::vector<std::string> errLines() const {
+    std::vector<std::string> lines;
+    std::istringstream in(err);
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    return lines;
+  }
+};
+
+std::string slurp(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+std::string quoted(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    char tmpl[] = "/tmp/wiggle-cli-test-XXXXXX";
+    ASSERT_NE(mkdtemp(tmpl), nullptr);
+    root_ = tmpl;
+    work_ = root_ / "work";  // the commands' current directory: must stay empty on errors
+    fs::create_directories(work_);
+    logs_ = root_ / "logs";
+    fs::create_directories(logs_);
+  }
+  void TearDown() override { fs::remove_all(root_); }
+
+  // Runs `wiggle ARGS` (shell words, already quoted where needed) in work_, bounded by a timeout so
+  // that a regression (a bad path accepted and a simulation started) fails instead of hanging.
+  Result wiggle(const std::string& args) const {
+    const std::string cmd = "cd " + quoted(work_.string()) + " && WIGGLE_CACHE=" + quoted((root_ / "cache").string()) +
+                            " timeout 120 " + quoted(WIGGLE_BINARY) + " " + args + " >" +
+                            quoted((logs_ / "out").string()) + " 2>" + quoted((logs_ / "err").string()) +
+                            " </dev/null";
+    const int raw = std::system(cmd.c_str());
+    Result r;
+    if (raw != -1 && WIFEXITED(raw)) r.status = WEXITSTATUS(raw);
+    r.out = slurp(logs_ / "out");
+    r.err = slurp(logs_ / "err");
+    return r;
+  }
+
+  // A valid run config of a tiny case (about 230 grains), its bed cached under root_: should a
+  // check below ever let it through, the command still ends in seconds.
+  std::string tinyConfig() const {
+    const fs::path path = root_ / "tiny.toml";
+    std::ofstream(path) << "[box]\nwidth = 20.0\nbed_height = 12.0\nseed = 1\n"
+                        << "[intruder]\nshape = \"polygon\"\nvertices = [[-1.5, -1.5], [1.5, -1.5], [1.5, 1.5], "
+                           "[-1.5, 1.5]]\ny0 = 6.0\n"
+                        << "[drive]\namplitude = 0.5\nperiod = 1.0\n"
+                        << "[bed]\nrest_energy = 1e-4\nmax_time = 100.0\n"
+                        << "[run]\ndt = 0.0001\nduration = 0.01\nsample_interval = 0.01\ndump_interval = 0.0\n"
+                        << "plot = false\n[fields]\nenabled = false\n";
+    return path.string();
+  }
+
+  // A sweep file whose only case fails its geometry check at once (a self-intersecting outline).
+  std::string quickSweep() const {
+    const fs::path path = root_ / "quick.toml";
+    std::ofstream(path) << "[sweep]\nname = \"quick\"\n[base.intruder]\nshape = \"polygon\"\n"
+                        << "vertices = [[0,0],[4,4],[4,0],[0,4]]\n";
+    return path.string();
+  }
+
+  bool workIsEmpty() const { return fs::is_empty(work_); }
+
+  // One line on stderr, starting "wiggle: " and holding every word of `words`; exit status 2.
+  static void expectOneLineError(const Result& r, const std::vector<std::string>& words, const std::string& what) {
+    EXPECT_EQ(r.status, 2) << what << ": " << r.err;
+    const auto lines = r.errLines();
+    ASSERT_EQ(lines.size(), 1u) << what << ": " << r.err;
+    EXPECT_EQ(lines[0].rfind("wiggle: ", 0), 0u) << what << ": " << lines[0];
+    for (const std::string& w : words)
+      EXPECT_NE(lines[0].find(w), std::string::npos) << what << ": no '" << w << "' in " << lines[0];
+  }
+
+  fs::path root_, work_, logs_;
+};
+
+TEST_F(Cli, HelpAndVersionExitZero) {
+  Result r = wiggle("--help");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("Subcommands:"), std::string::npos) << r.out;
+  r = wiggle("--version");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out, std::string("wiggle ") + WIGGLE_VERSION + "\n");
+  for (const char* sub : {"run", "sweep", "model", "plot", "export-lammps"}) {
+    r = wiggle(std::string(sub) + " --help");
+    EXPECT_EQ(r.status, 0) << sub << ": " << r.err;
+    EXPECT_NE(r.out.find(std::string("wiggle ") + sub), std::string::npos) << r.out;
+    EXPECT_EQ(r.err, "") << sub;
+  }
+}
+
+TEST_F(Cli, ParseErrorsAreOneLineNamingTheArgumentWithStatus2) {
+  // CLI11 exits 105/106/109/114 by itself; every one of these is bad input.
+  struct Case {
+    const char* args;
+    std::vector<std::string> words;
+  };
+  const std::vector<Case> cases = {
+      {"", {"no command given", "run, sweep, model, plot, export-lammps"}},
+      {"rn", {"unknown command 'rn'", "run, sweep"}},
+      {"--bogus", {"no command given; not expected: --bogus"}},
+      {"--bogus run", {"wiggle: The following argument was not expected: --bogus (see wiggle --help)"}},
+      {"run --threads abc", {"run: ", "--threads", "abc", "wiggle run --help"}},
+      {"run --threads 0", {"--threads", "0", "not in range"}},
+      {"run --bogus", {"run: ", "--bogus", "not expected"}},
+      {"run a b c", {"The following arguments were not expected: b c"}},
+      {"run --out", {"--out", "missing"}},
+      {"sweep --jobs 0", {"sweep: ", "--jobs", "0"}},
+      {"model --angle x", {"model: ", "--angle", "x"}},
+      {"plot --format", {"plot: ", "--format"}},
+      {"export-lammps", {"export-lammps: ", "--out", "required"}},
+  };
+  for (const Case& c : cases) {
+    const Result r = wiggle(c.args);
+    expectOneLineError(r, c.words, std::string("wiggle ") + c.args);
+    EXPECT_EQ(r.out, "") << c.args;
+  }
+  EXPECT_TRUE(workIsEmpty());
+}
+
+TEST_F(Cli, ConfigThatIsNotARegularFileIsRefusedBeforeAnythingIsWritten) {
+  const fs::path dir = root_ / "configs";
+  fs::create_directories(dir);
+  const fs::path fifo = root_ / "fifo.toml";
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  const std::string out = (root_ / "out").string();
+  const std::string quick = " --set run.duration=0.01 --set run.plot=false --out " + quoted(out);
+  struct Case {
+    std::string args;
+    std::vector<std::string> words;
+  };
+  const std::vector<Case> cases = {
+      {"run " + quoted(dir.string()) + quick, {"config file '" + dir.string() + "' is a directory, not a file"}},
+      {"run " + quoted(fifo.string()) + quick, {"config file '" + fifo.string() + "' is not a regular file"}},
+      {"run /dev/null" + quick, {"config file '/dev/null' is not a regular file"}},
+      {"run " + quoted((root_ / "missing.toml").string()) + quick, {"missing.toml' does not exist"}},
+      {"export-lammps " + quoted(dir.string()) + " --out " + quoted(out), {"config file '" + dir.string() + "' is a directory"}},
+      {"export-lammps " + quoted(fifo.string()) + " --out " + quoted(out), {"is not a regular file"}},
+      {"sweep " + quoted(dir.string()), {"sweep file '" + dir.string() + "' is a directory, not a file"}},
+      {"sweep " + quoted(dir.string()) + " --dry-run", {"sweep file '" + dir.string() + "' is a directory"}},
+      {"sweep " + quoted(fifo.string()) + " --out " + quoted(out), {"sweep file '" + fifo.string() + "' is not a regular file"}},
+      {"sweep --make-bed " + quoted(dir.string()), {"config file '" + dir.string() + "' is a directory"}},
+  };
+  for (const Case& c : cases) {
+    const Result r = wiggle(c.args);
+    expectOneLineError(r, c.words, c.args);
+    EXPECT_FALSE(fs::exists(out)) << c.args;
+    EXPECT_TRUE(workIsEmpty()) << c.args;  // e.g. no wiggle-out/ nor sweep-configs/
+  }
+  EXPECT_TRUE(fs::is_empty(dir));
+  EXPECT_FALSE(fs::exists(root_ / "cache"));  // no bed made either
+}
+
+TEST_F(Cli, OutCreatesAtMostItsLastComponent) {
+  const fs::path missing = root_ / "nonexistent";
+  const std::string deep = (missing / "deep" / "dir").string();
+  const std::string parent = (missing / "deep").string();
+  const std::string config = tinyConfig();
+  const std::string sweep = quickSweep();
+  const fs::path runDir = root_ / "rundir";  // looks like a run directory to the plotter
+  fs::create_directories(runDir);
+  std::ofstream(runDir / "summary.json") << "{}\n";
+  const fs::path aFile = root_ / "a_file";
+  std::ofstream(aFile) << "x\n";
+  for (const std::string& command : {"run " + quoted(config), "sweep " + quoted(sweep), "export-lammps " + quoted(config),
+                                     "plot " + quoted(runDir.string())}) {
+    Result r = wiggle(command + " --out " + quoted(deep));
+    EXPECT_EQ(r.err, "wiggle: --out " + deep + ": parent directory " + parent + " does not exist\n") << command;
+    EXPECT_EQ(r.status, 2) << command;
+    EXPECT_FALSE(fs::exists(missing)) << command << " created " << missing;
+    // A trailing slash names the same directory.
+    r = wiggle(command + " --out " + quoted(deep + "/"));
+    EXPECT_EQ(r.status, 2) << command;
+    EXPECT_NE(r.err.find("parent directory " + parent + " does not exist"), std::string::npos) << r.err;
+    // A file where the output directory should be, or under it.
+    r = wiggle(command + " --out " + quoted(aFile.string()));
+    expectOneLineError(r, {"--out " + aFile.string() + ": exists and is not a directory"}, command);
+    r = wiggle(command + " --out " + quoted((aFile / "x").string()));
+    expectOneLineError(r, {"--out " + (aFile / "x").string() + ": parent " + aFile.string() + " is not a directory"},
+                       command);
+    EXPECT_FALSE(fs::exists(missing)) << command;
+    EXPECT_TRUE(workIsEmpty()) << command;
+  }
+  EXPECT_FALSE(fs::exists(root_ / "cache"));  // refused before the bed was made
+  // The last component alone is created: the sweep makes its directory and records the case failed.
+  const std::string fresh = (root_ / "fresh").string();
+  const Result r = wiggle("sweep " + quoted(sweep) + " --out " + quoted(fresh));
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_TRUE(fs::is_regular_file(fresh + "/results.csv")) << r.err;
+}
+
+TEST_F(Cli, PlotOutThatCannotBeCreatedIsOneLineWithStatus2) {
+  if (access("/usr/bin/python3", X_OK) != 0) GTEST_SKIP() << "no /usr/bin/python3";
+  const fs::path runDir = root_ / "rundir";
+  fs::create_directories(runDir);
+  std::ofstream(runDir / "summary.json") << "{}\n";
+  const Result r = wiggle("plot " + quoted(runDir.string()) + " --out /proc/nope");
+  EXPECT_EQ(r.status, 2) << r.err;
+  const auto lines = r.errLines();
+  ASSERT_EQ(lines.size(), 1u) << r.err;
+  EXPECT_EQ(lines[0].rfind("wiggleplot: --out /proc/nope: cannot create the directory", 0), 0u) << lines[0];
+  EXPECT_EQ(lines[0].find("Errno"), std::string::npos) << lines[0];
+  EXPECT_FALSE(fs::exists(runDir / "figures"));
+}
+
+}  // namespace
