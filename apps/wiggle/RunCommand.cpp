@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "Commands.h"
+#include "PathChecks.h"
 #include "core/Error.h"
 #include "io/AtomicFile.h"
 #include "io/Config.h"
@@ -29,7 +30,7 @@ void addRunCommand(CLI::App& app) {
   auto* cmd = app.add_subcommand("run", "Run one case: make (or reuse) the bed, wiggle the intruder, measure");
   cmd->add_option("config", args->config, "Run config (TOML); none = the embedded default case");
   cmd->add_option("--set", args->sets, "Override a key: --set drive.period=2 (repeatable)")->allow_extra_args(false);
-  cmd->add_option("--out", args->out, "Output directory")->capture_default_str();
+  cmd->add_option("--out", args->out, "Output directory (made if missing; its parent must exist)")->capture_default_str();
   cmd->add_option("--threads", args->threads, "OpenMP threads (default: all cores)")->check(CLI::Range(1, 1024));
   cmd->add_flag("--resume", args->resume, "Continue from the newest good checkpoint in --out");
   cmd->add_flag("--no-plot", args->noPlot, "Do not draw the figures at the end");
@@ -40,6 +41,8 @@ void addRunCommand(CLI::App& app) {
     // Resuming without a config reuses the run directory's own resolved config.
     const std::string saved = args->out + "/config.toml";
     if (!path && args->resume && std::filesystem::exists(saved)) path = saved;
+    if (path) requireInputFile(*path, "config file");
+    requireOutputDirectory("--out", args->out);
     const RunConfig config = loadRunConfig(path, args->sets);
     RunOptions options;
     options.outDir = args->out;
@@ -48,6 +51,7 @@ void addRunCommand(CLI::App& app) {
     const RunOutcome outcome = runExperiment(config, options);
     std::printf("V_y = %.6g (least-squares slope %.6g) d per sqrt(d/g); summary in %s\n", outcome.vy,
                 outcome.vySlope, outcome.summaryPath.c_str());
+    for (const std::string& w : outcome.warnings) std::fprintf(stderr, "wiggle: warning: %s\n", w.c_str());
     std::fflush(stdout);  // before the plotter writes to the same stream
     if (config.run.plot && !args->noPlot) {
       int status = 1;

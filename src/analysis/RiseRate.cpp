@@ -52,6 +52,7 @@ RiseRate measureRiseRate(const std::vector<TrajectorySample>& samples, double to
   rate.yInitial = samples[first].y;
   rate.yFinal = samples[end].y;
   rate.vy = (rate.yFinal - rate.yInitial) / (rate.tFinal - rate.tInitial);
+  rate.windowPeriods = (rate.tFinal - rate.tInitial) / period;
 
   // Least squares over [first, end], centred for accuracy.
   const double n = static_cast<double>(end - first + 1);

@@ -1,5 +1,5 @@
 #pragma once
-// The intruder's rise rate from its sampled trajectory (SPEC 6; docs/OUTPUT-FORMATS.md states the
+// The intruder's rise rate from its sampled trajectory (docs/PHYSICS.md §9; docs/OUTPUT-FORMATS.md states the
 // rule for users).
 //
 // Paper rule: V_y = (y_f - y_i) / (t_f - t_i), t_i = 0.1 t_total, t_f = t_total unless the intruder
@@ -27,6 +27,13 @@ struct RiseRate {
   double tInitial = 0.0, tFinal = 0.0;
   double yInitial = 0.0, yFinal = 0.0;
   bool plateau = false;   // t_f was moved before the end by the plateau rule
+  double windowPeriods = 0.0;  // (t_f - t_i) / T: drive periods the rate is measured over
+
+  // The intruder's height swings within each period; a window of fewer than kMinWindowPeriods
+  // periods measures where in the cycle its ends fall more than any drift, so such a V_y is
+  // reported with a warning (summary.json, console), never silently.
+  static constexpr double kMinWindowPeriods = 2.0;
+  bool windowTooShort() const { return windowPeriods < kMinWindowPeriods; }
 };
 
 RiseRate measureRiseRate(const std::vector<TrajectorySample>& samples, double totalTime, double period,

@@ -141,7 +141,7 @@ const std::vector<KeyInfo>& keyTable() {
           "intruder.shape", {"disk", "square", "rect_narrow", "rect_wide", "triangle", "polygon"},
           [](const C& c) -> std::string { return c.intruder.shape; },
           [](C& c, const std::string& v) { c.intruder.shape = v; },
-          "outline: the paper's OS1..OS5 (SPEC 4) or \"polygon\" given by intruder.vertices"),
+          "outline: the paper's OS1..OS5 (docs/SHAPES.md) or \"polygon\" given by intruder.vertices"),
       pointList("intruder.vertices", [](C& c) -> Points& { return c.intruder.vertices; }, "d",
                 "outer outline for shape = \"polygon\": at least 3 [x, y] pairs; "
                 "empty for the other shapes"),
@@ -150,7 +150,20 @@ const std::vector<KeyInfo>& keyTable() {
       number("intruder.y0", [](C& c) -> double& { return c.intruder.y0; }, above(0), noBound, "d",
              "centre height at t = 0 (x0 is the box centre); < box.bed_height"),
       number("intruder.mass", [](C& c) -> double& { return c.intruder.mass; }, atLeast(0), noBound,
-             "rho d^3", "intruder mass; 0 = SPEC 4's default (disk outline area x grain mass per area)"),
+             "rho d^3", "intruder mass; 0 = the one intruder.mass_rule gives"),
+      choice(
+          "intruder.mass_rule", {"disk_area", "glued_disk"},
+          [](const C& c) -> std::string { return c.intruder.massRule; },
+          [](C& c, const std::string& v) { c.intruder.massRule = v; },
+          "the mass when intruder.mass = 0, the same for every shape: disk_area = the disk outline's area x "
+          "the grains' mass per area (docs/PHYSICS.md, section 6); glued_disk = the disk built of touching "
+          "0.5 d spheres at grain density (docs/SHAPES.md)"),
+      choice(
+          "intruder.surface", {"smooth", "glued"},
+          [](const C& c) -> std::string { return c.intruder.surface; },
+          [](C& c, const std::string& v) { c.intruder.surface = v; },
+          "the clump's atoms: smooth = neighbours at most 0.35 d apart; glued = touching (0.5 d apart), a "
+          "rough surface like the paper's glued spheres (docs/SHAPES.md)"),
       // [drive]
       number("drive.amplitude", [](C& c) -> double& { return c.drive.amplitude; }, atLeast(0),
              noBound, "d", "A in x(t) = x0 + A sin(2 pi t / T)"),
@@ -158,7 +171,7 @@ const std::vector<KeyInfo>& keyTable() {
              "sqrt(d/g)", "T in x(t) = x0 + A sin(2 pi t / T); a whole number of run.dt steps"),
       integer("drive.ramp_periods", [](C& c) -> std::uint64_t& { return c.drive.rampPeriods; }, atLeast(0), "",
               "periods over which the amplitude grows linearly from 0 to A, so the drive starts from rest "
-              "(0 = SPEC 4: x0 + A sin(2 pi t / T) from t = 0, at full speed)"),
+              "(0 = no ramp: x0 + A sin(2 pi t / T) from t = 0, at full speed; docs/PHYSICS.md, section 7)"),
       // [bed]
       number("bed.batch_height", [](C& c) -> double& { return c.bed.batchHeight; }, above(0),
              noBound, "d", "height of each poured layer"),
@@ -184,6 +197,9 @@ const std::vector<KeyInfo>& keyTable() {
              "interval of LAMMPS text dump frames (0 = none); a whole number of run.dt steps"),
       boolean("run.plot", [](C& c) -> bool& { return c.run.plot; },
               "draw the run's figures at the end"),
+      boolean("run.bed_history", [](C& c) -> bool& { return c.run.keepBedHistory; },
+              "start from the bed's contact history (false: every tangential spring unloaded, as an exported "
+              "LAMMPS deck starts; for comparisons with LAMMPS)"),
       // [fields]
       boolean("fields.enabled", [](C& c) -> bool& { return c.fields.enabled; },
               "measure the coarse-grained fields (area fraction, velocity, stress)"),

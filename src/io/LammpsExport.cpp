@@ -111,7 +111,7 @@ LammpsDeck makeLammpsDeck(const World& world, const RunConfig& config) {
   // ---- deck
   const ContactParams& p = def.contact;
   const bool disc = def.massModel == MassModel::Disc;
-  const double omega = 2.0 * std::numbers::pi / motion.period;  // as World::placeIntruder
+  const double omega = motion.omega();  // the value World::placeIntruder uses
   std::string& in = deck.input;
   in += "# wiggle export-lammps: " + config.intruder.shape + " intruder, A = " + num(motion.amplitude) +
         ", T = " + num(motion.period) + ", mu = " + num(p.mu) + ", " + std::to_string(s.grainCount) +
@@ -122,7 +122,7 @@ LammpsDeck makeLammpsDeck(const World& world, const RunConfig& config) {
   in += "# Contact history is NOT carried over from wiggle's bed: every contact starts with zero shear.\n";
   in += "units lj\ndimension 2\natom_style sphere\n";
   in += "boundary p fm p\n";
-  in += "processors * 1 1\n";  // a tall box: split it in x only (LAMMPS-NOTES.md)
+  in += "processors * 1 1\n";  // a tall box: split it in x only (docs/PHYSICS.md §14)
   in += "comm_modify vel yes\n";
   in += "read_data " + std::string(kLammpsDataFile) + "\n\n";
   in += "variable nsteps index " + std::to_string(deck.steps) + "\n";

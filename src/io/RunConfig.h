@@ -1,5 +1,5 @@
 #pragma once
-// A run's configuration: one struct per TOML section, one field per key (SPEC 9). The defaults
+// A run's configuration: one struct per TOML section, one field per key (docs/PHYSICS.md §13). The defaults
 // here ARE the embedded default case of `wiggle run` (docs/CONFIG.md lists them with units).
 // Parsing, validation, `--set` overrides and writing back to TOML live in io/Config.h.
 #include <array>
@@ -29,13 +29,15 @@ struct IntruderDef {
   std::vector<std::array<double, 2>> vertices;  // intruder.vertices: outline for "polygon" [d]
   double angle = 0.0;          // intruder.angle: rotation, counter-clockwise [degrees]
   double y0 = 25.0;            // intruder.y0: centre height at t = 0 [d]; x0 is the box centre
-  double mass = 0.0;           // intruder.mass: 0 means SPEC 4's default (disk area x mass/area)
+  double mass = 0.0;           // intruder.mass: 0 means the rule intruder.mass_rule
+  std::string massRule = "disk_area";  // intruder.mass_rule: disk_area|glued_disk (docs/SHAPES.md, "Mass")
+  std::string surface = "smooth";      // intruder.surface: smooth|glued (docs/SHAPES.md, "The glued surface")
 };
 
 struct DriveDef {
   double amplitude = 3.0;      // drive.amplitude: A [d]
   double period = 5.0;         // drive.period: T [sqrt(d/g)]
-  std::uint64_t rampPeriods = 0;  // drive.ramp_periods: A grows from 0 over this many periods (0: SPEC 4)
+  std::uint64_t rampPeriods = 0;  // drive.ramp_periods: A grows from 0 over n periods (0: none; docs/PHYSICS.md §7)
 };
 
 struct BedDef {
@@ -53,6 +55,7 @@ struct RunDef {
   double checkpointInterval = 300; // run.checkpoint_interval: wall-clock seconds between checkpoints
   double dumpInterval = 10.0;      // run.dump_interval: LAMMPS dump frames every ... (0 = none) [sqrt(d/g)]
   bool plot = true;                // run.plot: draw the run's figures at the end
+  bool keepBedHistory = true;      // run.bed_history: start with the bed's tangential springs (false: unloaded)
 };
 
 struct FieldsDef {

@@ -10,7 +10,7 @@
 namespace wiggle {
 
 // Bump when the payload layout of any state file changes: older files are then refused.
-constexpr std::uint32_t kStateFormatVersion = 1;
+constexpr std::uint32_t kStateFormatVersion = 2;
 
 void writeStateFile(const std::string& path, const std::string& kind, const std::string& payload);
 // The payload; throws wiggle::Error ("<path>: not a wiggle <kind> file", "... is truncated",

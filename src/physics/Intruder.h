@@ -1,9 +1,10 @@
 #pragma once
-// The intruder as the engine sees it (SPEC 4): a rigid clump of small atoms that does not rotate.
+// The intruder as the engine sees it (docs/PHYSICS.md §6): a rigid clump of small atoms that does not rotate.
 // Its horizontal position is prescribed; its vertical position is either held or integrated from
 // the sum of the contact forces on its atoms plus gravity on its total mass. Atoms do not interact
 // with each other. Shapes (how atoms fill an outline) live in scenario/.
 #include <cstdint>
+#include <numbers>
 #include <vector>
 
 namespace wiggle {
@@ -30,6 +31,8 @@ struct ClumpMotion {
   bool verticalFree = false;  // false: y held, vy = 0 (while the bed is made)
   double rampTime = 0.0;   // t_ramp [sqrt(d/g)] (RampedSinusoid); a whole number of periods keeps vx
                            // continuous where the ramp ends, since sin(2 pi t_ramp / T) = 0 there
+
+  double omega() const { return 2.0 * std::numbers::pi / period; }  // angular frequency of the sinusoids
 };
 
 struct ClumpState {

@@ -27,7 +27,7 @@ struct PairInputs {
   V dx, dy, dvx, dvy;     // i minus j, x minimum-imaged
   V radI, radJ, omegaI, omegaJ;
   V invMassSum;           // 1/mi + 1/mj
-  V alarmRadius;          // the radius the overlap alarm is relative to
+  V alarmRadius;          // the radius the overlap bound is relative to (World.h, WorldDef::maxOverlapRatio)
 };
 
 template <class V>
@@ -44,12 +44,12 @@ struct PairSlots {
 
 // The contact law for the pairs in `in` (one, or lanes of four), whose slots start at k: history
 // read from and written to shearX/Y[k..], force and torque arm written to forceX/Y and torqueArm.
-// Returns, per lane, (radI + radJ - allowed)^2 - r^2, allowed being `alarmFraction` of the diameter
-// 2 alarmRadius: positive when a pair overlaps more than that, which is how a blow-up shows between
-// two health checks. Squared, so that it costs no sqrt.
+// Returns, per lane, (radI + radJ - allowed)^2 - r^2, allowed being `overlapRatio` x alarmRadius:
+// positive when a pair overlaps more than that, which is how a blow-up shows between two health
+// checks. Squared, so that it costs no sqrt.
 template <class V>
 inline V evaluatePairs(const PairInputs<V>& in, std::uint32_t k, PairSlots slots, const ContactParams params,
-                       double dt, bool updateShear, double alarmFraction) {
+                       double dt, bool updateShear, double overlapRatio) {
   using simd::load;
   using simd::store;
   const ContactForceOf<V> c =
@@ -61,7 +61,7 @@ inline V evaluatePairs(const PairInputs<V>& in, std::uint32_t k, PairSlots slots
   store(slots.forceY + k, c.fy);
   store(slots.torqueArm + k, c.torqueArm);
   using simd::max;
-  const V closest = max(V(0.0), in.radI + in.radJ - V(alarmFraction * 2.0) * in.alarmRadius);
+  const V closest = max(V(0.0), in.radI + in.radJ - V(overlapRatio) * in.alarmRadius);
   return closest * closest - (in.dx * in.dx + in.dy * in.dy);
 }
 
@@ -112,10 +112,10 @@ struct PairChunk {
 
 // Evaluates pairs [0, n) of a chunk whose slots start at k0; returns the largest overlap excess.
 inline double evaluateChunk(const PairChunk& c, std::uint32_t n, std::uint32_t k0, PairSlots slots,
-                            const ContactParams& params, double dt, bool updateShear, double alarmFraction) {
+                            const ContactParams& params, double dt, bool updateShear, double overlapRatio) {
   return maxOverLanes(n, [&](std::uint32_t m, auto lane) {
     using V = decltype(lane);
-    return evaluatePairs(c.inputs<V>(m), k0 + m, slots, params, dt, updateShear, alarmFraction);
+    return evaluatePairs(c.inputs<V>(m), k0 + m, slots, params, dt, updateShear, overlapRatio);
   });
 }
 

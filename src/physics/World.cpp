@@ -18,12 +18,6 @@ namespace {
 
 constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 
-// The force loop raises an alarm (and so a full health check, which applies maxOverlapFraction) when
-// an overlap exceeds this multiple of the health check's limit. Looser than the limit itself: a
-// grain squeezed by the kinematically driven intruder may pass 10 % of its diameter for a moment,
-// which the sampled check tolerates; a step too large for the contacts runs far past 25 % at once.
-constexpr double kOverlapAlarmFactor = 2.5;
-
 std::string fmt(double v) {
   std::ostringstream s;
   s.precision(6);
@@ -41,7 +35,7 @@ void requireFinite(double v, const char* what) {
 // in chunks of kChunk: evaluated (PairKernel.h), then added while their slots are in L1.
 // Returns the block's largest overlap excess (see evaluatePairs).
 double accumulateBlock(std::uint32_t b, ParticleStore& s, const Kinematics* kin, NeighbourList& list,
-                       const ContactParams params, double dt, double width, bool updateShear, double alarmFraction) {
+                       const ContactParams params, double dt, double width, bool updateShear, double overlapRatio) {
   const std::uint32_t r0 = b * list.blockRows;
   const std::uint32_t r1 = std::min(r0 + list.blockRows, list.rowCount());
   std::fill(s.fx.begin() + r0, s.fx.begin() + r1, 0.0);
@@ -65,11 +59,11 @@ double accumulateBlock(std::uint32_t b, ParticleStore& s, const Kinematics* kin,
 #if WIGGLE_SIMD_DOUBLE4
       if constexpr (!std::is_same_v<decltype(lane), double>)  // four pairs: the vector gather
         return evaluatePairs(grainPairInputs(kin, s, owner + k, partner + k, width), k, slots, params, dt,
-                             updateShear, alarmFraction);
+                             updateShear, overlapRatio);
       else
 #endif
         return evaluatePairs(grainPairInputs(kin, s, owner[k], partner[k], width), k, slots, params, dt, updateShear,
-                             alarmFraction);
+                             overlapRatio);
     }));
     for (std::uint32_t k = first; k < last; ++k) {
       const std::uint32_t i = owner[k], j = partner[k];
@@ -125,11 +119,15 @@ World::World(const WorldDef& def) : def_(def) {
   if (!(def.skin > 0) || !(def.intruderSkin > 0.5 * def.skin))
     throw Error("neighbour skins must be > 0 and intruder_skin > skin / 2");
   if (def.healthInterval == 0 || def.sortInterval == 0) throw Error("intervals must be >= 1 step");
+  if (!(def.maxOverlapRatio > 0) || !(def.referenceImpactSpeed > 0) || !(def.maxSpeedFactor > 1) ||
+      !std::isfinite(def.maxOverlapRatio) || !std::isfinite(def.referenceImpactSpeed) ||
+      !std::isfinite(def.maxSpeedFactor))
+    throw Error("blow-up bounds must be finite, > 0 (the speed factor > 1)");
 }
 
 double addIntruderContactForces(ParticleStore& s, const ClumpDef& clump, ClumpState& state, IntruderPairs& ip,
                                 const ContactParams params, double dt, double width, bool updateShear,
-                                double alarmFraction) {
+                                double overlapRatio) {
   double worstExcess = -std::numeric_limits<double>::infinity();
   const double invClumpMass = 1.0 / clump.mass;
   const std::uint32_t n = s.grainCount;
@@ -153,7 +151,7 @@ double addIntruderContactForces(ParticleStore& s, const ClumpDef& clump, ClumpSt
   for (std::uint32_t first = 0; first < ip.size(); first += kChunk) {
     const std::uint32_t count = std::min(kChunk, ip.size() - first);
     for (std::uint32_t m = 0; m < count; ++m) chunk.set(m, inputs(first + m));
-    worstExcess = std::max(worstExcess, evaluateChunk(chunk, count, first, slots, params, dt, updateShear, alarmFraction));
+    worstExcess = std::max(worstExcess, evaluateChunk(chunk, count, first, slots, params, dt, updateShear, overlapRatio));
   }
   // The sums in list order, serially: the clump's total does not depend on the thread count.
   for (std::uint32_t p = 0; p < ip.size(); ++p) {
@@ -280,6 +278,12 @@ void World::resetClock() {
   placeIntruder();
 }
 
+void World::clearContactHistory() {
+  for (auto* v : {&list_.shearX, &list_.shearY, &intruderPairs_.shearX, &intruderPairs_.shearY})
+    std::fill(v->begin(), v->end(), 0.0);
+  prepared_ = false;  // forces from the unloaded springs before the next step
+}
+
 // ---------------------------------------------------------------- the step
 
 void World::run(std::uint64_t steps) {
@@ -296,7 +300,7 @@ void World::step() {
   computeContactForces(true);
   completeForces(true);  // with the second half kick
   // The full check is a scan of every particle: every healthInterval steps, and at once when the
-  // force loop saw an overlap far beyond the limit (a blow-up can open and close between two scans).
+  // force loop saw an overlap beyond the bound (a blow-up can open and close between two scans).
   if (overlapAlarm_ || step_ % def_.healthInterval == 0) checkHealth();
 }
 
@@ -318,14 +322,14 @@ void World::placeIntruder() {
       clumpState_.vx = 0.0;
       break;
     case HorizontalMotion::Sinusoid: {
-      const double omega = 2.0 * std::numbers::pi / motion_.period;
+      const double omega = motion_.omega();
       clumpState_.x = motion_.x0 + motion_.amplitude * std::sin(omega * t);
       clumpState_.vx = motion_.amplitude * omega * std::cos(omega * t);
       break;
     }
     case HorizontalMotion::RampedSinusoid: {
-      // Its own branch, not Sinusoid with a factor 1: SPEC 4's drive keeps its bits.
-      const double omega = 2.0 * std::numbers::pi / motion_.period;
+      // Its own branch, not Sinusoid with a factor 1: the plain drive (docs/PHYSICS.md §7) keeps its bits.
+      const double omega = motion_.omega();
       const bool ramping = t < motion_.rampTime;
       const double scale = ramping ? t / motion_.rampTime : 1.0;
       const double growth = ramping ? 1.0 / motion_.rampTime : 0.0;  // d(scale)/dt
@@ -502,7 +506,9 @@ void World::computeContactForces(bool updateShear) {
   const ContactParams params = def_.contact;
   const double dt = def_.dt;
   const double width = def_.boxWidth;
-  const double alarmFraction = kOverlapAlarmFactor * def_.maxOverlapFraction;
+  // The force loop applies the detector's overlap bound itself: a blow-up that opens and closes
+  // between two full scans still raises the alarm, and so a scan.
+  const double overlapRatio = def_.maxOverlapRatio;
 
   // 1. Force blocks, each on one thread (any thread: a block's sums do not depend on which).
   //    The largest overlap excess is a max, so it does not depend on the thread count either.
@@ -511,12 +517,12 @@ void World::computeContactForces(bool updateShear) {
 #pragma omp parallel for schedule(dynamic, 1) reduction(max : worstExcess)
   for (std::int64_t b = 0; b < blocks; ++b)
     worstExcess = std::max(worstExcess, accumulateBlock(static_cast<std::uint32_t>(b), s, kinematics_.data(), list,
-                                                        params, dt, width, updateShear, alarmFraction));
+                                                        params, dt, width, updateShear, overlapRatio));
 
   // 2. Intruder contacts (a few hundred pairs).
   if (hasIntruder_)
     worstExcess = std::max(worstExcess, addIntruderContactForces(s, clump_, clumpState_, intruderPairs_, params, dt,
-                                                                 width, updateShear, alarmFraction));
+                                                                 width, updateShear, overlapRatio));
   overlapAlarm_ = worstExcess > 0.0;
 }
 
@@ -554,19 +560,29 @@ void World::completeForces(bool kick) {
 
 // ---------------------------------------------------------------- checks
 
+double World::peakDriveSpeed() const {
+  if (!hasIntruder_) return 0.0;
+  const double omega = motion_.omega();
+  switch (motion_.kind) {
+    case HorizontalMotion::Held: return 0.0;
+    case HorizontalMotion::Sinusoid: return motion_.amplitude * omega;
+    case HorizontalMotion::RampedSinusoid: return motion_.amplitude * (omega + 1.0 / motion_.rampTime);  // a bound
+    case HorizontalMotion::ConstantVelocity: return std::fabs(motion_.velocity);
+  }
+  return 0.0;
+}
+
+double World::speedBound() const {
+  return def_.maxSpeedFactor * std::max(def_.referenceImpactSpeed, peakDriveSpeed());
+}
+
 void World::checkTimeStep() const {
   const ParticleStore& s = store_;
   if (s.grainCount == 0) return;
   std::uint32_t lightest = 0;
   for (std::uint32_t i = 1; i < s.grainCount; ++i)
     if (s.mass[i] < s.mass[lightest]) lightest = i;
-  double speed = def_.referenceImpactSpeed;
-  if (hasIntruder_ && motion_.kind == HorizontalMotion::Sinusoid)
-    speed = std::max(speed, 2.0 * std::numbers::pi * motion_.amplitude / motion_.period);
-  if (hasIntruder_ && motion_.kind == HorizontalMotion::RampedSinusoid)  // |vx| <= A (omega + 1 / t_ramp)
-    speed = std::max(speed, motion_.amplitude * (2.0 * std::numbers::pi / motion_.period + 1.0 / motion_.rampTime));
-  if (hasIntruder_ && motion_.kind == HorizontalMotion::ConstantVelocity)
-    speed = std::max(speed, std::fabs(motion_.velocity));
+  const double speed = std::max(def_.referenceImpactSpeed, peakDriveSpeed());
   const double contactTime = hertzContactTime(def_.contact.kn, s.radius[lightest], s.mass[lightest], speed);
   const double limit = contactTime / def_.minStepsPerContact;
   if (def_.dt > limit)
@@ -575,33 +591,48 @@ void World::checkTimeStep() const {
                 ", which needs dt <= " + fmt(limit) + " (" + fmt(def_.minStepsPerContact) + " steps per contact)");
 }
 
-void World::checkHealth() const {
+// The full scan of the blow-up detector (docs/RELIABILITY.md, "The blow-up detector"). Each bound
+// lies far beyond anything the model does when it is integrated correctly, however violent the
+// drive: it stops a run whose numbers no longer mean anything, never a run that is merely extreme.
+void World::checkHealth() {
   const ParticleStore& s = store_;
   const std::string at = "step " + std::to_string(step_) + " (t = " + fmt(time()) + "): ";
+  const std::string cure = " (the simulation blew up: reduce run.dt)";
+  const double maxSpeed = speedBound();
+  double fastestSq = 0.0;
   for (std::uint32_t i = 0; i < s.grainCount; ++i) {
     const bool finite = std::isfinite(s.x[i]) && std::isfinite(s.y[i]) && std::isfinite(s.vx[i]) &&
                         std::isfinite(s.vy[i]) && std::isfinite(s.omega[i]);
     if (!finite)
-      throw SimulationError(at + "grain " + std::to_string(s.tag[i]) +
-                            " has a non-finite position or velocity (the simulation blew up: reduce run.dt)");
+      throw SimulationError(at + "grain " + std::to_string(s.tag[i]) + " has a non-finite position or velocity" + cure);
     if (s.y[i] < 0.0)
       throw SimulationError(at + "grain " + std::to_string(s.tag[i]) + " fell through the base (y = " +
-                            fmt(s.y[i]) + "): reduce run.dt");
+                            fmt(s.y[i]) + ")" + cure);
+    const double speedSq = s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i];
+    if (speedSq > maxSpeed * maxSpeed)
+      throw SimulationError(at + "grain " + std::to_string(s.tag[i]) + " moves at " + fmt(std::sqrt(speedSq)) +
+                            " sqrt(g d), more than " + fmt(def_.maxSpeedFactor) +
+                            " times the fastest the fall or the drive can make it (" + fmt(maxSpeed / def_.maxSpeedFactor) +
+                            "): energy grew without a source" + cure);
+    fastestSq = std::max(fastestSq, speedSq);
   }
+  margins_.speed = std::max(margins_.speed, std::sqrt(fastestSq) / maxSpeed);
   const double width = def_.boxWidth, halfWidth = 0.5 * width;
-  // The allowed overlap scales with the grain's own diameter (or the smaller of two grains): an
-  // intruder atom is part of a rigid, kinematically driven body, and a grain squeezed between it and
-  // the base may legitimately overlap one of its small atoms by more than a tenth of the atom.
-  auto checkOverlap = [&](double dx, double dy, double ri, double rj, double sizeRadius, std::uint32_t tag,
+  double deepest = 0.0;
+  // The bound is relative to the radius of the grain that reaches in (the smaller of two grains):
+  // at maxOverlapRatio = 1 its centre would be at the other grain's surface or the intruder's
+  // outline, where the pair's normal no longer separates them and a grain can pass through.
+  auto checkOverlap = [&](double dx, double dy, double ri, double rj, double boundRadius, std::uint32_t tag,
                           const char* what) {
     if (dx > halfWidth) dx -= width;
     else if (dx < -halfWidth) dx += width;
     const double overlap = ri + rj - std::sqrt(dx * dx + dy * dy);
-    const double allowed = def_.maxOverlapFraction * 2.0 * sizeRadius;
+    const double allowed = def_.maxOverlapRatio * boundRadius;
     if (overlap > allowed)
       throw SimulationError(at + "grain " + std::to_string(tag) + " overlaps " + what + " by " + fmt(overlap) +
-                            " d, more than " + fmt(def_.maxOverlapFraction) +
-                            " of the grain's diameter (the simulation blew up: reduce run.dt)");
+                            " d, more than " + fmt(def_.maxOverlapRatio) + " of the radius " + fmt(boundRadius) +
+                            ": it is passing through" + cure);
+    deepest = std::max(deepest, overlap / allowed);
   };
   for (std::uint32_t k = 0; k < list_.pairCount(); ++k) {
     const std::uint32_t i = list_.owner[k], j = list_.partner[k];
@@ -609,14 +640,16 @@ void World::checkHealth() const {
                  s.tag[i],
                  j < s.grainCount ? "another grain" : "a base particle");
   }
-  if (!hasIntruder_) return;
-  if (!std::isfinite(clumpState_.y) || !std::isfinite(clumpState_.vy))
-    throw SimulationError(at + "the intruder's height or velocity is not finite (reduce run.dt)");
-  for (std::uint32_t p = 0; p < intruderPairs_.size(); ++p) {
-    const std::uint32_t g = intruderPairs_.grain[p], a = intruderPairs_.atom[p];
-    checkOverlap(s.x[g] - (clumpState_.x + clump_.offsetX[a]), s.y[g] - (clumpState_.y + clump_.offsetY[a]),
-                 s.radius[g], clump_.atomRadius, s.radius[g], s.tag[g], "the intruder");
+  if (hasIntruder_) {
+    if (!std::isfinite(clumpState_.y) || !std::isfinite(clumpState_.vy))
+      throw SimulationError(at + "the intruder's height or velocity is not finite" + cure);
+    for (std::uint32_t p = 0; p < intruderPairs_.size(); ++p) {
+      const std::uint32_t g = intruderPairs_.grain[p], a = intruderPairs_.atom[p];
+      checkOverlap(s.x[g] - (clumpState_.x + clump_.offsetX[a]), s.y[g] - (clumpState_.y + clump_.offsetY[a]),
+                   s.radius[g], clump_.atomRadius, s.radius[g], s.tag[g], "the intruder");
+    }
   }
+  margins_.overlap = std::max(margins_.overlap, deepest);
 }
 
 // ---------------------------------------------------------------- observations
@@ -684,8 +717,9 @@ void World::save(BinaryWriter& out) const {
   out.value(def_.intruderSkin);
   out.value(def_.sortInterval);
   out.value(def_.healthInterval);
-  out.value(def_.maxOverlapFraction);
+  out.value(def_.maxOverlapRatio);
   out.value(def_.referenceImpactSpeed);
+  out.value(def_.maxSpeedFactor);
   out.value(def_.minStepsPerContact);
 
   const ParticleStore& s = store_;
@@ -737,6 +771,8 @@ void World::save(BinaryWriter& out) const {
   out.value(clumpYAtBuild_);
   out.value(grainDisplacementAtIntruderBuild_);
   out.array(pendingNewToOld_);
+  out.value(margins_.overlap);
+  out.value(margins_.speed);
 }
 
 World World::load(BinaryReader& in) {
@@ -757,8 +793,9 @@ World World::load(BinaryReader& in) {
   def.intruderSkin = in.value<double>();
   def.sortInterval = in.value<std::uint64_t>();
   def.healthInterval = in.value<std::uint64_t>();
-  def.maxOverlapFraction = in.value<double>();
+  def.maxOverlapRatio = in.value<double>();
   def.referenceImpactSpeed = in.value<double>();
+  def.maxSpeedFactor = in.value<double>();
   def.minStepsPerContact = in.value<double>();
   World w(def);
 
@@ -855,6 +892,8 @@ World World::load(BinaryReader& in) {
   w.clumpYAtBuild_ = in.value<double>();
   w.grainDisplacementAtIntruderBuild_ = in.value<double>();
   w.pendingNewToOld_ = in.array<std::uint32_t>();
+  w.margins_.overlap = in.value<double>();
+  w.margins_.speed = in.value<double>();
   if (!w.listsStale_ && (w.xAtBuild_.size() != s.grainCount || w.yAtBuild_.size() != s.grainCount))
     throw Error(in.what() + " is corrupt: build positions do not match the grains");
   w.refreshKinematics();

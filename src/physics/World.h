@@ -29,10 +29,23 @@ struct WorldDef {
   double skin = 0.2;          // Verlet skin of the grain list [d]
   double intruderSkin = 1.0;  // skin of the intruder-grain list [d]; larger, as the intruder is fast
   std::uint64_t sortInterval = 2000;   // steps between spatial re-sorts of the grains (at a rebuild)
-  std::uint64_t healthInterval = 100;  // steps between full blow-up checks (overlaps are checked every step)
-  double maxOverlapFraction = 0.1;     // blow-up: overlap above this fraction of the grain's diameter (the smaller grain's)
-  double referenceImpactSpeed = 1.0;   // for the time-step check [sqrt(g d)]
+  // The blow-up detector (docs/RELIABILITY.md, "The blow-up detector"): when to stop, never physics.
+  std::uint64_t healthInterval = 100;  // steps between full scans (deep overlaps are also caught every step)
+  double maxOverlapRatio = 1.0;        // blow-up: an overlap beyond this fraction of the radius of the grain that
+                                       // reaches in (the smaller one of two grains); at 1 its centre is at the
+                                       // other's surface or the intruder's outline
+  double referenceImpactSpeed = 1.0;   // the fastest a grain moves without the drive (a fall from the top of the
+                                       // pour) [sqrt(g d)]: the time-step check and the speed bound use it
+  double maxSpeedFactor = 10.0;        // blow-up: a grain faster than this x max(referenceImpactSpeed, drive's peak)
   double minStepsPerContact = 5.0;     // refuse dt above (Hertz contact time) / this
+};
+
+// What the blow-up detector has seen so far, at its full scans: the deepest overlap as a fraction of
+// its bound and the fastest grain as a fraction of the speed bound (both 1 at a blow-up). Kept across
+// save/load, so that a resumed run reports the same margins as an uninterrupted one.
+struct HealthMargins {
+  double overlap = 0.0;
+  double speed = 0.0;
 };
 
 // Thrown when the simulation blows up; the message names the step, the particle and the quantity.
@@ -52,7 +65,7 @@ double hertzContactTime(double kn, double radius, double mass, double speed);
 // The clump's total mass enters meff, as LAMMPS does for rigid bodies.
 double addIntruderContactForces(ParticleStore& s, const ClumpDef& clump, ClumpState& state, IntruderPairs& pairs,
                                 ContactParams params, double dt, double width, bool updateShear,
-                                double alarmFraction);
+                                double overlapRatio);
 
 class World {
  public:
@@ -68,6 +81,8 @@ class World {
   void removeGrains(const std::vector<bool>& remove);
   // Time and step count back to zero: t = 0 of the drive. Forces are recomputed at the next step.
   void resetClock();
+  // Every contact's tangential spring unloaded (the history a LAMMPS data file cannot carry).
+  void clearContactHistory();
 
   // --- stepping ---
   void step();
@@ -87,6 +102,9 @@ class World {
   const NeighbourList& neighbours() const { return list_; }
   const IntruderPairs& intruderPairs() const { return intruderPairs_; }
   double kineticEnergy() const;   // translational + rotational, grains only
+  const HealthMargins& healthMargins() const { return margins_; }
+  double peakDriveSpeed() const;  // largest |vx| the intruder's prescribed motion reaches [sqrt(g d)]
+  double speedBound() const;      // a grain faster than this is a blow-up [sqrt(g d)]
   // Bytes of the simulation state's arrays, by their lengths (deterministic, unlike their
   // allocations, which differ after a load).
   std::size_t stateBytes() const;
@@ -106,7 +124,7 @@ class World {
   void computeContactForces(bool updateShear);  // contacts only: grains' sums are completed by...
   void completeForces(bool kick);                // ...cross pairs and gravity, then the half kick
   void refreshKinematics();       // every particle's Kinematics record from the store
-  void checkHealth() const;
+  void checkHealth();
   void checkTimeStep() const;
   void invalidate();              // structure changed: rebuild and re-prepare before the next step
 
@@ -126,7 +144,8 @@ class World {
   std::uint32_t nextTag_ = 0;
   bool prepared_ = false;
   bool listsStale_ = true;
-  bool overlapAlarm_ = false;  // the last force evaluation saw an overlap beyond maxOverlapFraction     // structure changed since the last build: rebuild before the next forces
+  bool overlapAlarm_ = false;  // the last force evaluation saw an overlap beyond the detector's bound
+  HealthMargins margins_;
   // Neighbour-list validity: positions at the last build, the largest squared displacement since.
   std::vector<double> xAtBuild_, yAtBuild_;
   double maxDisplacementSq_ = 0.0;

@@ -50,6 +50,8 @@ WorldDef worldDefFor(const RunConfig& config) {
   def.skin = config.engine.skin;
   def.intruderSkin = config.engine.intruderSkin;
   def.sortInterval = config.engine.sortInterval;
+  // The fastest a grain falls without the drive: from the top of the last batch poured.
+  def.referenceImpactSpeed = std::sqrt(2.0 * def.gravity * (config.box.bedHeight + config.bed.batchHeight));
   return def;
 }
 

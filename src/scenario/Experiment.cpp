@@ -309,6 +309,7 @@ RunOutcome runExperiment(const RunConfig& config, const RunOptions& options) {
              std::to_string(bed.world.grainCount()) + " grains, surface " + number(freeSurfaceHeight(bed.world)) +
              ", " + number(state.bedWallSeconds) + " s)");
     loaded.emplace(std::move(bed.world));
+    if (!config.run.keepBedHistory) loaded->clearContactHistory();
     startDrive(*loaded, config);
     std::ofstream(dumpPath, std::ios::trunc);
     state.dumpBytes = 0;
@@ -408,6 +409,13 @@ RunOutcome runExperiment(const RunConfig& config, const RunOptions& options) {
   if (config.fields.enabled) fields.writeCsv(dir + "/fields.csv");
   writeModel(dir + "/model.json", config, shape);
 
+  std::vector<std::string> warnings;
+  if (rate.windowTooShort())
+    warnings.push_back("V_y is measured over " + number(rate.windowPeriods) + " drive periods (t = " +
+                       number(rate.tInitial) + " to " + number(rate.tFinal) + "), fewer than " +
+                       number(RiseRate::kMinWindowPeriods) + ": it reflects the phase of the drive more than a drift; " +
+                       "run longer (run.duration)");
+
   nlohmann::json summary;
   summary["vy"] = rate.vy;
   summary["vy_slope"] = rate.slope;
@@ -419,6 +427,11 @@ RunOutcome runExperiment(const RunConfig& config, const RunOptions& options) {
   summary["y_initial"] = rate.yInitial;
   summary["y_final"] = rate.yFinal;
   summary["y_start"] = state.samples.front().y;
+  summary["vy_window_periods"] = rate.windowPeriods;
+  summary["warnings"] = warnings;
+  // How close the run came to the blow-up detector's bounds (1 = stopped), at its full scans.
+  summary["overlap_margin"] = world.healthMargins().overlap;
+  summary["speed_margin"] = world.healthMargins().speed;
   summary["status"] = "ok";
   summary["n_grains"] = world.grainCount();
   summary["n_particles"] = world.particles().size();
@@ -455,9 +468,11 @@ RunOutcome runExperiment(const RunConfig& config, const RunOptions& options) {
   writeFileAtomically(dir + "/summary.json", summary.dump(2) + "\n");
   log.line("done: vy = " + number(rate.vy) + ", slope = " + number(rate.slope) + ", " +
            number(summary["ns_per_particle_step"].get<double>()) + " ns/particle-step, state " + world.stateHash());
+  for (const std::string& w : warnings) log.line("warning: " + w);
   outcome.status = "ok";
   outcome.vy = rate.vy;
   outcome.vySlope = rate.slope;
+  outcome.warnings = warnings;
   outcome.stateHash = world.stateHash();
   outcome.summaryPath = dir + "/summary.json";
   return outcome;

@@ -1,10 +1,11 @@
 #pragma once
-// One case of the paper's experiment, from the bed to the rise rate (SPEC 4-6, 9): validates the
+// One case of the paper's experiment, from the bed to the rise rate (docs/PHYSICS.md §6-9, §13): validates the
 // geometry, gets the bed (cache or made), drives the intruder, samples its trajectory, bins the
 // vertical velocity by phase, takes field frames at the chosen phases, writes dumps, checkpoints
 // every run.checkpoint_interval wall seconds, and writes the run directory's files.
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "io/RunConfig.h"
 #include "physics/Intruder.h"
@@ -25,6 +26,7 @@ struct RunOptions {
 struct RunOutcome {
   std::string status;   // "ok" | "stopped"
   double vy = 0.0, vySlope = 0.0;
+  std::vector<std::string> warnings;  // what makes the result less than it seems (also in summary.json)
   std::string stateHash;
   std::string summaryPath;
 };

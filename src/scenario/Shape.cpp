@@ -281,10 +281,35 @@ double defaultIntruderMass(MassModel model, double density) {
   return area * perArea;
 }
 
+double gluedDiskMass(MassModel model, double density, double atomRadius) {
+  const double reach = 3.5 - atomRadius;  // centres this close to the disk's centre keep the atom inside
+  const double pitch = 2.0 * atomRadius, rowPitch = std::sqrt(3.0) * atomRadius;
+  const int rows = static_cast<int>(std::floor(reach / rowPitch));
+  int atoms = 0;
+  for (int j = -rows; j <= rows; ++j) {
+    const double y = j * rowPitch, shift = (j % 2 == 0) ? 0.0 : atomRadius;
+    const int columns = static_cast<int>(std::ceil(reach / pitch)) + 1;
+    for (int i = -columns; i <= columns; ++i) {
+      const double x = i * pitch + shift;
+      atoms += x * x + y * y <= reach * reach + 1e-12;
+    }
+  }
+  const double r = atomRadius;
+  const double atomMass = (model == MassModel::Sphere ? 4.0 / 3.0 * kPi * r * r * r : kPi * r * r) * density;
+  return atoms * atomMass;
+}
+
 double intruderMass(const IntruderDef& def, MassModel model, double density) {
   if (!std::isfinite(def.mass) || def.mass < 0.0)
-    throw Error("intruder.mass: must be positive (or 0 for the default), got " + fixed3(def.mass));
-  return def.mass > 0.0 ? def.mass : defaultIntruderMass(model, density);
+    throw Error("intruder.mass: must be positive (or 0 for the mass rule), got " + fixed3(def.mass));
+  if (def.mass > 0.0) return def.mass;
+  return def.massRule == "glued_disk" ? gluedDiskMass(model, density) : defaultIntruderMass(model, density);
+}
+
+ClumpOptions clumpOptionsFor(const IntruderDef& def) {
+  ClumpOptions options;
+  if (def.surface == "glued") options.maxSpacing = 2.0 * options.atomRadius;
+  return options;
 }
 
 double cornerDeviation(double theta, const ClumpOptions& o) {
@@ -423,7 +448,10 @@ ClumpQuality measureClump(const Shape& shape, const ClumpAtoms& atoms, const Clu
 ClumpAtoms buildClumpAtoms(const Shape& shape, const ClumpOptions& o) {
   ClumpAtoms atoms = placeAtoms(shape, o);
   const ClumpQuality q = measureClump(shape, atoms, o);
-  const double limit = std::max(0.1, q.worstCornerDeviation) + 1e-9;
+  // A smooth surface keeps the outline within 0.1 of the atoms (corners aside); a coarser spacing
+  // (touching atoms) has its own gap between neighbours, sqrt(s^2 / 4 + r^2) - r.
+  const double r = o.atomRadius, s = o.maxSpacing;
+  const double limit = std::max({0.1, q.worstCornerDeviation, std::sqrt(0.25 * s * s + r * r) - r}) + 1e-9;
   const std::string what = "intruder '" + shape.name + "'";
   if (q.maxOvershoot > limit)
     throw Error(what + ": outline has features too small for atoms of radius " + fixed3(o.atomRadius) +
@@ -433,15 +461,15 @@ ClumpAtoms buildClumpAtoms(const Shape& shape, const ClumpOptions& o) {
     throw Error(what + ": outline has features too small for atoms of radius " + fixed3(o.atomRadius) +
                 " d (part of it is " + fixed3(q.maxOutlineGap) + " d from the atoms, limit " +
                 fixed3(limit) + ")");
-  if (q.maxSurfaceSpacing >= 2.0 * o.atomRadius)
+  if (q.maxSurfaceSpacing > 2.0 * o.atomRadius + 1e-9)  // touching atoms close the shell
     throw Error(what + ": surface atoms leave a gap (spacing " + fixed3(q.maxSurfaceSpacing) + " d)");
   if (o.guardInterior && q.maxUncoveredInterior > 0.0)
     throw Error(what + ": the interior could not be covered with guard atoms");
   return atoms;
 }
 
-ClumpDef makeClump(const IntruderDef& def, MassModel model, double density,
-                   const ClumpOptions& options) {
+ClumpDef makeClump(const IntruderDef& def, MassModel model, double density) {
+  const ClumpOptions options = clumpOptionsFor(def);
   const Shape shape = makeShape(def);
   const ClumpAtoms atoms = buildClumpAtoms(shape, options);
   ClumpDef clump;

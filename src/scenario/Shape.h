@@ -1,5 +1,5 @@
 #pragma once
-// Intruder shapes (SPEC 4): the outline of each of the paper's shapes or of a user polygon, and the
+// Intruder shapes (docs/PHYSICS.md §6): the outline of each of the paper's shapes or of a user polygon, and the
 // rigid clump of atoms (radius 0.25 d) that stands for it in the engine. docs/SHAPES.md explains
 // the choices; the numbers quoted here are measured by tests/scenario/ShapeTest.cpp.
 //
@@ -38,14 +38,18 @@ const std::vector<std::string>& paperShapeNames();
 Shape makeShape(const std::string& name, const Outline& vertices = {}, double angleDegrees = 0.0);
 Shape makeShape(const IntruderDef& def);
 
-// SPEC 4's default intruder mass: the disk outline's area pi 3.5^2 times the grain material's mass
-// per area, (2/3) rho d for spheres (a sphere's mass over its disc area) or rho for discs.
+// The default intruder mass (docs/PHYSICS.md §6): the disk outline's area pi 3.5^2 times the grain
+// material's mass per area, (2/3) rho d for spheres (a sphere's mass over its disc area) or rho for discs.
 double defaultIntruderMass(MassModel model, double density);  // [rho d^3]
-// def.mass when positive, else the default.
+// The mass of the disk outline (diameter 7) built of glued atoms: a hexagonal packing of touching
+// spheres of radius atomRadius, one at the centre, every one inside the outline, each with the
+// grains' mass model and density. 151 atoms of radius 0.25: 9.88 rho d^3 as spheres (29.6 as discs).
+double gluedDiskMass(MassModel model, double density, double atomRadius = 0.25);  // [rho d^3]
+// def.mass when positive, else the one def.massRule names (the same for every shape).
 double intruderMass(const IntruderDef& def, MassModel model, double density);
 
 struct ClumpOptions {
-  double atomRadius = 0.25;  // [d] SPEC 4: spheres of diameter 0.5
+  double atomRadius = 0.25;  // [d] spheres of diameter 0.5 (docs/PHYSICS.md §6)
   // Largest centre spacing of neighbouring surface atoms [d]. At 0.35 the outline stays within
   // 0.055 of the atoms, the cusps between atoms are 0.071 deep and a 0.9 grain sinks at most 0.022
   // into the surface (docs/SHAPES.md).
@@ -68,6 +72,10 @@ struct ClumpAtoms {
   std::vector<OutlinePoint> guard;    // interior atoms [d]
   double atomRadius = 0.25;           // [d]
 };
+
+// The construction an intruder definition asks for (intruder.surface): "smooth", the defaults
+// above; "glued", neighbouring surface atoms touching (maxSpacing = 2 atomRadius).
+ClumpOptions clumpOptionsFor(const IntruderDef& def);
 
 // Places the atoms for a shape (no validation; see measureClump / makeClump).
 ClumpAtoms placeAtoms(const Shape& shape, const ClumpOptions& options = {});
@@ -97,8 +105,8 @@ ClumpQuality measureClump(const Shape& shape, const ClumpAtoms& atoms,
 // atoms (an envelope deviation beyond max(0.1, worst corner deviation)).
 ClumpAtoms buildClumpAtoms(const Shape& shape, const ClumpOptions& options = {});
 
-// The engine's clump for an intruder definition: atom offsets relative to the centroid and the mass.
-ClumpDef makeClump(const IntruderDef& def, MassModel model, double density,
-                   const ClumpOptions& options = {});
+// The engine's clump for an intruder definition: atom offsets relative to the centroid and the mass,
+// built as clumpOptionsFor(def) says.
+ClumpDef makeClump(const IntruderDef& def, MassModel model, double density);
 
 }  // namespace wiggle

@@ -324,12 +324,15 @@ class Coordinator {
 
   std::optional<SweepTask> nextTask() {
     if (stopping_) return std::nullopt;
-    for (std::size_t b = 0; b < plan_.beds.size(); ++b)
-      if (bedState_[b] == BedState::Waiting) return SweepTask{SweepTask::Kind::Bed, plan_.beds[b].firstCase};
+    // In case order: the first case not started runs if its bed is ready, or has its bed made if
+    // nobody is making it yet. So results arrive in the sweep's order and beds just in time: a long
+    // sweep stopped early has its first cases done rather than all its beds, and with many workers
+    // every bed still starts at once (no case can run before its bed).
     for (std::size_t c = 0; c < plan_.cases.size(); ++c) {
       if (started_[c]) continue;
       const int b = plan_.cases[c].bedTask;
       if (b < 0 || bedState_[b] == BedState::Done) return SweepTask{SweepTask::Kind::Case, c};
+      if (bedState_[b] == BedState::Waiting) return SweepTask{SweepTask::Kind::Bed, plan_.beds[b].firstCase};
     }
     return std::nullopt;
   }

@@ -25,6 +25,20 @@ TEST(RiseRate, SteadyRiseWithWiggleGivesItsSpeed) {
   EXPECT_NEAR(r.slope, 0.02, 1e-5);
 }
 
+TEST(RiseRate, AWindowOfFewerThanTwoPeriodsIsFlagged) {
+  // A resting intruder wiggling at T = 1 and sampled over t = 0.5: the window [0.05, 0.5] is 0.45
+  // periods, and its chord reads the swing (here 0.2 sin(2 pi t)) as a rate of 0.4. Over t = 100 the
+  // same motion gives 90 periods and no flag; exactly 2 periods is enough.
+  auto y = [](double t) { return 25 + 0.2 * std::sin(2 * M_PI * t); };
+  const RiseRate shortRun = measureRiseRate(sampled(0.5, 0.05, y), 0.5, 1, 50.0);
+  EXPECT_NEAR(shortRun.windowPeriods, 0.45, 1e-9);
+  EXPECT_TRUE(shortRun.windowTooShort());
+  const RiseRate longRun = measureRiseRate(sampled(100, 0.05, y), 100, 1, 50.0);
+  EXPECT_NEAR(longRun.windowPeriods, 90, 1e-9);
+  EXPECT_FALSE(longRun.windowTooShort());
+  EXPECT_FALSE(measureRiseRate(sampled(100, 0.05, y), 100, 45, 50.0).windowTooShort());  // 90 / 45 = 2
+}
+
 TEST(RiseRate, PlateauEndsTheWindow) {
   // Rises at 0.1 until t = 400, then stays: t_f is where the plateau starts (within the averaging
   // window and tolerance: 0.5 d / 0.1 = 5 time units early at most).

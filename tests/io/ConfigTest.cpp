@@ -55,6 +55,8 @@ std::vector<std::string> differingFields(const RunConfig& a, const RunConfig& b)
   num("intruder.angle", a.intruder.angle, b.intruder.angle);
   num("intruder.y0", a.intruder.y0, b.intruder.y0);
   num("intruder.mass", a.intruder.mass, b.intruder.mass);
+  other("intruder.massRule", a.intruder.massRule == b.intruder.massRule);
+  other("intruder.surface", a.intruder.surface == b.intruder.surface);
   num("drive.amplitude", a.drive.amplitude, b.drive.amplitude);
   num("drive.period", a.drive.period, b.drive.period);
   other("drive.rampPeriods", a.drive.rampPeriods == b.drive.rampPeriods);
@@ -69,6 +71,7 @@ std::vector<std::string> differingFields(const RunConfig& a, const RunConfig& b)
   num("run.checkpointInterval", a.run.checkpointInterval, b.run.checkpointInterval);
   num("run.dumpInterval", a.run.dumpInterval, b.run.dumpInterval);
   other("run.plot", a.run.plot == b.run.plot);
+  other("run.keepBedHistory", a.run.keepBedHistory == b.run.keepBedHistory);
   other("fields.enabled", a.fields.enabled == b.fields.enabled);
   bool samePhases = a.fields.phases.size() == b.fields.phases.size();
   for (std::size_t i = 0; samePhases && i < a.fields.phases.size(); ++i) {
@@ -85,7 +88,7 @@ std::vector<std::string> differingFields(const RunConfig& a, const RunConfig& b)
   return out;
 }
 
-// Every TOML key (SPEC 9 names), a valid non-default value, and the field it must land in.
+// Every TOML key (docs/CONFIG.md names), a valid non-default value, and the field it must land in.
 const std::vector<std::tuple<std::string, std::string, std::string>>& everyKey() {
   static const std::vector<std::tuple<std::string, std::string, std::string>> keys = {
       {"box.width", "61", "box.width"},
@@ -104,6 +107,8 @@ const std::vector<std::tuple<std::string, std::string, std::string>>& everyKey()
       {"intruder.angle", "30", "intruder.angle"},
       {"intruder.y0", "20", "intruder.y0"},
       {"intruder.mass", "40", "intruder.mass"},
+      {"intruder.mass_rule", "glued_disk", "intruder.massRule"},
+      {"intruder.surface", "glued", "intruder.surface"},
       {"drive.amplitude", "1", "drive.amplitude"},
       {"drive.period", "2", "drive.period"},
       {"drive.ramp_periods", "3", "drive.rampPeriods"},
@@ -118,6 +123,7 @@ const std::vector<std::tuple<std::string, std::string, std::string>>& everyKey()
       {"run.checkpoint_interval", "60", "run.checkpointInterval"},
       {"run.dump_interval", "0", "run.dumpInterval"},
       {"run.plot", "false", "run.plot"},
+      {"run.bed_history", "false", "run.keepBedHistory"},
       {"fields.enabled", "false", "fields.enabled"},
       {"fields.phases", "[0, 5]", "fields.phases"},
       {"fields.radius", "10", "fields.radius"},
@@ -148,7 +154,7 @@ TEST(Config, KeyListIsExactlyTheSpecKeys) {
   std::set<std::string> expected;
   for (const auto& [key, value, field] : everyKey()) expected.insert(key);
   const std::vector<std::string> keys = configKeys();
-  EXPECT_EQ(keys.size(), 39u);
+  EXPECT_EQ(keys.size(), 42u);
   EXPECT_EQ(std::set<std::string>(keys.begin(), keys.end()), expected);
 }
 
@@ -478,7 +484,7 @@ TEST(Config, ShippedPresetsLoad) {
   const RunConfig paper = loadRunConfig(dir + "paper.toml", {});
   EXPECT_EQ(paper.box.width, 300.0);
   EXPECT_EQ(paper.box.bedHeight, 195.0);
-  EXPECT_EQ(paper.box.bedHeight - paper.intruder.y0, 105.0);  // SPEC 1: 105 d below the surface
+  EXPECT_EQ(paper.box.bedHeight - paper.intruder.y0, 105.0);  // docs/PHYSICS.md §2: 105 d below the surface
   EXPECT_EQ(paper.run.duration, 1000.0);
   EXPECT_EQ(paper.run.dt, 1e-4);
   EXPECT_EQ(paper.contact.mu, 0.1);

@@ -289,30 +289,82 @@ TEST(World, BlowUpIsStoppedWithADiagnostic) {
   }
 }
 
+// Two d = 1 grains thrown head-on at a relative speed `speed`, without gravity and with the speed
+// bound out of the way (so only the overlap bound can stop them), for 300 steps with a full scan
+// every `scanEvery` steps. Hertz squeezes them by delta_max = (5 meff v^2 / (4 kn sqrt(Reff)))^(2/5)
+// for a few steps from about step 10. Returns what the detector saw.
+HealthMargins collideHeadOn(double speed, std::uint64_t scanEvery) {
+  WorldDef def = smallBox();
+  def.gravity = 0.0;
+  def.healthInterval = scanEvery;
+  def.referenceImpactSpeed = 1e4;
+  World w(def);
+  w.addGrain(5.0, 5.0, 0.5, 0.5 * speed, 0.0);
+  w.addGrain(6.5, 5.0, 0.5, -0.5 * speed, 0.0);
+  w.run(300);
+  return w.healthMargins();
+}
+
 TEST(World, OverlapBetweenHealthScansIsCaught) {
-  // A head-on collision at a relative speed of 500 squeezes two d = 1 grains by about 32 % of d
-  // (Hertz: delta_max = (5 meff v^2 / (4 kn sqrt(Reff)))^(2/5)) for a few steps after step 10, and
-  // they are apart again long before the first full scan at step 1000: only the per-step overlap
-  // alarm of the force loop (at 2.5 x the 10 % limit) can see it. At 60 the squeeze (about 6 %)
-  // stays below the limit, and at 150 (about 12 %) below the alarm: a transient squeeze past the
-  // limit between scans is tolerated, as the sampled check always did.
-  auto collide = [](double speed) {
-    WorldDef def = smallBox();
-    def.gravity = 0.0;
-    def.healthInterval = 1000;
-    World w(def);
-    w.addGrain(5.0, 5.0, 0.5, 0.5 * speed, 0.0);
-    w.addGrain(6.5, 5.0, 0.5, -0.5 * speed, 0.0);
-    w.run(300);
-  };
-  EXPECT_NO_THROW(collide(60.0));
-  EXPECT_NO_THROW(collide(150.0));
+  // With the first full scan at step 1000, long after the grains are apart again, only the force
+  // loop's per-step overlap alarm can see the squeeze. At 500 it (about 0.37 d) stays inside the
+  // bound (the radius, 0.5 d): a violent but valid contact; at 1500 (about 0.88 d) a grain's centre
+  // passes the other's surface: a blow-up.
+  EXPECT_NO_THROW(collideHeadOn(500.0, 1000));
   try {
-    collide(500.0);
+    collideHeadOn(1500.0, 1000);
     FAIL() << "the transient overlap was not detected";
   } catch (const SimulationError& e) {
-    EXPECT_NE(std::string(e.what()).find("overlaps"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("overlaps another grain"), std::string::npos) << e.what();
   }
+}
+
+TEST(World, DeepButValidOverlapRunsAndIsReported) {
+  // The squeeze at 500, seen by a scan every step: it runs to the end, and the margin it reports is
+  // the deepest overlap over the bound, between the Hertz estimate's order (0.37 d of 0.5) and 1;
+  // the speed margin is the grains' initial speed over the bound (10 x 1e4).
+  const HealthMargins seen = collideHeadOn(500.0, 1);
+  EXPECT_GT(seen.overlap, 0.5);
+  EXPECT_LT(seen.overlap, 1.0);
+  EXPECT_NEAR(seen.speed, 250.0 / 1e5, 1e-9);
+}
+
+TEST(World, GrainFasterThanTheSpeedBoundIsABlowUp) {
+  // Nothing in the world can give a grain more than maxSpeedFactor x max(reference speed, drive):
+  // such a speed is energy from nowhere. A lone grain just under the bound flies on; just over, the
+  // first scan stops it.
+  auto fly = [](double factor) {
+    WorldDef def = smallBox();
+    def.gravity = 0.0;
+    def.healthInterval = 1;
+    def.referenceImpactSpeed = 2.0;
+    World w(def);
+    w.addGrain(5.0, 5.0, 0.5, 0.0, factor * def.maxSpeedFactor * def.referenceImpactSpeed);
+    w.run(2);
+  };
+  EXPECT_NO_THROW(fly(0.99));
+  try {
+    fly(1.01);
+    FAIL() << "a grain past the speed bound was not stopped";
+  } catch (const SimulationError& e) {
+    EXPECT_NE(std::string(e.what()).find("energy grew without a source"), std::string::npos) << e.what();
+  }
+}
+
+TEST(World, SpeedBoundFollowsTheDrive) {
+  // The bound is maxSpeedFactor x the larger of the reference speed and the drive's peak speed.
+  WorldDef def = smallBox();
+  World w(def);
+  EXPECT_DOUBLE_EQ(w.speedBound(), def.maxSpeedFactor * def.referenceImpactSpeed);
+  w.setIntruder(ClumpDef{{0.0}, {0.0}, 0.25, 1.0}, 5.0, 5.0);
+  ClumpMotion m;
+  m.kind = HorizontalMotion::Sinusoid;
+  m.x0 = 5.0;
+  m.amplitude = 5.0;
+  m.period = 0.25;
+  w.setIntruderMotion(m);
+  EXPECT_DOUBLE_EQ(w.peakDriveSpeed(), 2.0 * std::numbers::pi * 5.0 / 0.25);
+  EXPECT_DOUBLE_EQ(w.speedBound(), def.maxSpeedFactor * w.peakDriveSpeed());
 }
 
 TEST(World, RejectsBadParticles) {
@@ -342,7 +394,7 @@ TEST(World, ClumpAloneFallsFreelyAndHeldClumpStays) {
 }
 
 // drive.ramp_periods: x = x0 + A min(1, t / t_ramp) sin(w t) starts at rest, and from t_ramp on it is
-// SPEC 4's drive, with vx continuous across t_ramp (a whole number of periods, where sin(w t) = 0).
+// the plain drive (docs/PHYSICS.md §7), with vx continuous across t_ramp (a whole number of periods, where sin(w t) = 0).
 TEST(World, RampedDriveStartsFromRestAndBecomesTheSinusoid) {
   World w(smallBox());
   w.addGrain(1.0, 50.0, 0.5);  // far away
@@ -351,7 +403,7 @@ TEST(World, RampedDriveStartsFromRestAndBecomesTheSinusoid) {
   w.setIntruderMotion({HorizontalMotion::RampedSinusoid, 10.0, amplitude, period, 0.0, false, ramp});
   w.resetClock();
   EXPECT_EQ(w.intruder().x, 10.0);
-  EXPECT_EQ(w.intruder().vx, 0.0);  // SPEC 4's drive starts at 2 pi A / T = 3.1
+  EXPECT_EQ(w.intruder().vx, 0.0);  // the plain drive starts at 2 pi A / T = 3.1
   const double omega = 2.0 * std::numbers::pi / period;
   const auto expectDrive = [&](double scale, double growth) {
     const double t = w.time();
@@ -367,7 +419,7 @@ TEST(World, RampedDriveStartsFromRestAndBecomesTheSinusoid) {
   expectDrive(w.time() / ramp, 1.0 / ramp);
   w.run(1);  // where it ends, both formulas give A w: vx is continuous
   EXPECT_NEAR(w.intruder().vx, amplitude * omega, 1e-12);
-  w.run(13000);  // past the ramp: SPEC 4's drive
+  w.run(13000);  // past the ramp: the plain drive (docs/PHYSICS.md §7)
   expectDrive(1.0, 0.0);
 }
 

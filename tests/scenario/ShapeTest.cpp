@@ -319,6 +319,56 @@ TEST(Shape, MassRule) {
   EXPECT_THROW(makeClump(def, MassModel::Sphere, 1.0), Error);
 }
 
+TEST(Shape, GluedDiskMassIsAHexagonalPackingOfTouchingSpheres) {
+  // Atoms of radius 0.25 whose centres lie within 3.25 of the centre, on a hexagonal lattice of
+  // pitch 0.5: about pi/(2 sqrt 3) x (3.25 / 0.25)^2 = 153.3 of them (the lattice's packing fraction
+  // times the inner disk's area over an atom's); each a sphere of (4/3) pi 0.25^3.
+  const double atom = 4.0 / 3.0 * kPi * 0.25 * 0.25 * 0.25;
+  const double atoms = gluedDiskMass(MassModel::Sphere, 1.0) / atom;
+  EXPECT_NEAR(atoms, std::round(atoms), 1e-9);  // a whole number of atoms
+  EXPECT_NEAR(atoms, 153.3, 6.0);  // 151: the boundary loses a few
+  EXPECT_NEAR(gluedDiskMass(MassModel::Disc, 1.0) / (kPi * 0.0625), atoms, 1e-9);  // the same atoms as discs
+  EXPECT_NEAR(gluedDiskMass(MassModel::Sphere, 2.0), 2.0 * gluedDiskMass(MassModel::Sphere, 1.0), 1e-12);
+  // The rule gives it to every shape, and an explicit mass still wins.
+  IntruderDef def;
+  def.shape = "triangle";
+  def.massRule = "glued_disk";
+  EXPECT_DOUBLE_EQ(makeClump(def, MassModel::Sphere, 1.0).mass, gluedDiskMass(MassModel::Sphere, 1.0));
+  def.mass = 12.5;
+  EXPECT_DOUBLE_EQ(makeClump(def, MassModel::Sphere, 1.0).mass, 12.5);
+}
+
+TEST(Shape, GluedSurfaceHasTouchingAtomsAndStillHoldsGrainsOut) {
+  // intruder.surface = "glued": neighbouring surface atoms touch (spacing up to 2r = 0.5, against
+  // 0.35 for the smooth surface), so the envelope has cusps 0.25 deep, but no grain of radius
+  // >= 0.45 can pass between two atoms nor sit inside the outline.
+  std::mt19937_64 rng(11);
+  for (const std::string& name : paperShapeNames()) {
+    IntruderDef def;
+    def.shape = name;
+    def.surface = "glued";
+    const Shape shape = makeShape(def);
+    const ClumpAtoms atoms = buildClumpAtoms(shape, clumpOptionsFor(def));
+    const ClumpQuality q = measureClump(shape, atoms, clumpOptionsFor(def));
+    EXPECT_LE(q.maxSurfaceSpacing, 0.5 + 1e-9) << name;
+    EXPECT_GT(q.maxSurfaceSpacing, 0.4) << name;
+    EXPECT_LT(q.maxLodgeDepth, 0.05) << name;  // 0.7 - sqrt(0.49 - 0.0625) = 0.046 at the widest gap
+    const ClumpAtoms smooth = buildClumpAtoms(shape);
+    EXPECT_LT(atoms.surface.size(), smooth.surface.size()) << name;
+    const ClumpDef c = makeClump(def, MassModel::Sphere, 1.0);
+    const OutlineBox box = boundingBox(shape.outline);
+    std::uniform_real_distribution<double> ux(box.xMin, box.xMax), uy(box.yMin, box.yMax);
+    for (int k = 0; k < 5000; ++k) {
+      const OutlinePoint p{ux(rng), uy(rng)};
+      if (!inside(shape.outline, p)) continue;
+      double best = 1e9;
+      for (std::size_t j = 0; j < c.offsetX.size(); ++j)
+        best = std::min(best, std::hypot(p[0] - c.offsetX[j], p[1] - c.offsetY[j]));
+      ASSERT_LT(best, kR + 0.45) << name << " at (" << p[0] << ", " << p[1] << ")";
+    }
+  }
+}
+
 TEST(Shape, ClumpIsCentredAndSymmetric) {
   // Mirror-symmetric shapes give mirror-symmetric clumps about x = 0, so the clump's atoms have
   // no net horizontal offset; atom count stays small.
