@@ -13,6 +13,8 @@ enum class RngStream : std::uint64_t {
   GrainDiameter = 1,   // index: grain serial number in the pour; draw 0
   PourPosition = 2,    // index: grain serial number; draws 0 (x), 1 (y jitter)
   PourVelocity = 3,    // index: grain serial number; draws 0, 1
+  RandomPourDiameter = 4,  // bed.pour = "random"; index: attempt serial number in the pour; draw 0
+  RandomPourPosition = 5,  // bed.pour = "random"; index: attempt serial number; draws 0 (x), 1 (y)
 };
 
 inline std::uint64_t mix64(std::uint64_t z) {

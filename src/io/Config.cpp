@@ -29,6 +29,7 @@ constexpr Bound noBound{};
 constexpr Bound above(double v) { return {true, v, false}; }
 constexpr Bound atLeast(double v) { return {true, v, true}; }
 constexpr Bound below(double v) { return {true, v, false}; }
+constexpr Bound atMost(double v) { return {true, v, true}; }
 
 using Points = std::vector<std::array<double, 2>>;
 
@@ -175,6 +176,17 @@ const std::vector<KeyInfo>& keyTable() {
       // [bed]
       number("bed.batch_height", [](C& c) -> double& { return c.bed.batchHeight; }, above(0),
              noBound, "d", "height of each poured layer"),
+      choice(
+          "bed.pour", {"lattice", "random"},
+          [](const C& c) -> std::string { return c.bed.pour; },
+          [](C& c, const std::string& v) { c.bed.pour = v; },
+          "how each batch is placed (docs/PHYSICS.md, section 8): lattice = a loose lattice with small random "
+          "velocities; random = grains at random non-overlapping positions, as LAMMPS's fix pour"),
+      number("bed.pour_fraction", [](C& c) -> double& { return c.bed.pourFraction; }, above(0), atMost(0.6),
+             "", "pour = \"random\" only: area fraction of grains a batch fills in its insertion region "
+             "(box.width x bed.batch_height, one d_max above the highest grain; fix pour's vol)"),
+      number("bed.pour_speed", [](C& c) -> double& { return c.bed.pourSpeed; }, atLeast(0), noBound,
+             "sqrt(g d)", "pour = \"random\" only: initial downward speed of the grains (fix pour's vel; vx = 0)"),
       number("bed.settle_speed", [](C& c) -> double& { return c.bed.settleSpeed; }, above(0),
              noBound, "sqrt(g d)", "the next batch is poured when the rms grain speed is below this"),
       number("bed.rest_energy", [](C& c) -> double& { return c.bed.restEnergy; }, above(0), noBound,

@@ -42,6 +42,9 @@ struct DriveDef {
 
 struct BedDef {
   double batchHeight = 20.0;   // bed.batch_height: height of each poured layer [d]
+  std::string pour = "lattice";  // bed.pour: lattice|random, how a batch is placed (docs/PHYSICS.md §8)
+  double pourFraction = 0.3;   // bed.pour_fraction: area fraction a random batch fills in its region (pour = random)
+  double pourSpeed = 1.0;      // bed.pour_speed: initial downward speed of a random batch (pour = random) [sqrt(g d)]
   double settleSpeed = 0.05;   // bed.settle_speed: pour the next batch when the rms grain speed is below [sqrt(g d)]
   double restEnergy = 1e-6;    // bed.rest_energy: relax until kinetic energy per grain (1-time-unit mean) below [m g d]
   double maxTime = 2000.0;     // bed.max_time: give up making the bed after this simulated time

@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "core/Error.h"
+#include "io/Config.h"
 #include "io/StateFile.h"
 
 namespace wiggle {
@@ -48,11 +49,26 @@ void writeCheckpoint(const std::string& runDir, const std::string& configToml, c
   writeStateFile(checkpointPath(runDir), "checkpoint", out.bytes());
 }
 
+namespace {
+
+bool sameStoredConfig(const std::string& stored, const std::string& name, const RunConfig& config) {
+  try {
+    return sameRunConfig(parseRunConfig(stored, name + " (its config)"), config);
+  } catch (const Error&) {
+    return false;  // a key this version no longer knows: another config
+  }
+}
+
+}  // namespace
+
 Checkpoint parseCheckpoint(const std::string& file, const std::string& name, const RunConfig& config,
                            const std::string& configToml) {
   const std::string payload = parseStateFile(file, name, "checkpoint");
   BinaryReader in(payload.data(), payload.size(), name);
-  if (in.string() != configToml) throw Error(name + " belongs to another config");
+  // The same config, read back: a checkpoint written before a key was added (and so without it)
+  // holds that key's default, and stays valid as long as the run does not change it.
+  const std::string stored = in.string();
+  if (stored != configToml && !sameStoredConfig(stored, name, config)) throw Error(name + " belongs to another config");
   World world = World::load(in);
   RunState state;
   state.load(in);

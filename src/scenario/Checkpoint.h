@@ -47,7 +47,9 @@ void writeCheckpoint(const std::string& runDir, const std::string& configToml, c
                      const RunState& state, const FieldObserver& fields);
 
 // The checkpoint in a file's bytes (`name` starts every error message). `configToml` is
-// toToml(config): a checkpoint of any other config is refused. Throws wiggle::Error for anything
+// toToml(config): a checkpoint of any other config is refused; one written by a version that did not
+// have some key yet counts as holding that key's default (so a long run survives an upgrade that
+// adds keys, unless it sets one of them). Throws wiggle::Error for anything
 // truncated, corrupt, foreign or inconsistent.
 Checkpoint parseCheckpoint(const std::string& file, const std::string& name, const RunConfig& config,
                            const std::string& configToml);

@@ -61,6 +61,9 @@ std::vector<std::string> differingFields(const RunConfig& a, const RunConfig& b)
   num("drive.period", a.drive.period, b.drive.period);
   other("drive.rampPeriods", a.drive.rampPeriods == b.drive.rampPeriods);
   num("bed.batchHeight", a.bed.batchHeight, b.bed.batchHeight);
+  other("bed.pour", a.bed.pour == b.bed.pour);
+  num("bed.pourFraction", a.bed.pourFraction, b.bed.pourFraction);
+  num("bed.pourSpeed", a.bed.pourSpeed, b.bed.pourSpeed);
   num("bed.settleSpeed", a.bed.settleSpeed, b.bed.settleSpeed);
   num("bed.restEnergy", a.bed.restEnergy, b.bed.restEnergy);
   num("bed.maxTime", a.bed.maxTime, b.bed.maxTime);
@@ -113,6 +116,9 @@ const std::vector<std::tuple<std::string, std::string, std::string>>& everyKey()
       {"drive.period", "2", "drive.period"},
       {"drive.ramp_periods", "3", "drive.rampPeriods"},
       {"bed.batch_height", "10", "bed.batchHeight"},
+      {"bed.pour", "random", "bed.pour"},
+      {"bed.pour_fraction", "0.45", "bed.pourFraction"},
+      {"bed.pour_speed", "2", "bed.pourSpeed"},
       {"bed.settle_speed", "0.1", "bed.settleSpeed"},
       {"bed.rest_energy", "1e-5", "bed.restEnergy"},
       {"bed.max_time", "500", "bed.maxTime"},
@@ -154,7 +160,7 @@ TEST(Config, KeyListIsExactlyTheSpecKeys) {
   std::set<std::string> expected;
   for (const auto& [key, value, field] : everyKey()) expected.insert(key);
   const std::vector<std::string> keys = configKeys();
-  EXPECT_EQ(keys.size(), 42u);
+  EXPECT_EQ(keys.size(), 45u);
   EXPECT_EQ(std::set<std::string>(keys.begin(), keys.end()), expected);
 }
 
@@ -330,10 +336,15 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"[contact]\ngamma_t = -1\n", "contact.gamma_t = -1: must be >= 0"},
         BadCase{"[contact]\nmu = -0.1\n", "contact.mu = -0.1: must be >= 0"},
         BadCase{"[engine]\nsort_interval = 0\n", "engine.sort_interval = 0: must be >= 1"},
-        BadCase{"[bed]\ncache_dir = 5\n", "bed.cache_dir = 5: expected a string, got integer"}));
+        BadCase{"[bed]\ncache_dir = 5\n", "bed.cache_dir = 5: expected a string, got integer"},
+        BadCase{"[bed]\npour = \"funnel\"\n", "bed.pour = \"funnel\": must be one of lattice, random"},
+        BadCase{"[bed]\npour_fraction = 0\n", "bed.pour_fraction = 0: must be > 0 and <= 0.6"},
+        BadCase{"[bed]\npour_fraction = 0.61\n", "bed.pour_fraction = 0.61: must be > 0 and <= 0.6"},
+        BadCase{"[bed]\npour_speed = -1\n", "bed.pour_speed = -1: must be >= 0"}));
 
 TEST(Config, BoundaryValuesThatAreAllowed) {
   EXPECT_NO_THROW(parseRunConfig("[drive]\namplitude = 0\n", "c.toml"));
+  EXPECT_NO_THROW(parseRunConfig("[bed]\npour = \"random\"\npour_fraction = 0.6\npour_speed = 0\n", "c.toml"));
   EXPECT_NO_THROW(parseRunConfig("[contact]\nmu = 0\ngamma_n = 0\ngamma_t = 0\n", "c.toml"));
   EXPECT_NO_THROW(parseRunConfig("[fields]\nphases = [0, 19.99]\n", "c.toml"));
   EXPECT_NO_THROW(parseRunConfig("[fields]\nphases = []\n", "c.toml"));

@@ -1,0 +1,219 @@
+// The random pour (bed.pour = "random", docs/PHYSICS.md §8): one batch's geometry and area
+// fraction, its determinism, the bed keys of both protocols, and a tiny random-poured bed made to
+// rest (and continued to the same bits after a stop).
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <numbers>
+#include <omp.h>
+#include <unistd.h>
+
+#include "core/Error.h"
+#include "core/StopSignal.h"
+#include "io/Config.h"
+#include "scenario/BedMaker.h"
+#include "scenario/Experiment.h"
+
+namespace wiggle {
+namespace {
+
+namespace fs = std::filesystem;
+
+bool sameBits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
+
+// The default case's box and disk (60 wide, the disk at y0 = 25), random pour.
+RunConfig randomConfig(std::vector<std::string> extra = {}) {
+  std::vector<std::string> sets = {"bed.pour=random"};
+  sets.insert(sets.end(), extra.begin(), extra.end());
+  return loadRunConfig(std::nullopt, sets);
+}
+
+// Every pair of grains of a batch, every grain against every clump atom, every centre in the region.
+void expectNoOverlaps(const RunConfig& c, const ClumpDef& clump, const RandomBatch& b) {
+  const double width = c.box.width;
+  const double cx = 0.5 * width, cy = c.intruder.y0;
+  int bad = 0;
+  for (std::size_t i = 0; i < b.grains.size(); ++i) {
+    const PouredGrain& g = b.grains[i];
+    if (!(g.x >= 0.0 && g.x < width && g.y >= b.yLow && g.y <= b.yHigh)) ++bad;
+    if (!(g.radius >= 0.5 * c.grains.dMin && g.radius <= 0.5 * c.grains.dMax)) ++bad;
+    for (std::size_t j = i + 1; j < b.grains.size(); ++j) {
+      double dx = g.x - b.grains[j].x;
+      dx -= width * std::round(dx / width);
+      const double dy = g.y - b.grains[j].y;
+      if (std::hypot(dx, dy) < g.radius + b.grains[j].radius) ++bad;
+    }
+    for (std::size_t a = 0; a < clump.offsetX.size(); ++a) {
+      if (std::hypot(g.x - (cx + clump.offsetX[a]), g.y - (cy + clump.offsetY[a])) < g.radius + clump.atomRadius) ++bad;
+    }
+  }
+  EXPECT_EQ(bad, 0);
+}
+
+TEST(BedMaker, RandomBatchHasNoOverlapsAndFillsItsAreaFraction) {
+  const RunConfig c = randomConfig();
+  const ClumpDef clump = checkedClump(c);
+  // The region [16.1, 36.1] holds the whole disk (y0 = 25): grains must avoid it.
+  const auto start = std::chrono::steady_clock::now();
+  const RandomBatch b = randomPourBatch(c, clump, 15.0, 0);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_DOUBLE_EQ(b.yLow, 15.0 + c.grains.dMax);
+  EXPECT_DOUBLE_EQ(b.yHigh, b.yLow + c.bed.batchHeight);
+  const double regionArea = c.box.width * c.bed.batchHeight;
+  double area = 0.0;
+  for (const PouredGrain& g : b.grains) area += std::numbers::pi * g.radius * g.radius;
+  EXPECT_DOUBLE_EQ(area, b.area);
+  EXPECT_LT(b.attempts, b.maxAttempts);  // attempts sufficed: the target was reached
+  EXPECT_NEAR(area / regionArea, c.bed.pourFraction, 0.02 * c.bed.pourFraction);
+  EXPECT_GT(b.grains.size(), 400u);
+  expectNoOverlaps(c, clump, b);
+  std::printf("random batch: %zu grains, area fraction %.4f, %llu attempts, %.2f ms\n", b.grains.size(),
+              area / regionArea, static_cast<unsigned long long>(b.attempts), 1e3 * seconds);
+
+  // Above the jamming limit of random sequential addition (about 0.55): the attempts run out and
+  // the batch keeps what it has, still without overlaps.
+  const RunConfig dense = randomConfig({"bed.pour_fraction=0.6"});
+  const RandomBatch d = randomPourBatch(dense, clump, 15.0, 0);
+  EXPECT_EQ(d.attempts, d.maxAttempts);
+  EXPECT_LT(d.area, d.targetArea);
+  EXPECT_GT(d.area / regionArea, 0.4);
+  expectNoOverlaps(dense, clump, d);
+}
+
+TEST(BedMaker, ThousandsOfGrainsAreInsertedWellUnderASecond) {
+  // The paper's width, a 40 d batch at the largest fraction: about 9,000 grains and 900,000
+  // candidates (the attempts run out).
+  const RunConfig c = randomConfig({"box.width=300", "box.bed_height=195", "intruder.y0=90",
+                                    "bed.batch_height=40", "bed.pour_fraction=0.6"});
+  const ClumpDef clump = checkedClump(c);
+  const auto start = std::chrono::steady_clock::now();
+  const RandomBatch b = randomPourBatch(c, clump, 70.0, 0);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_GT(b.grains.size(), 6000u);
+  EXPECT_LT(seconds, 1.0);
+  std::printf("paper-width batch: %zu grains, area fraction %.4f, %llu attempts, %.1f ms\n", b.grains.size(),
+              b.area / (c.box.width * c.bed.batchHeight), static_cast<unsigned long long>(b.attempts), 1e3 * seconds);
+}
+
+TEST(BedMaker, RandomBatchIsAPureFunctionOfSeedAndSerial) {
+  const RunConfig c = randomConfig();
+  const ClumpDef clump = checkedClump(c);
+  const RandomBatch a = randomPourBatch(c, clump, 15.0, 1000);
+  const RandomBatch again = randomPourBatch(c, clump, 15.0, 1000);
+  ASSERT_EQ(a.grains.size(), again.grains.size());
+  EXPECT_EQ(a.attempts, again.attempts);
+  EXPECT_TRUE(sameBits(a.area, again.area));
+  for (std::size_t i = 0; i < a.grains.size(); ++i) {
+    ASSERT_TRUE(sameBits(a.grains[i].x, again.grains[i].x) && sameBits(a.grains[i].y, again.grains[i].y) &&
+                sameBits(a.grains[i].radius, again.grains[i].radius))
+        << i;
+  }
+  auto differs = [&](const RandomBatch& other) {
+    if (other.grains.size() != a.grains.size()) return true;
+    for (std::size_t i = 0; i < a.grains.size(); ++i)
+      if (!sameBits(other.grains[i].x, a.grains[i].x)) return true;
+    return false;
+  };
+  EXPECT_TRUE(differs(randomPourBatch(randomConfig({"box.seed=2"}), clump, 15.0, 1000)));  // another seed
+  EXPECT_TRUE(differs(randomPourBatch(c, clump, 15.0, 1001)));  // the next batch's serial numbers
+}
+
+TEST(BedMaker, LatticeBedKeyIsUnchangedAndRandomKeysDiffer) {
+  // The keys these configs had before bed.pour existed (made by the code of that time). They
+  // change only on purpose: a new bed format (kBedFormat, kStateFormatVersion) or a new clump.
+  const RunConfig defaults = loadRunConfig(std::nullopt, {});
+  const RunConfig tiny = loadRunConfig(
+      std::nullopt, {"box.width=12", "box.bed_height=8", "intruder.shape=polygon",
+                     "intruder.vertices=[[-0.75,-0.75],[0.75,-0.75],[0.75,0.75],[-0.75,0.75]]", "intruder.y0=4",
+                     "drive.amplitude=1"});
+  const ClumpDef disk = checkedClump(defaults), square = checkedClump(tiny);
+  EXPECT_EQ(bedKey(defaults, disk), "b8ece11933d4975e");
+  EXPECT_EQ(bedKey(tiny, square), "8e5d9db187fd83f2");
+  // The lattice ignores the random pour's parameters, and so does its key.
+  RunConfig lattice = defaults;
+  lattice.bed.pourFraction = 0.5;
+  lattice.bed.pourSpeed = 3.0;
+  EXPECT_EQ(bedKey(lattice, disk), "b8ece11933d4975e");
+  // The random pour has its own keys, one per fraction and speed.
+  RunConfig random = defaults;
+  random.bed.pour = "random";
+  const std::string randomKey = bedKey(random, disk);
+  EXPECT_NE(randomKey, "b8ece11933d4975e");
+  RunConfig other = random;
+  other.bed.pourFraction = 0.5;
+  EXPECT_NE(bedKey(other, disk), randomKey);
+  other = random;
+  other.bed.pourSpeed = 3.0;
+  EXPECT_NE(bedKey(other, disk), randomKey);
+  EXPECT_NE(bedKey(other, disk), bedKey(other, square));
+}
+
+std::string scratch(const std::string& name) {
+  const std::string dir = (fs::temp_directory_path() / ("wiggle-bedmaker-test-" + std::to_string(::getpid()))).string();
+  fs::create_directories(dir);
+  return dir + "/" + name;
+}
+
+// A 12 x 8 bed (about 80 grains) around a 1.5 x 1.5 square, poured at random.
+RunConfig tinyRandomConfig() {
+  return loadRunConfig(std::nullopt,
+                       {"box.width=12", "box.bed_height=8", "intruder.shape=polygon",
+                        "intruder.vertices=[[-0.75,-0.75],[0.75,-0.75],[0.75,0.75],[-0.75,0.75]]", "intruder.y0=4",
+                        "drive.amplitude=1", "bed.pour=random", "bed.batch_height=10", "bed.rest_energy=1e-4",
+                        "bed.max_time=100"});
+}
+
+TEST(BedMaker, TinyRandomBedComesToRestAndContinuesToTheSameBits) {
+  // One thread (the bits do not depend on it): about 100 grains gain nothing from two, and a second
+  // thread on a busy core makes every step wait for it.
+  struct OneThread {
+    int saved = omp_get_max_threads();
+    OneThread() { omp_set_num_threads(1); }
+    ~OneThread() { omp_set_num_threads(saved); }
+  } oneThread;
+  const RunConfig config = tinyRandomConfig();
+  const ClumpDef clump = checkedClump(config);
+  int batches = 0;
+  const World bed = makeBed(config, clump, [&](const BedStatus& s) { batches = s.batch; });
+  EXPECT_GE(batches, 2);
+  const ParticleStore& s = bed.particles();
+  ASSERT_GT(bed.grainCount(), 60u);
+  double kinetic = bed.kineticEnergy() / bed.grainCount();
+  EXPECT_LT(kinetic, 10 * config.bed.restEnergy);
+  for (std::uint32_t i = 0; i < bed.grainCount(); ++i) {
+    ASSERT_LE(s.y[i], config.box.bedHeight) << i;
+    ASSERT_GT(s.y[i], 0.5) << i;
+  }
+  const double surface = freeSurfaceHeight(bed);
+  EXPECT_GT(surface, config.box.bedHeight - 1.5);
+  EXPECT_LT(surface, config.box.bedHeight + 0.6);
+  std::printf("tiny random bed: %u grains in %d batches, surface %.3f, t = %.1f\n", bed.grainCount(), batches, surface,
+              bed.time());
+
+  // Stopped by SIGTERM while pouring, saved and continued: the same bits (the attempt serial
+  // numbers are part of the saved bed in the making).
+  RunConfig stopped = config;
+  stopped.bed.cacheDir = scratch("cache");
+  {
+    const StopSignalGuard guard;
+    int reports = 0;
+    EXPECT_THROW(obtainBed(stopped, clump,
+                           [&](const BedStatus& st) {
+                             if (st.stage == "pouring" && st.batch == 1 && ++reports == 3) std::raise(SIGTERM);
+                           }),
+                 Error);
+  }
+  ASSERT_TRUE(fs::exists(bedPartialPath(stopped, bedKey(stopped, clump))));
+  const CachedBed continued = obtainBed(stopped, clump);
+  EXPECT_FALSE(continued.fromCache);
+  EXPECT_EQ(continued.world.stateHash(), bed.stateHash());
+  fs::remove_all(scratch(""));
+}
+
+}  // namespace
+}  // namespace wiggle
