@@ -1,0 +1,107 @@
+// The contact law in SIMD lanes gives the scalar law's bits (ARCHITECTURE.md's claim, on which
+// determinism across builds and the LAMMPS comparisons rest), on pairs chosen to take every branch:
+// apart, grazing, deep, sticking, slipping past the Coulomb cap, a capped pair with no history,
+// zero history, a frozen partner, and random pairs around contact.
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "physics/PairKernel.h"
+
+namespace wiggle {
+namespace {
+
+struct Case {
+  PairInputs<double> in;
+  double shearX, shearY;  // history before the step
+};
+
+std::vector<Case> adversarialPairs() {
+  const double mi = 0.5, mj = 0.6;  // masses of grains of radius about 0.5
+  auto pair = [&](double dx, double dy, double dvx, double dvy, double oi, double oj, double sx, double sy,
+                  double invMassSum) {
+    return Case{{dx, dy, dvx, dvy, 0.5, 0.45, oi, oj, invMassSum, 0.45}, sx, sy};
+  };
+  const double both = 1.0 / mi + 1.0 / mj, frozen = 1.0 / mi;
+  std::vector<Case> cases = {
+      pair(1.2, 0.0, -1.0, 0.0, 0.0, 0.0, 0.0, 0.0, both),          // apart: no force, history dropped
+      pair(0.95 - 1e-12, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, both),  // grazing: overlap 1e-12
+      pair(0.5, 0.3, 3.0, -2.0, 1.0, -1.0, 0.0, 0.0, both),         // deep (0.37 d)
+      pair(0.9, 0.1, 0.0, 1e-6, 0.0, 0.0, 1e-7, 1e-6, both),        // sticking: small shear, slow slip
+      pair(0.9, 0.1, 0.0, 5.0, 3.0, 2.0, 0.0, 0.05, both),          // slipping: past the Coulomb cap
+      pair(0.93, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, both),          // no relative motion, zero history
+      pair(0.94, 0.0, 0.0, 2.0, 0.0, 0.0, 0.0, 0.0, both),          // capped with zero history
+      pair(0.0, 0.93, 0.2, -0.3, 0.5, 0.0, 0.01, 0.0, frozen),      // frozen partner below
+      pair(-0.6, -0.6, 0.0, 0.0, 0.0, 0.0, -0.02, 0.02, both),      // oblique, loaded spring
+  };
+  std::mt19937_64 rng(2026);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  while (cases.size() % 4 != 0 || cases.size() < 64) {
+    const double angle = 3.14159265358979 * u(rng), r = 0.9 + 0.08 * u(rng);
+    cases.push_back(pair(r * std::cos(angle), r * std::sin(angle), 3 * u(rng), 3 * u(rng), 5 * u(rng), 5 * u(rng),
+                         0.02 * u(rng), 0.02 * u(rng), u(rng) > 0 ? both : frozen));
+  }
+  return cases;
+}
+
+struct Slots {
+  std::vector<double> shearX, shearY, forceX, forceY, torqueArm, excess;
+  explicit Slots(const std::vector<Case>& cases)
+      : forceX(cases.size()), forceY(cases.size()), torqueArm(cases.size()), excess(cases.size()) {
+    for (const Case& c : cases) {
+      shearX.push_back(c.shearX);
+      shearY.push_back(c.shearY);
+    }
+  }
+  PairSlots view() { return {shearX.data(), shearY.data(), forceX.data(), forceY.data(), torqueArm.data()}; }
+};
+
+void expectSameBits(const std::vector<double>& a, const std::vector<double>& b, const char* what) {
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t k = 0; k < a.size(); ++k)
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(a[k]), std::bit_cast<std::uint64_t>(b[k]))
+        << what << " of pair " << k << ": " << a[k] << " vs " << b[k];
+}
+
+TEST(PairKernel, LanesGiveTheScalarLawsBitsOnAdversarialPairs) {
+#if !WIGGLE_SIMD_DOUBLE4
+  GTEST_SKIP() << "this build has no SIMD lanes: only the scalar law runs";
+#else
+  const std::vector<Case> cases = adversarialPairs();
+  const auto n = static_cast<std::uint32_t>(cases.size());
+  PairChunk chunk;
+  ASSERT_LE(n, kChunk);
+  for (std::uint32_t k = 0; k < n; ++k) chunk.set(k, cases[k].in);
+  for (const bool updateShear : {false, true})
+    for (const double mu : {0.0, 0.1, 0.5}) {
+      ContactParams params;
+      params.mu = mu;
+      Slots scalar(cases), lanes(cases);
+      for (std::uint32_t k = 0; k < n; ++k)
+        scalar.excess[k] = evaluatePairs(cases[k].in, k, scalar.view(), params, 1e-4, updateShear, 1.0);
+      for (std::uint32_t m = 0; m < n; m += simd::Double4::kLanes)
+        simd::store(lanes.excess.data() + m, evaluatePairs(chunk.inputs<simd::Double4>(m), m, lanes.view(), params,
+                                                           1e-4, updateShear, 1.0));
+      SCOPED_TRACE(testing::Message() << "updateShear " << updateShear << ", mu " << mu);
+      expectSameBits(scalar.forceX, lanes.forceX, "forceX");
+      expectSameBits(scalar.forceY, lanes.forceY, "forceY");
+      expectSameBits(scalar.torqueArm, lanes.torqueArm, "torqueArm");
+      expectSameBits(scalar.shearX, lanes.shearX, "shearX");
+      expectSameBits(scalar.shearY, lanes.shearY, "shearY");
+      expectSameBits(scalar.excess, lanes.excess, "overlap excess");
+    }
+  // The cases do take the branches they are named for (the law is not trivially equal).
+  Slots s(cases);
+  for (std::uint32_t k = 0; k < n; ++k) evaluatePairs(cases[k].in, k, s.view(), ContactParams{}, 1e-4, true, 1.0);
+  EXPECT_EQ(s.forceX[0], 0.0);  // apart
+  EXPECT_EQ(s.shearX[0], 0.0);  // history dropped
+  EXPECT_NE(s.forceX[2], 0.0);  // deep
+#endif
+}
+
+}  // namespace
+}  // namespace wiggle
