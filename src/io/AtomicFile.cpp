@@ -15,23 +15,32 @@ namespace wiggle {
 
 namespace {
 std::string systemError() { return std::strerror(errno); }
+
+// Writes all of `content` to fd; false, with errno set, when a write fails (a full disk, a file-size
+// limit: a short write is retried, and the retry reports why).
+bool writeAll(int fd, const std::string& content) {
+  std::size_t done = 0;
+  while (done < content.size()) {
+    const ssize_t n = ::write(fd, content.data() + done, content.size() - done);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      return false;
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  return true;
+}
 }  // namespace
 
 void writeFileAtomically(const std::string& path, const std::string& content) {
   const std::string temp = path + ".tmp." + std::to_string(::getpid());
   const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) throw Error("cannot write " + path + ": " + systemError());
-  std::size_t done = 0;
-  while (done < content.size()) {
-    const ssize_t n = ::write(fd, content.data() + done, content.size() - done);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      const std::string why = systemError();
-      ::close(fd);
-      ::unlink(temp.c_str());
-      throw Error("cannot write " + path + ": " + why);
-    }
-    done += static_cast<std::size_t>(n);
+  if (!writeAll(fd, content)) {
+    const std::string why = systemError();
+    ::close(fd);
+    ::unlink(temp.c_str());
+    throw Error("cannot write " + path + ": " + why);
   }
   if (::fsync(fd) != 0 || ::close(fd) != 0) {
     const std::string why = systemError();
@@ -50,6 +59,17 @@ void writeFileAtomically(const std::string& path, const std::string& content) {
     ::fsync(dirFd);
     ::close(dirFd);
   }
+}
+
+void appendToFile(const std::string& path, const std::string& content) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
+  if (fd < 0) throw Error("cannot write " + path + ": " + systemError());
+  if (!writeAll(fd, content)) {
+    const std::string why = systemError();
+    ::close(fd);
+    throw Error("cannot write " + path + ": " + why);
+  }
+  if (::close(fd) != 0) throw Error("cannot write " + path + ": " + systemError());
 }
 
 void removeLeftoverTemporaries(const std::string& dir) {

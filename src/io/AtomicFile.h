@@ -8,6 +8,10 @@
 namespace wiggle {
 
 void writeFileAtomically(const std::string& path, const std::string& content);
+// Appends `content` to the file (made if missing). Not atomic: a failure (named with its reason,
+// e.g. "File too large") can leave part of it, which the caller must be able to cut off (the run's
+// dump file is truncated to its checkpointed length on resume).
+void appendToFile(const std::string& path, const std::string& content);
 // Removes what writeFileAtomically leaves behind when its process is killed mid-write (the
 // temporary NAME.tmp.PID files) from `dir`, not recursively. Only for a directory that no other
 // process is writing to (a run directory being resumed), never for a shared one like the bed cache.

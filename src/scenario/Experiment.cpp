@@ -326,10 +326,7 @@ RunOutcome runExperiment(const RunConfig& config, const RunOptions& options) {
   };
   auto dumpFrame = [&] {
     const std::string frame = lammpsDumpFrame(world);
-    std::ofstream out(dumpPath, std::ios::app | std::ios::binary);
-    out << frame;
-    out.flush();
-    if (!out) throw Error("cannot write " + dumpPath);
+    appendToFile(dumpPath, frame);
     state.dumpBytes += frame.size();
   };
   if (world.stepCount() == 0 && state.samples.empty()) {
