@@ -46,8 +46,10 @@ struct KeyInfo {
   std::uint64_t& (*integer)(RunConfig&) = nullptr;
   bool& (*boolean)(RunConfig&) = nullptr;
   std::string& (*text)(RunConfig&) = nullptr;
-  std::string (*getChoice)(const RunConfig&) = nullptr;
+  std::string (*getChoice)(const RunConfig&) = nullptr;  // a choice kept as something else (an enum)...
   void (*setChoice)(RunConfig&, const std::string&) = nullptr;
+  std::string& (*choiceText)(RunConfig&) = nullptr;       // ...or as the chosen name itself
+
   std::vector<double>& (*numberList)(RunConfig&) = nullptr;
   Points& (*pointList)(RunConfig&) = nullptr;
 
@@ -56,6 +58,12 @@ struct KeyInfo {
 };
 
 RunConfig& mut(const RunConfig& c) { return const_cast<RunConfig&>(c); }
+
+std::string chosen(const KeyInfo& k, const RunConfig& c) { return k.choiceText ? k.choiceText(mut(c)) : k.getChoice(c); }
+void choose(const KeyInfo& k, RunConfig& c, const std::string& v) {
+  if (k.choiceText) k.choiceText(c) = v;
+  else k.setChoice(c, v);
+}
 
 KeyInfo number(std::string_view name, double& (*f)(RunConfig&), Bound lo, Bound hi,
                std::string_view unit, std::string_view help) {
@@ -85,6 +93,13 @@ KeyInfo choice(std::string_view name, std::vector<std::string_view> choices,
   KeyInfo k{name, Kind::Choice, "", help, noBound, noBound, std::move(choices)};
   k.getChoice = get;
   k.setChoice = set;
+  return k;
+}
+// A choice kept in the config as the chosen name.
+KeyInfo choice(std::string_view name, std::vector<std::string_view> choices, std::string& (*field)(RunConfig&),
+               std::string_view help) {
+  KeyInfo k{name, Kind::Choice, "", help, noBound, noBound, std::move(choices)};
+  k.choiceText = field;
   return k;
 }
 KeyInfo numberList(std::string_view name, std::vector<double>& (*f)(RunConfig&), Bound lo,
@@ -140,8 +155,7 @@ const std::vector<KeyInfo>& keyTable() {
       // [intruder]
       choice(
           "intruder.shape", {"disk", "square", "rect_narrow", "rect_wide", "triangle", "polygon"},
-          [](const C& c) -> std::string { return c.intruder.shape; },
-          [](C& c, const std::string& v) { c.intruder.shape = v; },
+          [](C& c) -> std::string& { return c.intruder.shape; },
           "outline: the paper's OS1..OS5 (docs/SHAPES.md) or \"polygon\" given by intruder.vertices"),
       pointList("intruder.vertices", [](C& c) -> Points& { return c.intruder.vertices; }, "d",
                 "outer outline for shape = \"polygon\": at least 3 [x, y] pairs; "
@@ -154,15 +168,13 @@ const std::vector<KeyInfo>& keyTable() {
              "rho d^3", "intruder mass; 0 = the one intruder.mass_rule gives"),
       choice(
           "intruder.mass_rule", {"disk_area", "glued_disk"},
-          [](const C& c) -> std::string { return c.intruder.massRule; },
-          [](C& c, const std::string& v) { c.intruder.massRule = v; },
+          [](C& c) -> std::string& { return c.intruder.massRule; },
           "the mass when intruder.mass = 0, the same for every shape: disk_area = the disk outline's area x "
           "the grains' mass per area (docs/PHYSICS.md, section 6); glued_disk = the disk built of touching "
           "0.5 d spheres at grain density (docs/SHAPES.md)"),
       choice(
           "intruder.surface", {"smooth", "glued"},
-          [](const C& c) -> std::string { return c.intruder.surface; },
-          [](C& c, const std::string& v) { c.intruder.surface = v; },
+          [](C& c) -> std::string& { return c.intruder.surface; },
           "the clump's atoms: smooth = neighbours at most 0.35 d apart; glued = touching (0.5 d apart), a "
           "rough surface like the paper's glued spheres (docs/SHAPES.md)"),
       // [drive]
@@ -178,8 +190,7 @@ const std::vector<KeyInfo>& keyTable() {
              noBound, "d", "height of each poured layer"),
       choice(
           "bed.pour", {"lattice", "random"},
-          [](const C& c) -> std::string { return c.bed.pour; },
-          [](C& c, const std::string& v) { c.bed.pour = v; },
+          [](C& c) -> std::string& { return c.bed.pour; },
           "how each batch is placed (docs/PHYSICS.md, section 8): lattice = a loose lattice with small random "
           "velocities; random = grains at random non-overlapping positions, as LAMMPS's fix pour"),
       number("bed.pour_fraction", [](C& c) -> double& { return c.bed.pourFraction; }, above(0), atMost(0.6),
@@ -335,7 +346,7 @@ std::string valueText(const KeyInfo& k, const RunConfig& config, bool tomlStyle)
     case Kind::Integer: return std::to_string(k.integer(c));
     case Kind::Boolean: return k.boolean(c) ? "true" : "false";
     case Kind::Text: return tomlStyle ? quoteToml(k.text(c)) : k.text(c);
-    case Kind::Choice: return tomlStyle ? quoteToml(k.getChoice(config)) : k.getChoice(config);
+    case Kind::Choice: return tomlStyle ? quoteToml(chosen(k, config)) : chosen(k, config);
     case Kind::NumberList: return formatNumbers(k.numberList(c), tomlStyle);
     case Kind::PointList: return formatPoints(k.pointList(c), tomlStyle);
   }
@@ -571,7 +582,7 @@ void applySetting(RunConfig& config, const std::string& key, const toml::node& v
       if (std::find(k->choices.begin(), k->choices.end(), s->get()) == k->choices.end()) {
         throw Error(head + "must be one of " + options);
       }
-      k->setChoice(config, s->get());
+      choose(*k, config, s->get());
       return;
     }
     case Kind::NumberList: {
@@ -699,7 +710,7 @@ void validateRunConfig(const RunConfig& c) {
         break;
       }
       case Kind::Choice: {
-        const std::string v = k.getChoice(c);
+        const std::string v = chosen(k, c);
         if (std::find(k.choices.begin(), k.choices.end(), v) == k.choices.end()) {
           std::string options;
           for (const std::string_view o : k.choices) options += (options.empty() ? "" : ", ") + std::string(o);
