@@ -27,54 +27,15 @@ import subprocess
 import sys
 
 import numpy as np
-from scipy.spatial import cKDTree
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
 from wiggleplot import readers  # noqa: E402
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from dumps import contacts, read_dump  # noqa: E402
+
 DT = 1e-4  # configs/small.toml's run.dt: dump steps to time
 ROOT = os.path.abspath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
-
-
-def read_dump(path):
-    """Frames of a LAMMPS text dump: (step, width, array of id type x y radius)."""
-    frames = []
-    with open(path) as f:
-        while True:
-            line = f.readline()
-            if not line:
-                return frames
-            if not line.startswith("ITEM: TIMESTEP"):
-                continue
-            step = int(f.readline())
-            f.readline()
-            n = int(f.readline())
-            f.readline()
-            xlo, xhi = map(float, f.readline().split()[:2])
-            f.readline()
-            f.readline()
-            columns = f.readline().split()[2:]
-            rows = np.array([f.readline().split() for _ in range(n)], dtype=float)
-            pick = [columns.index(c) for c in ("id", "type", "x", "y", "radius")]
-            frames.append((step, xhi - xlo, xlo, rows[:, pick]))
-
-
-def contacts(width, xlo, atoms):
-    """Largest overlap [d] and number of touching pairs, base-base and intruder-intruder excluded."""
-    kind = atoms[:, 1].astype(int)
-    x = np.mod(atoms[:, 2] - xlo, width)
-    y = atoms[:, 3] - atoms[:, 3].min()
-    r = atoms[:, 4]
-    tree = cKDTree(np.column_stack([x, y]), boxsize=[width, 1e9])
-    pairs = tree.query_pairs(2.0 * r.max(), output_type="ndarray")
-    i, j = pairs[:, 0], pairs[:, 1]
-    keep = ~((kind[i] == kind[j]) & (kind[i] != 1))
-    i, j = i[keep], j[keep]
-    dx = x[i] - x[j]
-    dx -= width * np.round(dx / width)
-    overlap = r[i] + r[j] - np.hypot(dx, y[i] - y[j])
-    touching = overlap > 0
-    return (overlap.max() if overlap.size else 0.0), int(touching.sum())
 
 
 def measure(run_dir, dump):
