@@ -197,7 +197,8 @@ const std::vector<KeyInfo>& keyTable() {
              "", "pour = \"random\" only: area fraction of grains a batch fills in its insertion region "
              "(box.width x bed.batch_height, one d_max above the highest grain; fix pour's vol)"),
       number("bed.pour_speed", [](C& c) -> double& { return c.bed.pourSpeed; }, atLeast(0), noBound,
-             "sqrt(g d)", "pour = \"random\" only: initial downward speed of the grains (fix pour's vel; vx = 0)"),
+             "sqrt(g d)", "pour = \"random\" only: downward speed at the top of the insertion region; a grain "
+             "lower in it starts as if it had fallen from there (fix pour's vel; vx = 0)"),
       number("bed.settle_speed", [](C& c) -> double& { return c.bed.settleSpeed; }, above(0),
              noBound, "sqrt(g d)", "the next batch is poured when the rms grain speed is below this"),
       number("bed.rest_energy", [](C& c) -> double& { return c.bed.restEnergy; }, above(0), noBound,

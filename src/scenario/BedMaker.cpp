@@ -19,6 +19,9 @@ namespace wiggle {
 namespace {
 
 constexpr std::uint64_t kBedFormat = 4;  // bump when bed making or the engine's arithmetic changes (4: the contact kernel with fewer divisions and block-wise force sums)
+// The random pour's own format, in its beds' keys only (the lattice beds keep theirs): bump when it
+// changes (2: grains start with fix pour's falling-stream speeds instead of all at bed.pour_speed).
+constexpr std::uint64_t kRandomPourFormat = 2;
 constexpr std::uint64_t kStepsPerCheck = 1000;
 using Clock = std::chrono::steady_clock;
 
@@ -79,6 +82,7 @@ std::string bedKey(const RunConfig& c, const ClumpDef& clump) {
   // The lattice pour hashes nothing more, so its beds keep the keys they had before bed.pour existed
   // (its bed ignores pour_fraction and pour_speed).
   if (c.bed.pour != "lattice") {
+    h.addValue(kRandomPourFormat);
     h.addBytes(c.bed.pour.data(), c.bed.pour.size());
     h.addValue(c.bed.pourFraction);
     h.addValue(c.bed.pourSpeed);
@@ -255,7 +259,9 @@ void pourLatticeBatch(const RunConfig& config, const ClumpDef& clump, PartialBed
 
 // bed.pour = "lattice": each batch is a loose lattice (spacing above the largest diameter: no
 // overlaps) starting one spacing above the highest grain, with small random velocities to break the
-// lattice. bed.pour = "random": randomPourBatch, every grain thrown down at bed.pour_speed.
+// lattice. bed.pour = "random": randomPourBatch, every grain moving down as if it had fallen from the
+// top of the region with bed.pour_speed, as LAMMPS's fix pour sets it: the batch then falls as one
+// continuous stream rather than as a block.
 void pourBatch(const RunConfig& config, const ClumpDef& clump, PartialBed& p) {
   if (config.bed.pour == "random") {
     double highest = 0.5;  // as the lattice finds it
@@ -263,7 +269,9 @@ void pourBatch(const RunConfig& config, const ClumpDef& clump, PartialBed& p) {
     for (std::uint32_t i = 0; i < s.grainCount; ++i) highest = std::max(highest, s.y[i] + s.radius[i]);
     const RandomBatch batch = randomPourBatch(config, clump, highest, p.serial);
     p.serial += batch.attempts;
-    for (const PouredGrain& g : batch.grains) p.world.addGrain(g.x, g.y, g.radius, 0.0, -config.bed.pourSpeed);
+    const double v0 = config.bed.pourSpeed, g2 = 2.0 * p.world.def().gravity;
+    for (const PouredGrain& g : batch.grains)
+      p.world.addGrain(g.x, g.y, g.radius, 0.0, -std::sqrt(v0 * v0 + g2 * (batch.yHigh - g.y)));
   } else {
     pourLatticeBatch(config, clump, p);
   }
