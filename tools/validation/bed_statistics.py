@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Beds of a sweep compared by how they were poured: structure at t = 0 and the rise rate.
 
-    tools/validation/bed_statistics.py SWEEP_DIR --out PREFIX [--key bed.pour]
+    tools/validation/bed_statistics.py SWEEP_DIR --out PREFIX [--key bed.pour] [--dump LABEL=FILE ...]
 
 For every case of the sweep whose dump holds a frame at step 0 (set run.dump_interval), the bed as
 the drive starts: the area fraction against height (grains' disc areas over the box's area in 2 d
@@ -9,7 +9,9 @@ bands, away from the intruder: |x - W/2| > 8 d), the coordination number Z (touc
 per grain, grains and base, for grains 3 d above the base to 3 d below the surface and 8 d from
 the intruder) and the free surface (median and standard deviation of the highest grain top in
 2 d wide columns, as wiggle measures it). Cases sharing a bed (same protocol and seed) are
-counted once. The V_y of every case comes from results.csv.
+counted once. The V_y of every case comes from results.csv. --dump adds a bed from any dump file
+(its first frame; e.g. LAMMPS's fix pour bed from tools/validation/lammps_fix_pour.py) under the
+protocol name LABEL; repeat it for several seeds (LABEL=FILE, the seeds numbered in order).
 
 Writes PREFIX.csv (one row per bed), PREFIX_vy.csv (mean and standard error of V_y over the beds,
 per protocol and period) and PREFIX.png (area fraction profiles), and prints the tables.
@@ -69,6 +71,7 @@ def main():
     p.add_argument("sweep")
     p.add_argument("--out", required=True, help="prefix of the files written")
     p.add_argument("--key", default="bed.pour", help="the results.csv column that names the protocol")
+    p.add_argument("--dump", action="append", default=[], metavar="LABEL=FILE", help="another bed to compare")
     args = p.parse_args()
     with open(os.path.join(args.sweep, "results.csv"), newline="") as f:
         rows = list(csv.DictReader(f))
@@ -84,6 +87,10 @@ def main():
         frames = read_dump(dump)
         if frames and frames[0][0] == 0:
             beds[(protocol, seed)] = bed_statistics(frames[0])
+
+    for spec in args.dump:
+        label, path = spec.split("=", 1)
+        beds[(label, str(sum(1 for k in beds if k[0] == label) + 1))] = bed_statistics(read_dump(path)[0])
 
     fields = ["protocol", "seed", "grains", "surface", "surface_sd", "phi_bulk", "z", "rattlers"]
     with open(args.out + ".csv", "w", newline="") as f:
