@@ -1,4 +1,5 @@
 // `wiggle run [CONFIG.toml] [--set section.key=value]... [--out DIR] [--threads N] [--resume]`
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
@@ -8,7 +9,10 @@
 #include "core/Error.h"
 #include "io/AtomicFile.h"
 #include "io/Config.h"
+#include "scenario/BedMaker.h"
+#include "scenario/Checkpoint.h"
 #include "scenario/Experiment.h"
+#include "sweep/SweepPlan.h"
 
 namespace wiggle::cli {
 
@@ -21,7 +25,47 @@ struct RunArgs {
   int threads = 0;
   bool resume = false;
   bool noPlot = false;
+  bool check = false;
 };
+
+std::string duration(double seconds) {
+  char text[32];
+  if (seconds < 120) std::snprintf(text, sizeof text, "%.0f s", seconds);
+  else if (seconds < 7200) std::snprintf(text, sizeof text, "%.0f min", seconds / 60);
+  else std::snprintf(text, sizeof text, "%.1f h", seconds / 3600);
+  return text;
+}
+
+// `run --check`: everything `wiggle run` checks before it starts (the config, the outline, the
+// clump, the geometry, the output directory), then what the run would be, without running it.
+void printCheck(const RunConfig& c, const std::string& out, bool resume) {
+  const ClumpDef clump = checkedClump(c);
+  const std::string key = bedKey(c, clump);
+  const std::string bedPath = bedCachePath(c, key);
+  const double ns = CostModel::nsPerParticleStep;
+  const auto steps = static_cast<std::uint64_t>(std::llround(c.run.duration / c.run.dt));
+  std::printf("config ok: %s intruder at y0 = %g (%g d below the surface), A = %g, T = %g, mu = %g\n",
+              c.intruder.shape.c_str(), c.intruder.y0, c.box.bedHeight - c.intruder.y0, c.drive.amplitude,
+              c.drive.period, c.contact.mu);
+  std::printf("bed: %g x %g d, about %.0f grains (estimate), %zu intruder atoms, mass %g\n", c.box.width,
+              c.box.bedHeight, estimatedGrains(c), clump.offsetX.size(), clump.mass);
+  if (std::filesystem::exists(bedPath))
+    std::printf("bed %s: cached (%s)\n", key.c_str(), bedPath.c_str());
+  else
+    std::printf("bed %s: not cached, making it takes about %s on one core (estimate)\n", key.c_str(),
+                duration(estimatedBedSeconds(c, ns)).c_str());
+  std::printf("run: %llu steps (t = %g at dt = %g), about %s on one core at %g ns per particle-step "
+              "(estimate: docs/PERFORMANCE.md has this machine's figures)\n",
+              static_cast<unsigned long long>(steps), c.run.duration, c.run.dt,
+              duration(estimatedRunSeconds(c, ns)).c_str(), ns);
+  const bool finished = std::filesystem::exists(out + "/summary.json");
+  const bool started = std::filesystem::exists(checkpointPath(out));
+  std::printf("out: %s (%s)\n", out.c_str(),
+              finished  ? (resume ? "holds a finished run: --resume would only rewrite its results"
+                                  : "holds a finished run: wiggle run would refuse it without --resume")
+              : started ? (resume ? "holds a checkpoint: --resume continues it" : "holds a checkpoint: add --resume")
+                        : "new");
+}
 
 }  // namespace
 
@@ -34,6 +78,9 @@ void addRunCommand(CLI::App& app) {
   cmd->add_option("--threads", args->threads, "OpenMP threads (default: all cores)")->check(CLI::Range(1, 1024));
   cmd->add_flag("--resume", args->resume, "Continue from the newest good checkpoint in --out");
   cmd->add_flag("--no-plot", args->noPlot, "Do not draw the figures at the end");
+  cmd->add_flag("--check", args->check,
+                "Check the config and print what the run would be (grains, steps, bed cached or not, "
+                "estimated cost); run nothing, write nothing");
   cmd->footer("Config keys (TOML section.key, default, unit):\n" + configHelp());
   cmd->callback([args] {
     std::optional<std::string> path;
@@ -44,6 +91,10 @@ void addRunCommand(CLI::App& app) {
     if (path) requireInputFile(*path, "config file");
     requireOutputDirectory("--out", args->out);
     const RunConfig config = loadRunConfig(path, args->sets);
+    if (args->check) {
+      printCheck(config, args->out, args->resume);
+      return;
+    }
     RunOptions options;
     options.outDir = args->out;
     options.threads = args->threads;

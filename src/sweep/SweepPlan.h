@@ -4,7 +4,8 @@
 //
 // Tasks are of two kinds: making a bed (one per distinct bed key whose bed is not cached yet) and
 // running a case. A case becomes runnable once its bed task is done, so two workers never make the
-// same bed at once and beds are made first, in parallel. Every MPI rank builds the same plan from
+// same bed at once; beds are made just before their first case (SweepRunner hands work out in case
+// order), in parallel when there are workers for them. Every MPI rank builds the same plan from
 // the same file (the expansion is deterministic), so only task indices travel between ranks.
 #include <cstddef>
 #include <optional>

@@ -238,3 +238,22 @@ TEST_F(Cli, PlotOutThatCannotBeCreatedIsOneLineWithStatus2) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST_F(Cli, RunCheckPrintsWhatTheRunWouldBeAndWritesNothing) {
+  const std::string config = tinyConfig();
+  Result r = wiggle("run " + quoted(config) + " --check --out checked");
+  EXPECT_EQ(r.status, 0) << r.err;
+  for (const char* what : {"config ok: polygon intruder", "about", "grains", "bed ", "not cached", "run: 100 steps",
+                           "out: checked (new)"})
+    EXPECT_NE(r.out.find(what), std::string::npos) << "no '" << what << "' in\n" << r.out;
+  EXPECT_TRUE(workIsEmpty());                     // no output directory, no wiggle-out/
+  EXPECT_FALSE(fs::exists(root_ / "cache"));      // no bed made
+  // A config the run would refuse is refused the same way: one line, exit 2, nothing written.
+  r = wiggle("run " + quoted(config) + " --check --set drive.amplitude=40");
+  expectOneLineError(r, {"box.width", "too narrow"}, "--check, amplitude 40");
+  EXPECT_TRUE(workIsEmpty());
+}
+
+}  // namespace
