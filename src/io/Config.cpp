@@ -872,13 +872,16 @@ RunConfig loadRunConfig(const std::optional<std::string>& path,
   return config;
 }
 
-bool sameRunConfig(const RunConfig& a, const RunConfig& b) {
+std::string firstDifferingKey(const RunConfig& a, const RunConfig& b, const std::vector<std::string_view>& ignored) {
   // TOML text is the shortest round-trip form, so equal text means equal bits (and -0 != 0).
   for (const KeyInfo& k : keyTable()) {
-    if (valueText(k, a, true) != valueText(k, b, true)) return false;
+    if (std::find(ignored.begin(), ignored.end(), k.name) != ignored.end()) continue;
+    if (valueText(k, a, true) != valueText(k, b, true)) return std::string(k.name);
   }
-  return true;
+  return "";
 }
+
+bool sameRunConfig(const RunConfig& a, const RunConfig& b) { return firstDifferingKey(a, b).empty(); }
 
 std::string toToml(const RunConfig& config) {
   std::string out =

@@ -63,6 +63,9 @@ std::string configValueString(const RunConfig& config, std::string_view key);
 
 // Exact equality of every key (doubles compared bit for bit via ==; no NaN survives validation).
 bool sameRunConfig(const RunConfig& a, const RunConfig& b);
+// The first key (table order) whose value differs between a and b, leaving out `ignored`; "" when
+// none does.
+std::string firstDifferingKey(const RunConfig& a, const RunConfig& b, const std::vector<std::string_view>& ignored = {});
 
 // "did you mean ...?" support: the known key closest to `key`, or "" when none is close.
 std::string suggestConfigKey(std::string_view key);

@@ -49,13 +49,25 @@ void writeCheckpoint(const std::string& runDir, const std::string& configToml, c
   writeStateFile(checkpointPath(runDir), "checkpoint", out.bytes());
 }
 
+std::string whyRunCannotContinue(const RunConfig& past, const RunConfig& now) {
+  const std::string key = firstDifferingKey(past, now, {"run.duration", "run.plot", "run.checkpoint_interval"});
+  if (!key.empty())
+    return key + " is " + configValueString(now, key) + " here but " + configValueString(past, key) +
+           " in the run (only run.duration, longer, run.plot and run.checkpoint_interval may change)";
+  if (now.run.duration < past.run.duration)
+    return "run.duration = " + configValueString(now, "run.duration") + " is shorter than the run's " +
+           configValueString(past, "run.duration") + " (a run can be extended, not cut)";
+  return "";
+}
+
 namespace {
 
-bool sameStoredConfig(const std::string& stored, const std::string& name, const RunConfig& config) {
+// "" when the run whose config text is `stored` can be continued with `config`, else why not.
+std::string whyStoredRunCannotContinue(const std::string& stored, const std::string& name, const RunConfig& config) {
   try {
-    return sameRunConfig(parseRunConfig(stored, name + " (its config)"), config);
-  } catch (const Error&) {
-    return false;  // a key this version no longer knows: another config
+    return whyRunCannotContinue(parseRunConfig(stored, name + " (its config)"), config);
+  } catch (const Error& e) {
+    return e.what();  // e.g. a key this version no longer knows
   }
 }
 
@@ -68,7 +80,9 @@ Checkpoint parseCheckpoint(const std::string& file, const std::string& name, con
   // The same config, read back: a checkpoint written before a key was added (and so without it)
   // holds that key's default, and stays valid as long as the run does not change it.
   const std::string stored = in.string();
-  if (stored != configToml && !sameStoredConfig(stored, name, config)) throw Error(name + " belongs to another config");
+  if (stored != configToml)
+    if (const std::string why = whyStoredRunCannotContinue(stored, name, config); !why.empty())
+      throw Error(name + " belongs to another config: " + why);
   World world = World::load(in);
   RunState state;
   state.load(in);

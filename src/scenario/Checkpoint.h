@@ -46,10 +46,15 @@ std::string previousCheckpointPath(const std::string& runDir);
 void writeCheckpoint(const std::string& runDir, const std::string& configToml, const World& world,
                      const RunState& state, const FieldObserver& fields);
 
+// Whether a run made with `past` may be continued with `now`: "" when it may, else why not, naming
+// the key. Only keys on which nothing that has already happened depends may change: run.duration
+// (longer only: a finished run is extended), run.plot and run.checkpoint_interval.
+std::string whyRunCannotContinue(const RunConfig& past, const RunConfig& now);
+
 // The checkpoint in a file's bytes (`name` starts every error message). `configToml` is
-// toToml(config): a checkpoint of any other config is refused; one written by a version that did not
-// have some key yet counts as holding that key's default (so a long run survives an upgrade that
-// adds keys, unless it sets one of them). Throws wiggle::Error for anything
+// toToml(config): a checkpoint of a run that `config` cannot continue (whyRunCannotContinue) is
+// refused; one written by a version that did not have some key yet counts as holding that key's
+// default (so a long run survives an upgrade that adds keys, unless it sets one of them). Throws wiggle::Error for anything
 // truncated, corrupt, foreign or inconsistent.
 Checkpoint parseCheckpoint(const std::string& file, const std::string& name, const RunConfig& config,
                            const std::string& configToml);

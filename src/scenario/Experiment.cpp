@@ -245,8 +245,8 @@ RunOutcome runExperiment(const RunConfig& config, const RunOptions& options) {
     throw Error(dir + " already holds a run: use --resume to continue it, or choose another --out");
   if (options.resume && fs::exists(dir + "/config.toml")) {
     const RunConfig previous = parseRunConfig(readFile(dir + "/config.toml"), dir + "/config.toml");
-    if (!sameRunConfig(previous, config))
-      throw Error("--resume: the config differs from the one in " + dir + "/config.toml (run without a CONFIG to reuse it)");
+    if (const std::string why = whyRunCannotContinue(previous, config); !why.empty())
+      throw Error("--resume: cannot continue the run in " + dir + ": " + why);
   }
   if (options.resume) removeLeftoverTemporaries(dir);  // of a run killed while writing a file
   writeFileAtomically(dir + "/config.toml", configToml);
@@ -412,6 +412,16 @@ RunOutcome runExperiment(const RunConfig& config, const RunOptions& options) {
                        number(rate.tInitial) + " to " + number(rate.tFinal) + "), fewer than " +
                        number(RiseRate::kMinWindowPeriods) + ": it reflects the phase of the drive more than a drift; " +
                        "run longer (run.duration)");
+  // Phase rates and field frames accumulate one step per step from 0.1 t_total on; a run extended
+  // (resumed with a longer run.duration) began at 0.1 of its first duration. Where that window
+  // began follows from the count of accumulated steps.
+  std::uint64_t accumulated = 0;
+  for (const std::uint64_t n : state.phaseCount) accumulated += n;
+  const double averagedFrom = static_cast<double>(world.stepCount() - accumulated) * dt;
+  if (std::fabs(averagedFrom - rate.tInitial) > 0.5 * config.run.sampleInterval)
+    warnings.push_back("phase_rates.csv and fields.csv average from t = " + number(averagedFrom) + ", V_y from t = " +
+                       number(rate.tInitial) + ": the run was extended (resumed with a longer run.duration); the "
+                       "trajectory, V_y and the final state are those of a run this long from the start");
 
   nlohmann::json summary;
   summary["vy"] = rate.vy;
@@ -425,6 +435,7 @@ RunOutcome runExperiment(const RunConfig& config, const RunOptions& options) {
   summary["y_final"] = rate.yFinal;
   summary["y_start"] = state.samples.front().y;
   summary["vy_window_periods"] = rate.windowPeriods;
+  summary["averaged_from_t"] = averagedFrom;
   summary["warnings"] = warnings;
   // How close the run came to the blow-up detector's bounds (1 = stopped), at its full scans.
   summary["overlap_margin"] = world.healthMargins().overlap;

@@ -10,6 +10,7 @@
 #include "io/AtomicFile.h"
 #include "io/Config.h"
 #include "scenario/BedMaker.h"
+#include "scenario/Checkpoint.h"
 #include "scenario/Experiment.h"
 #include "scenario/Shape.h"
 
@@ -64,20 +65,22 @@ SweepPlan makeSweepPlan(SweepSpec spec, const std::string& outDir) {
       p.error = e.what();
     }
 
+    bool extends = false;  // the sweep file asks for a longer run than the one there: it is continued
     if (p.state != CaseState::Failed && fs::exists(p.dir + "/config.toml")) {
       try {
         const RunConfig previous = parseRunConfig(readFile(p.dir + "/config.toml"), p.dir + "/config.toml");
-        if (!sameRunConfig(previous, c.config)) {
+        if (const std::string why = whyRunCannotContinue(previous, c.config); !why.empty()) {
           p.state = CaseState::Failed;
-          p.error = p.dir + " holds a run of a different config (the sweep file changed?): delete that "
-                    "directory to run this case again";
+          p.error = p.dir + " holds a run of a different config (the sweep file changed?): " + why +
+                    "; delete that directory to run this case again";
         }
+        extends = c.config.run.duration > previous.run.duration;
       } catch (const Error& e) {
         p.state = CaseState::Failed;
         p.error = e.what();
       }
     }
-    if (p.state != CaseState::Failed && fs::exists(p.dir + "/summary.json")) {
+    if (p.state != CaseState::Failed && !extends && fs::exists(p.dir + "/summary.json")) {
       try {
         const auto summary = nlohmann::json::parse(readFile(p.dir + "/summary.json"));
         if (summary.value("status", "") == "ok") p.state = CaseState::Done;

@@ -124,8 +124,9 @@ pid_t TaskRunner::start(const SweepTask& task) {
     const std::string dir = outDir_ + "/cases/" + sc.name;
     fs::create_directories(dir, ec);
     if (ec) throw Error("cannot create " + dir + ": " + ec.message());
-    // `wiggle run` rewrites the same text; writing it here gives the child a file to read.
-    if (!fs::exists(dir + "/config.toml")) writeFileAtomically(dir + "/config.toml", toToml(sc.config));
+    // The case's config for the child to read. The plan has checked that a run already there is this
+    // config or one it continues (a longer run.duration: the run is extended from its checkpoint).
+    writeFileAtomically(dir + "/config.toml", toToml(sc.config));
     logPath = dir + "/sweep-child.log";
     args = {executable_, "run", dir + "/config.toml", "--out", dir, "--resume", "--threads",
             std::to_string(threads_), "--no-plot"};

@@ -77,6 +77,48 @@ TEST(Experiment, ResumedRunIsBitwiseIdenticalToAnUninterruptedOne) {
   EXPECT_EQ(rows, 20);
 }
 
+TEST(Experiment, FinishedRunExtendedIsTheLongerRunFromTheStart) {
+  // A run of t = 0.4, finished, then resumed with run.duration = 0.8: the same final state, trajectory
+  // and V_y as a run of 0.8 from the start. Its phase rates and fields average from t = 0.04 (0.1 of
+  // its first duration) instead of 0.08, which summary.json says.
+  RunConfig shorter = tinyConfig(scratch(""));
+  RunConfig longer = shorter;
+  longer.run.duration = 0.8;
+  const std::string straight = scratch("long-straight"), extended = scratch("extended");
+  const RunOutcome reference = runExperiment(longer, quiet(straight));
+  ASSERT_EQ(runExperiment(shorter, quiet(extended)).status, "ok");
+  RunOptions resume = quiet(extended);
+  resume.resume = true;
+  const RunOutcome grown = runExperiment(longer, resume);
+  EXPECT_EQ(grown.stateHash, reference.stateHash);
+  EXPECT_EQ(grown.vy, reference.vy);
+  EXPECT_EQ(readFile(extended + "/trajectory.csv"), readFile(straight + "/trajectory.csv"));
+  const auto summary = nlohmann::json::parse(readFile(extended + "/summary.json"));
+  EXPECT_NEAR(summary["averaged_from_t"].get<double>(), 0.04, 1e-9);
+  bool saysExtended = false;  // (beside the short-window warning: 1.44 periods here)
+  for (const auto& w : summary["warnings"]) saysExtended |= w.get<std::string>().find("extended") != std::string::npos;
+  EXPECT_TRUE(saysExtended) << summary["warnings"];
+  EXPECT_NEAR(nlohmann::json::parse(readFile(straight + "/summary.json"))["averaged_from_t"].get<double>(), 0.08, 1e-9);
+
+  // What cannot continue a run is refused, naming the key: a shorter run, or any other key.
+  RunConfig cut = longer;
+  cut.run.duration = 0.6;
+  try {
+    runExperiment(cut, resume);
+    FAIL() << "a shorter run.duration was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("run.duration = 0.6 is shorter"), std::string::npos) << e.what();
+  }
+  RunConfig other = longer;
+  other.drive.amplitude = 0.5;
+  try {
+    runExperiment(other, resume);
+    FAIL() << "a different amplitude was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("drive.amplitude is 0.5 here but 1 in the run"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Experiment, ThreadCountDoesNotChangeTheResult) {
   const RunConfig config = tinyConfig(scratch(""));
   RunOptions one = quiet(scratch("one-thread"));
