@@ -4,7 +4,6 @@
 #include <gtest/gtest.h>
 
 #include <bit>
-#include <chrono>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
@@ -59,9 +58,7 @@ TEST(BedMaker, RandomBatchHasNoOverlapsAndFillsItsAreaFraction) {
   const RunConfig c = randomConfig();
   const ClumpDef clump = checkedClump(c);
   // The region [16.1, 36.1] holds the whole disk (y0 = 25): grains must avoid it.
-  const auto start = std::chrono::steady_clock::now();
   const RandomBatch b = randomPourBatch(c, clump, 15.0, 0);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_DOUBLE_EQ(b.yLow, 15.0 + c.grains.dMax);
   EXPECT_DOUBLE_EQ(b.yHigh, b.yLow + c.bed.batchHeight);
   const double regionArea = c.box.width * c.bed.batchHeight;
@@ -72,8 +69,8 @@ TEST(BedMaker, RandomBatchHasNoOverlapsAndFillsItsAreaFraction) {
   EXPECT_NEAR(area / regionArea, c.bed.pourFraction, 0.02 * c.bed.pourFraction);
   EXPECT_GT(b.grains.size(), 400u);
   expectNoOverlaps(c, clump, b);
-  std::printf("random batch: %zu grains, area fraction %.4f, %llu attempts, %.2f ms\n", b.grains.size(),
-              area / regionArea, static_cast<unsigned long long>(b.attempts), 1e3 * seconds);
+  std::printf("random batch: %zu grains, area fraction %.4f, %llu attempts\n", b.grains.size(), area / regionArea,
+              static_cast<unsigned long long>(b.attempts));
 
   // Above the jamming limit of random sequential addition (about 0.55): the attempts run out and
   // the batch keeps what it has, still without overlaps.
@@ -85,19 +82,21 @@ TEST(BedMaker, RandomBatchHasNoOverlapsAndFillsItsAreaFraction) {
   expectNoOverlaps(dense, clump, d);
 }
 
-TEST(BedMaker, ThousandsOfGrainsAreInsertedWellUnderASecond) {
-  // The paper's width, a 40 d batch at the largest fraction: about 9,000 grains and 900,000
-  // candidates (the attempts run out).
+TEST(BedMaker, AFullBatchStopsWhenItsAttemptsRunOut) {
+  // The paper's width, a 40 d batch at the largest fraction, 0.6: random sequential placement jams
+  // near 0.55, so the batch ends on its bound of 100 attempts per target grain with about 8,000
+  // grains, none overlapping (checked on smaller batches above). Not timed: speed belongs to the
+  // benchmarks.
   const RunConfig c = randomConfig({"box.width=300", "box.bed_height=195", "intruder.y0=90",
                                     "bed.batch_height=40", "bed.pour_fraction=0.6"});
   const ClumpDef clump = checkedClump(c);
-  const auto start = std::chrono::steady_clock::now();
   const RandomBatch b = randomPourBatch(c, clump, 70.0, 0);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_EQ(b.attempts, b.maxAttempts);
+  EXPECT_LT(b.area, b.targetArea);
   EXPECT_GT(b.grains.size(), 6000u);
-  EXPECT_LT(seconds, 1.0);
-  std::printf("paper-width batch: %zu grains, area fraction %.4f, %llu attempts, %.1f ms\n", b.grains.size(),
-              b.area / (c.box.width * c.bed.batchHeight), static_cast<unsigned long long>(b.attempts), 1e3 * seconds);
+  const double fraction = b.area / (c.box.width * c.bed.batchHeight);
+  EXPECT_GT(fraction, 0.45);
+  EXPECT_LT(fraction, 0.56);
 }
 
 TEST(BedMaker, RandomBatchIsAPureFunctionOfSeedAndSerial) {
