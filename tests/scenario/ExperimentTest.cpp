@@ -101,22 +101,20 @@ TEST(Experiment, FinishedRunExtendedIsTheLongerRunFromTheStart) {
   EXPECT_NEAR(nlohmann::json::parse(readFile(straight + "/summary.json"))["averaged_from_t"].get<double>(), 0.08, 1e-9);
 
   // What cannot continue a run is refused, naming the key: a shorter run, or any other key.
+  auto refusal = [&](RunConfig changed) {
+    try {
+      runExperiment(changed, resume);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("(accepted)");
+  };
   RunConfig cut = longer;
   cut.run.duration = 0.6;
-  try {
-    runExperiment(cut, resume);
-    FAIL() << "a shorter run.duration was accepted";
-  } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("run.duration = 0.6 is shorter"), std::string::npos) << e.what();
-  }
+  EXPECT_NE(refusal(cut).find("run.duration = 0.6 is shorter"), std::string::npos) << refusal(cut);
   RunConfig other = longer;
   other.drive.amplitude = 0.5;
-  try {
-    runExperiment(other, resume);
-    FAIL() << "a different amplitude was accepted";
-  } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("drive.amplitude is 0.5 here but 1 in the run"), std::string::npos) << e.what();
-  }
+  EXPECT_NE(refusal(other).find("drive.amplitude is 0.5 here but 1 in the run"), std::string::npos) << refusal(other);
 }
 
 TEST(Experiment, ThreadCountDoesNotChangeTheResult) {
