@@ -13,7 +13,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string text(reinterpret_cast<const char*>(data), size);
   try {
     const wiggle::RunConfig config = wiggle::parseRunConfig(text, "fuzz.toml");
-    wiggle::checkedClump(config);
+    wiggle::prepareCase(config);
     (void)wiggle::toToml(config);
   } catch (const wiggle::Error&) {
   }

@@ -10,7 +10,8 @@
 #include "PathChecks.h"
 #include "core/Error.h"
 #include "io/Config.h"
-#include "io/LammpsExport.h"
+#include "scenario/Case.h"
+#include "scenario/LammpsExport.h"
 
 namespace wiggle::cli {
 
@@ -47,7 +48,7 @@ void addExportLammpsCommand(CLI::App& app) {
     if (path) requireInputFile(*path, "config file");
     requireOutputDirectory("--out", args->out);
     const RunConfig config = loadRunConfig(path, args->sets);
-    const LammpsExportResult r = exportLammps(config, args->out);
+    const LammpsExportResult r = exportLammps(prepareCase(config), args->out);
     std::printf("bed %s %s\n", r.bedFromCache ? "loaded from" : "made and cached at", r.bedPath.c_str());
     std::printf("wrote %s/%s and %s/%s: %llu atoms (%u grains), %llu steps\n", args->out.c_str(), kLammpsDataFile,
                 args->out.c_str(), kLammpsInputFile, static_cast<unsigned long long>(r.deck.atoms), r.deck.grains,

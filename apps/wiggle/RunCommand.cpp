@@ -39,7 +39,7 @@ std::string duration(double seconds) {
 // `run --check`: everything `wiggle run` checks before it starts (the config, the outline, the
 // clump, the geometry, the output directory), then what the run would be, without running it.
 void printCheck(const RunConfig& c, const std::string& out, bool resume) {
-  const ClumpDef clump = checkedClump(c);
+  const ClumpDef clump = prepareCase(c).clump;
   const std::string key = bedKey(c, clump);
   const std::string bedPath = bedCachePath(c, key);
   const double ns = CostModel::nsPerParticleStep;
@@ -99,7 +99,7 @@ void addRunCommand(CLI::App& app) {
     options.outDir = args->out;
     options.threads = args->threads;
     options.resume = args->resume;
-    const RunOutcome outcome = runExperiment(config, options);
+    const RunOutcome outcome = runExperiment(prepareCase(config), options);
     std::printf("V_y = %.6g (least-squares slope %.6g) d per sqrt(d/g); summary in %s\n", outcome.vy,
                 outcome.vySlope, outcome.summaryPath.c_str());
     for (const std::string& w : outcome.warnings) std::fprintf(stderr, "wiggle: warning: %s\n", w.c_str());

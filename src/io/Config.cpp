@@ -477,17 +477,17 @@ std::string trim(std::string_view s) {
   return std::string(s.substr(b, e - b + 1));
 }
 
-bool wholeSteps(double interval, double dt, double& steps) {
-  steps = interval / dt;
-  const double n = std::round(steps);
-  return n >= 1 && std::fabs(steps - n) <= 1e-9 * steps;
-}
-
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------
 // Public functions
 // ---------------------------------------------------------------------------------------------
+
+std::uint64_t wholeStepsIn(double interval, double dt) {
+  const double steps = interval / dt;
+  const double n = std::round(steps);
+  return n >= 1 && std::fabs(steps - n) <= 1e-9 * steps ? static_cast<std::uint64_t>(n) : 0;
+}
 
 std::string suggestConfigKey(std::string_view key) {
   std::string best;
@@ -761,18 +761,21 @@ void validateRunConfig(const RunConfig& c) {
     throw Error("intruder.y0 = " + num(c.intruder.y0) + ": must be < box.bed_height (" +
                 num(c.box.bedHeight) + ")");
   }
-  double steps = 0.0;
-  if (!wholeSteps(c.drive.period, c.run.dt, steps)) {
+  if (!wholeStepsIn(c.drive.period, c.run.dt)) {
     throw Error("drive.period = " + num(c.drive.period) + ": must be a whole number of run.dt steps (" +
-                num(c.drive.period) + " / " + num(c.run.dt) + " = " + num(steps) + ")");
+                num(c.drive.period) + " / " + num(c.run.dt) + " = " + num(c.drive.period / c.run.dt) + ")");
   }
   if (c.run.duration < c.run.dt) {
     throw Error("run.duration = " + num(c.run.duration) + ": must be >= run.dt (" + num(c.run.dt) + ")");
   }
-  if (!wholeSteps(c.run.sampleInterval, c.run.dt, steps)) {
+  if (!wholeStepsIn(c.run.duration, c.run.dt)) {
+    throw Error("run.duration = " + num(c.run.duration) + ": must be a whole number of run.dt steps (" +
+                num(c.run.duration) + " / " + num(c.run.dt) + " = " + num(c.run.duration / c.run.dt) + ")");
+  }
+  if (!wholeStepsIn(c.run.sampleInterval, c.run.dt)) {
     throw Error("run.sample_interval = " + num(c.run.sampleInterval) +
                 ": must be a whole number of run.dt steps (" + num(c.run.sampleInterval) + " / " +
-                num(c.run.dt) + " = " + num(steps) + ")");
+                num(c.run.dt) + " = " + num(c.run.sampleInterval / c.run.dt) + ")");
   }
   // Absurd sizes are refused here, before anything is allocated or run: the step counter, the
   // trajectory kept in memory and the field sums (one grid of 7 doubles per phase) stay bounded.
@@ -795,10 +798,10 @@ void validateRunConfig(const RunConfig& c) {
                   " GB, more than the 4 GB wiggle accepts");
     }
   }
-  if (c.run.dumpInterval > 0 && !wholeSteps(c.run.dumpInterval, c.run.dt, steps)) {
+  if (c.run.dumpInterval > 0 && !wholeStepsIn(c.run.dumpInterval, c.run.dt)) {
     throw Error("run.dump_interval = " + num(c.run.dumpInterval) +
                 ": must be 0 or a whole number of run.dt steps (" + num(c.run.dumpInterval) + " / " +
-                num(c.run.dt) + " = " + num(steps) + ")");
+                num(c.run.dt) + " = " + num(c.run.dumpInterval / c.run.dt) + ")");
   }
 }
 

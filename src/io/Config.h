@@ -11,6 +11,7 @@
 // is reported with its line); checks that involve two keys run once at the end
 // (validateRunConfig). Geometric checks that need the intruder's shape (box too narrow, intruder
 // too near the top or bottom, self-intersecting polygon) belong to the scenario code, not here.
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -44,6 +45,11 @@ void applySetting(RunConfig& config, const std::string& key, const toml::node& v
 // Every range check and every cross-key check that needs only the config. Throws wiggle::Error
 // whose message starts with the key, e.g. "drive.period = -1: must be > 0".
 void validateRunConfig(const RunConfig& config);
+
+// The number of run.dt steps in `interval`, or 0 when it is not a whole number of them (to 1e-9
+// relative): the one rule for every interval that must fall on a step (drive.period,
+// run.sample_interval, run.dump_interval, run.duration's counts in scenario/Case).
+std::uint64_t wholeStepsIn(double interval, double dt);
 
 // The resolved config as TOML: every key, each with a comment giving its meaning and unit.
 // parseRunConfig(toToml(c)) reproduces c bit for bit (doubles written in shortest round-trip form).

@@ -4,6 +4,7 @@
 // the sum of the contact forces on its atoms plus gravity on its total mass. Atoms do not interact
 // with each other. Shapes (how atoms fill an outline) live in scenario/.
 #include <cstdint>
+#include <cmath>
 #include <numbers>
 #include <vector>
 
@@ -33,6 +34,33 @@ struct ClumpMotion {
                            // continuous where the ramp ends, since sin(2 pi t_ramp / T) = 0 there
 
   double omega() const { return 2.0 * std::numbers::pi / period; }  // angular frequency of the sinusoids
+
+  struct Position {
+    double x = 0.0;   // [d]
+    double vx = 0.0;  // [sqrt(g d)]
+  };
+  // Where the motion puts the clump at time t: the one formula of each kind, used by the engine
+  // at every step (World::placeIntruder) and by anything else that needs x(t) or vx(t).
+  Position at(double t) const {
+    switch (kind) {
+      case HorizontalMotion::Held: return {x0, 0.0};
+      case HorizontalMotion::Sinusoid: {
+        const double w = omega();
+        return {x0 + amplitude * std::sin(w * t), amplitude * w * std::cos(w * t)};
+      }
+      case HorizontalMotion::RampedSinusoid: {
+        // Its own branch, not Sinusoid with a factor 1: the plain drive (docs/PHYSICS.md §7) keeps its bits.
+        const double w = omega();
+        const bool ramping = t < rampTime;
+        const double scale = ramping ? t / rampTime : 1.0;
+        const double growth = ramping ? 1.0 / rampTime : 0.0;  // d(scale)/dt
+        return {x0 + amplitude * scale * std::sin(w * t),
+                amplitude * (scale * w * std::cos(w * t) + growth * std::sin(w * t))};
+      }
+      case HorizontalMotion::ConstantVelocity: return {x0 + velocity * t, velocity};
+    }
+    return {x0, 0.0};
+  }
 };
 
 struct ClumpState {

@@ -315,33 +315,9 @@ void World::prepare() {
 
 void World::placeIntruder() {
   if (!hasIntruder_) return;
-  const double t = time();
-  switch (motion_.kind) {
-    case HorizontalMotion::Held:
-      clumpState_.x = motion_.x0;
-      clumpState_.vx = 0.0;
-      break;
-    case HorizontalMotion::Sinusoid: {
-      const double omega = motion_.omega();
-      clumpState_.x = motion_.x0 + motion_.amplitude * std::sin(omega * t);
-      clumpState_.vx = motion_.amplitude * omega * std::cos(omega * t);
-      break;
-    }
-    case HorizontalMotion::RampedSinusoid: {
-      // Its own branch, not Sinusoid with a factor 1: the plain drive (docs/PHYSICS.md §7) keeps its bits.
-      const double omega = motion_.omega();
-      const bool ramping = t < motion_.rampTime;
-      const double scale = ramping ? t / motion_.rampTime : 1.0;
-      const double growth = ramping ? 1.0 / motion_.rampTime : 0.0;  // d(scale)/dt
-      clumpState_.x = motion_.x0 + motion_.amplitude * scale * std::sin(omega * t);
-      clumpState_.vx = motion_.amplitude * (scale * omega * std::cos(omega * t) + growth * std::sin(omega * t));
-      break;
-    }
-    case HorizontalMotion::ConstantVelocity:
-      clumpState_.x = motion_.x0 + motion_.velocity * t;
-      clumpState_.vx = motion_.velocity;
-      break;
-  }
+  const ClumpMotion::Position p = motion_.at(time());
+  clumpState_.x = p.x;
+  clumpState_.vx = p.vx;
 }
 
 void World::initialIntegrate() {

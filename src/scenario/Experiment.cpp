@@ -23,7 +23,6 @@
 #include "model/CavityModel.h"
 #include "scenario/BedMaker.h"
 #include "scenario/Checkpoint.h"
-#include "scenario/Shape.h"
 
 namespace wiggle {
 
@@ -151,89 +150,11 @@ void writeModel(const std::string& path, const RunConfig& config, const Shape& s
 
 }  // namespace
 
-std::uint64_t stepsIn(double interval, double dt, const char* key) {
-  const double ratio = interval / dt;
-  const double steps = std::round(ratio);
-  if (steps < 1 || std::fabs(ratio - steps) > 1e-6 * std::max(1.0, steps))
-    throw Error(std::string(key) + " = " + number(interval) + " is not a whole number of time steps (run.dt = " +
-                number(dt) + ")");
-  return static_cast<std::uint64_t>(steps);
-}
-
-void startDrive(World& world, const RunConfig& config) {
-  ClumpMotion motion;
-  motion.kind = config.drive.rampPeriods > 0 ? HorizontalMotion::RampedSinusoid : HorizontalMotion::Sinusoid;
-  motion.x0 = 0.5 * config.box.width;
-  motion.amplitude = config.drive.amplitude;
-  motion.period = config.drive.period;
-  motion.rampTime = static_cast<double>(config.drive.rampPeriods) * config.drive.period;
-  motion.verticalFree = true;
-  world.setIntruderMotion(motion);
-  world.resetClock();
-}
-
-void checkGeometry(const RunConfig& config, const ClumpDef& clump) {
-  // Absurd sizes are refused before anything is allocated: the bed's grain count from its area.
-  const double meanDiameter = 0.5 * (config.grains.dMin + config.grains.dMax);
-  const double grains = 0.84 * config.box.width * config.box.bedHeight / (0.25 * 3.141592653589793 * meanDiameter * meanDiameter);
-  constexpr double kMaxGrains = 5e7;
-  if (grains > kMaxGrains)
-    throw Error("box.width x box.bed_height = " + number(config.box.width) + " x " + number(config.box.bedHeight) +
-                " needs about " + number(grains) + " grains, more than the " + number(kMaxGrains) + " wiggle accepts");
-  double minX = 0, maxX = 0, minY = 0, maxY = 0;
-  for (std::size_t a = 0; a < clump.offsetX.size(); ++a) {
-    minX = std::min(minX, clump.offsetX[a] - clump.atomRadius);
-    maxX = std::max(maxX, clump.offsetX[a] + clump.atomRadius);
-    minY = std::min(minY, clump.offsetY[a] - clump.atomRadius);
-    maxY = std::max(maxY, clump.offsetY[a] + clump.atomRadius);
-  }
-  const double width = maxX - minX;
-  // Room for the intruder's sweep plus a few grain diameters between its images across the
-  // periodic boundary, so it never meets itself.
-  const double needed = width + 2.0 * config.drive.amplitude + 4.0 * config.grains.dMax;
-  if (config.box.width < needed)
-    throw Error("box.width = " + number(config.box.width) + " is too narrow for the " + config.intruder.shape + " (" +
-                number(width) + " wide) moving +-" + number(config.drive.amplitude) + ": need at least " +
-                number(std::ceil(needed)));
-  const double bottom = config.intruder.y0 + minY, top = config.intruder.y0 + maxY;
-  if (bottom < 0.5 + 2.0 * config.grains.dMax)
-    throw Error("intruder.y0 = " + number(config.intruder.y0) + " puts the intruder's bottom at y = " + number(bottom) +
-                ", too near the base: need at least two grain layers below it");
-  if (top > config.box.bedHeight - 2.0 * config.grains.dMax)
-    throw Error("intruder.y0 = " + number(config.intruder.y0) + " puts the intruder's top at y = " + number(top) +
-                ", outside or too near the top of the bed (box.bed_height = " + number(config.box.bedHeight) +
-                "): need at least two grain layers above it");
-}
-
-ClumpDef checkedClump(const RunConfig& config) {
-  const Shape shape = makeShape(config.intruder);
-  const OutlineBox box = boundingBox(shape.outline);
-  if (!(box.width() <= config.box.width && box.height() <= config.box.bedHeight))
-    throw Error(std::string(config.intruder.shape == "polygon" ? "intruder.vertices" : "intruder.shape") +
-                ": the outline is " + number(box.width()) + " x " + number(box.height()) +
-                ", larger than the bed (box.width = " + number(config.box.width) +
-                ", box.bed_height = " + number(config.box.bedHeight) + ")");
-  const ClumpDef clump = makeClump(config.intruder, config.grains.massModel, 1.0);
-  checkGeometry(config, clump);
-  return clump;
-}
-
-RunOutcome runExperiment(const RunConfig& config, const RunOptions& options) {
+RunOutcome runExperiment(const Case& run, const RunOptions& options) {
   if (options.threads > 0) omp_set_num_threads(options.threads);
+  const RunConfig& config = run.config;
+  const RunSchedule& steps = run.steps;
   const std::string dir = options.outDir;
-  const Shape shape = makeShape(config.intruder);
-  const ClumpDef clump = checkedClump(config);
-  const double dt = config.run.dt;
-  const std::uint64_t totalSteps = stepsIn(config.run.duration, dt, "run.duration");
-  const std::uint64_t sampleEvery = stepsIn(config.run.sampleInterval, dt, "run.sample_interval");
-  const std::uint64_t periodSteps = stepsIn(config.drive.period, dt, "drive.period");
-  const std::uint64_t dumpEvery = config.run.dumpInterval > 0 ? stepsIn(config.run.dumpInterval, dt, "run.dump_interval") : 0;
-  const std::uint64_t firstMeasuredStep = static_cast<std::uint64_t>(std::llround(0.1 * static_cast<double>(totalSteps)));
-  // Step within a period at which each field phase is sampled: 10 phi / pi = p  ->  p / 20 of T.
-  std::vector<std::uint64_t> fieldPhaseStep;
-  for (double p : config.fields.phases)
-    fieldPhaseStep.push_back(static_cast<std::uint64_t>(std::llround(p / 20.0 * static_cast<double>(periodSteps))) %
-                             periodSteps);
 
   std::error_code ec;
   fs::create_directories(dir, ec);
@@ -285,7 +206,7 @@ RunOutcome runExperiment(const RunConfig& config, const RunOptions& options) {
     const auto bedStart = Clock::now();
     std::optional<CachedBed> obtained;
     try {
-      obtained.emplace(obtainBed(config, clump, [&](const BedStatus& s) {
+      obtained.emplace(obtainBed(config, run.clump, [&](const BedStatus& s) {
         progress.update("[bed] " + s.stage + " batch " + std::to_string(s.batch) + ", " + std::to_string(s.grains) +
                         " grains, surface " + number(s.surface) + " / " + number(config.box.bedHeight) + ", t = " +
                         number(s.time) + (s.stage == "relaxing" ? ", KE/grain " + number(s.kineticPerGrain) : "") +
@@ -310,7 +231,7 @@ RunOutcome runExperiment(const RunConfig& config, const RunOptions& options) {
              ", " + number(state.bedWallSeconds) + " s)");
     loaded.emplace(std::move(bed.world));
     if (!config.run.keepBedHistory) loaded->clearContactHistory();
-    startDrive(*loaded, config);
+    startDrive(*loaded, run);
     std::ofstream(dumpPath, std::ios::trunc);
     state.dumpBytes = 0;
   } else {
@@ -331,7 +252,7 @@ RunOutcome runExperiment(const RunConfig& config, const RunOptions& options) {
   };
   if (world.stepCount() == 0 && state.samples.empty()) {
     sample();
-    if (dumpEvery) dumpFrame();
+    if (steps.dumpEvery) dumpFrame();
   }
 
   const double particles = static_cast<double>(world.particles().size());
@@ -340,20 +261,20 @@ RunOutcome runExperiment(const RunConfig& config, const RunOptions& options) {
   const std::uint64_t startStep = world.stepCount();
   RunOutcome outcome;
   try {
-    while (world.stepCount() < totalSteps) {
+    while (world.stepCount() < steps.total) {
       world.step();
       const std::uint64_t step = world.stepCount();
-      if (step > firstMeasuredStep) {
-        const int bin = static_cast<int>((step % periodSteps) * kPhaseBins / periodSteps);
+      if (step > steps.firstMeasured) {
+        const int bin = static_cast<int>((step % steps.period) * kPhaseBins / steps.period);
         state.phaseSum[bin] += world.intruder().vy;
         ++state.phaseCount[bin];
         if (config.fields.enabled)
-          for (std::size_t p = 0; p < fieldPhaseStep.size(); ++p)
-            if (step % periodSteps == fieldPhaseStep[p]) fields.addFrame(world, p);
+          for (std::size_t p = 0; p < steps.fieldPhaseStep.size(); ++p)
+            if (step % steps.period == steps.fieldPhaseStep[p]) fields.addFrame(world, p);
       }
-      if (step % sampleEvery == 0) sample();
-      if (dumpEvery && step % dumpEvery == 0) dumpFrame();
-      if (step % 200 == 0 || step == totalSteps) {
+      if (step % steps.sampleEvery == 0) sample();
+      if (steps.dumpEvery && step % steps.dumpEvery == 0) dumpFrame();
+      if (step % 200 == 0 || step == steps.total) {
         state.runWallSeconds += secondsSince(chunkStart);
         chunkStart = Clock::now();
         const double done = static_cast<double>(step - startStep);
@@ -361,9 +282,9 @@ RunOutcome runExperiment(const RunConfig& config, const RunOptions& options) {
                                              ? 1e9 * state.runWallSeconds / (particles * static_cast<double>(step))
                                              : 0.0;
         const double eta = done > 0 ? state.runWallSeconds / static_cast<double>(step) *
-                                          static_cast<double>(totalSteps - step)
+                                          static_cast<double>(steps.total - step)
                                     : -1.0;
-        progress.update("[run] " + number(100.0 * static_cast<double>(step) / static_cast<double>(totalSteps)) +
+        progress.update("[run] " + number(100.0 * static_cast<double>(step) / static_cast<double>(steps.total)) +
                         "%  t = " + number(world.time()) + " / " + number(config.run.duration) + "  ETA " +
                         duration(eta) + "  " + number(nsPerParticleStep) + " ns/particle-step  y = " +
                         number(world.intruder().y));
@@ -397,14 +318,11 @@ RunOutcome runExperiment(const RunConfig& config, const RunOptions& options) {
   writeCheckpoint(dir, configToml, world, state, fields);
   stopOnSignal.reset();
 
-  double clumpTop = 0.0;
-  for (std::size_t a = 0; a < clump.offsetY.size(); ++a) clumpTop = std::max(clumpTop, clump.offsetY[a] + clump.atomRadius);
-  const double surfacedHeight = config.box.bedHeight - clumpTop - 2.0 * config.grains.dMax;
-  const RiseRate rate = measureRiseRate(state.samples, config.run.duration, config.drive.period, surfacedHeight);
+  const RiseRate rate = measureRiseRate(state.samples, config.run.duration, config.drive.period, run.surfacedHeight);
   writeTrajectory(dir + "/trajectory.csv", state.samples);
   writePhaseRates(dir + "/phase_rates.csv", state);
   if (config.fields.enabled) fields.writeCsv(dir + "/fields.csv");
-  writeModel(dir + "/model.json", config, shape);
+  writeModel(dir + "/model.json", config, run.shape);
 
   std::vector<std::string> warnings;
   if (rate.windowTooShort())
@@ -417,7 +335,7 @@ RunOutcome runExperiment(const RunConfig& config, const RunOptions& options) {
   // began follows from the count of accumulated steps.
   std::uint64_t accumulated = 0;
   for (const std::uint64_t n : state.phaseCount) accumulated += n;
-  const double averagedFrom = static_cast<double>(world.stepCount() - accumulated) * dt;
+  const double averagedFrom = static_cast<double>(world.stepCount() - accumulated) * config.run.dt;
   if (std::fabs(averagedFrom - rate.tInitial) > 0.5 * config.run.sampleInterval)
     warnings.push_back("phase_rates.csv and fields.csv average from t = " + number(averagedFrom) + ", V_y from t = " +
                        number(rate.tInitial) + ": the run was extended (resumed with a longer run.duration); the "

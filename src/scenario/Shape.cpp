@@ -469,8 +469,11 @@ ClumpAtoms buildClumpAtoms(const Shape& shape, const ClumpOptions& o) {
 }
 
 ClumpDef makeClump(const IntruderDef& def, MassModel model, double density) {
+  return makeClump(def, makeShape(def), model, density);
+}
+
+ClumpDef makeClump(const IntruderDef& def, const Shape& shape, MassModel model, double density) {
   const ClumpOptions options = clumpOptionsFor(def);
-  const Shape shape = makeShape(def);
   const ClumpAtoms atoms = buildClumpAtoms(shape, options);
   ClumpDef clump;
   clump.atomRadius = options.atomRadius;

@@ -106,7 +106,8 @@ ClumpQuality measureClump(const Shape& shape, const ClumpAtoms& atoms,
 ClumpAtoms buildClumpAtoms(const Shape& shape, const ClumpOptions& options = {});
 
 // The engine's clump for an intruder definition: atom offsets relative to the centroid and the mass,
-// built as clumpOptionsFor(def) says.
+// built as clumpOptionsFor(def) says. The second form takes the shape makeShape(def) already made.
 ClumpDef makeClump(const IntruderDef& def, MassModel model, double density);
+ClumpDef makeClump(const IntruderDef& def, const Shape& shape, MassModel model, double density);
 
 }  // namespace wiggle

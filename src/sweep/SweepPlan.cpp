@@ -18,11 +18,6 @@ namespace wiggle {
 
 namespace fs = std::filesystem;
 
-double estimatedGrains(const RunConfig& config) {
-  const double a = config.grains.dMin, b = config.grains.dMax;
-  const double meanArea = std::numbers::pi / 4.0 * (a * a + a * b + b * b) / 3.0;
-  return config.box.width * config.box.bedHeight * CostModel::packing / meanArea;
-}
 
 namespace {
 // Grains plus the frozen base row (one per unit of width); the intruder's atoms are negligible.
@@ -58,8 +53,7 @@ SweepPlan makeSweepPlan(SweepSpec spec, const std::string& outDir) {
     try {
       // The same checks `wiggle run` makes before touching the bed, so a bad case fails here with
       // the message the run would give, without a process or a bed being spent on it.
-      const ClumpDef clump = checkedClump(c.config);
-      p.bedKey = bedKey(c.config, clump);
+      p.bedKey = bedKey(c.config, prepareCase(c.config).clump);
     } catch (const Error& e) {
       p.state = CaseState::Failed;
       p.error = e.what();

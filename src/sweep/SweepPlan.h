@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "io/SweepSpec.h"
+#include "scenario/Case.h"  // estimatedGrains
 
 namespace wiggle {
 
@@ -23,18 +24,14 @@ struct CostModel {
   // machine [ns]: 55 ns, bench/run_bench.sh on the configs/small.toml bed, 1 thread, median of
   // 3 rounds on the AMD EPYC (Zen 3) machine (docs/PERFORMANCE.md, session 3, 2026-11-22).
   static constexpr double nsPerParticleStep = 55.0;
-  // Random loose packing of the poured bed: area fraction of grains below the free surface.
-  static constexpr double packing = 0.84;
-  // Simulated time a bed spends per poured batch (falling and settling), and on the final
-  // relaxation, in sqrt(d/g). Measured: a 12 d high, 20 d wide bed (one batch) took 2.3e5 steps
-  // at dt = 1e-4 (with bed.rest_energy = 1e-4); the default rest energy 1e-8 takes longer.
-  static constexpr double bedTimePerBatch = 15.0;
-  static constexpr double bedRelaxTime = 10.0;
+  // Simulated time a bed spends per nominal batch (bed.batch_height of the final bed: falling and
+  // settling) and on the final relaxation, in sqrt(d/g). Measured on a 60 x 195 d bed (default
+  // bed keys, 2026-11-24): 14 poured batches for 10 nominal ones took t = 99, the relaxation to
+  // bed.rest_energy = 1e-6 about 40 more.
+  static constexpr double bedTimePerBatch = 10.0;
+  static constexpr double bedRelaxTime = 40.0;
 };
 
-// Estimated grains of a bed: box width x bed height x packing / mean grain area, with the mean
-// area of diameters uniform in [d_min, d_max]: (pi/4) (d_min^2 + d_min d_max + d_max^2) / 3.
-double estimatedGrains(const RunConfig& config);
 // Estimated wall seconds of a case's run phase (bed excluded) at `nsPerParticleStep`.
 double estimatedRunSeconds(const RunConfig& config, double nsPerParticleStep);
 // Estimated wall seconds of making the case's bed at `nsPerParticleStep`.

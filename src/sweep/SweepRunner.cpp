@@ -573,7 +573,7 @@ std::string dryRunListing(const SweepPlan& plan, int jobs, int threads) {
 void makeSweepBed(const std::string& configPath, int threads) {
   if (threads > 0) omp_set_num_threads(threads);
   const RunConfig config = parseRunConfig(readFile(configPath), configPath);
-  const ClumpDef clump = checkedClump(config);
+  const ClumpDef clump = prepareCase(config).clump;
   const StopSignalGuard stopOnSignal;  // the sweep's SIGTERM: save the bed in the making, then stop
   const CachedBed bed = obtainBed(config, clump);
   if (!bed.note.empty()) std::fprintf(stderr, "wiggle: warning: %s\n", bed.note.c_str());

@@ -19,7 +19,8 @@
 #include "io/AtomicFile.h"
 #include "io/Config.h"
 #include "scenario/BedMaker.h"
-#include "scenario/Shape.h"
+#include "scenario/Case.h"
+
 
 namespace wiggle {
 
@@ -131,8 +132,7 @@ pid_t TaskRunner::start(const SweepTask& task) {
     args = {executable_, "run", dir + "/config.toml", "--out", dir, "--resume", "--threads",
             std::to_string(threads_), "--no-plot"};
   } else {
-    const ClumpDef clump = makeClump(sc.config.intruder, sc.config.grains.massModel, 1.0);
-    const std::string base = outDir_ + "/beds/bed-" + bedKey(sc.config, clump);
+    const std::string base = outDir_ + "/beds/bed-" + bedKey(sc.config, prepareCase(sc.config).clump);
     fs::create_directories(outDir_ + "/beds", ec);
     if (ec) throw Error("cannot create " + outDir_ + "/beds: " + ec.message());
     writeFileAtomically(base + ".toml", toToml(sc.config));

@@ -48,7 +48,7 @@ int checkCorpus(const std::string& dir, const std::function<void(const std::stri
 
 TEST(BadInput, EveryRunConfigOfTheCorpusGetsItsOneLineError) {
   const int files = checkCorpus("bad_inputs", [](const std::string& text, const std::string& path) {
-    checkedClump(parseRunConfig(text, path));
+    prepareCase(parseRunConfig(text, path)).clump;
   });
   EXPECT_GE(files, 50);
 }
@@ -57,7 +57,7 @@ TEST(BadInput, EverySweepFileOfTheCorpusGetsItsOneLineError) {
   const int files = checkCorpus("bad_sweeps", [](const std::string& text, const std::string& path) {
     const SweepSpec spec = parseSweepSpec(text, path);
     // `wiggle sweep` records a case failing these checks as failed in results.csv, with this message.
-    for (const SweepCase& c : spec.cases) checkedClump(c.config);
+    for (const SweepCase& c : spec.cases) prepareCase(c.config).clump;
   });
   EXPECT_GE(files, 24);
 }

@@ -320,6 +320,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"[run]\nduration = 0.00005\n", "run.duration = 0.00005: must be >= run.dt (0.0001)"},
         BadCase{"[run]\nduration = -1\n", "run.duration = -1: must be > 0"},
         BadCase{"[run]\nsample_interval = 0.00015\n", "run.sample_interval = 0.00015: must be a whole number of run.dt steps"},
+        BadCase{"[run]\nduration = 0.50005\n", "run.duration = 0.50005: must be a whole number of run.dt steps"},
         BadCase{"[run]\nsample_interval = 0\n", "run.sample_interval = 0: must be > 0"},
         BadCase{"[run]\ndump_interval = 0.33333\n", "run.dump_interval = 0.33333: must be 0 or a whole number"},
         BadCase{"[run]\ncheckpoint_interval = 0\n", "run.checkpoint_interval = 0: must be > 0"},

@@ -56,7 +56,7 @@ void expectNoOverlaps(const RunConfig& c, const ClumpDef& clump, const RandomBat
 
 TEST(BedMaker, RandomBatchHasNoOverlapsAndFillsItsAreaFraction) {
   const RunConfig c = randomConfig();
-  const ClumpDef clump = checkedClump(c);
+  const ClumpDef clump = prepareCase(c).clump;
   // The region [16.1, 36.1] holds the whole disk (y0 = 25): grains must avoid it.
   const RandomBatch b = randomPourBatch(c, clump, 15.0, 0);
   EXPECT_DOUBLE_EQ(b.yLow, 15.0 + c.grains.dMax);
@@ -89,7 +89,7 @@ TEST(BedMaker, AFullBatchStopsWhenItsAttemptsRunOut) {
   // benchmarks.
   const RunConfig c = randomConfig({"box.width=300", "box.bed_height=195", "intruder.y0=90",
                                     "bed.batch_height=40", "bed.pour_fraction=0.6"});
-  const ClumpDef clump = checkedClump(c);
+  const ClumpDef clump = prepareCase(c).clump;
   const RandomBatch b = randomPourBatch(c, clump, 70.0, 0);
   EXPECT_EQ(b.attempts, b.maxAttempts);
   EXPECT_LT(b.area, b.targetArea);
@@ -101,7 +101,7 @@ TEST(BedMaker, AFullBatchStopsWhenItsAttemptsRunOut) {
 
 TEST(BedMaker, RandomBatchIsAPureFunctionOfSeedAndSerial) {
   const RunConfig c = randomConfig();
-  const ClumpDef clump = checkedClump(c);
+  const ClumpDef clump = prepareCase(c).clump;
   const RandomBatch a = randomPourBatch(c, clump, 15.0, 1000);
   const RandomBatch again = randomPourBatch(c, clump, 15.0, 1000);
   ASSERT_EQ(a.grains.size(), again.grains.size());
@@ -130,7 +130,7 @@ TEST(BedMaker, LatticeBedKeyIsUnchangedAndRandomKeysDiffer) {
       std::nullopt, {"box.width=12", "box.bed_height=8", "intruder.shape=polygon",
                      "intruder.vertices=[[-0.75,-0.75],[0.75,-0.75],[0.75,0.75],[-0.75,0.75]]", "intruder.y0=4",
                      "drive.amplitude=1"});
-  const ClumpDef disk = checkedClump(defaults), square = checkedClump(tiny);
+  const ClumpDef disk = prepareCase(defaults).clump, square = prepareCase(tiny).clump;
   EXPECT_EQ(bedKey(defaults, disk), "b8ece11933d4975e");
   EXPECT_EQ(bedKey(tiny, square), "8e5d9db187fd83f2");
   // The lattice ignores the random pour's parameters, and so does its key.
@@ -176,7 +176,7 @@ TEST(BedMaker, TinyRandomBedComesToRestAndContinuesToTheSameBits) {
     ~OneThread() { omp_set_num_threads(saved); }
   } oneThread;
   const RunConfig config = tinyRandomConfig();
-  const ClumpDef clump = checkedClump(config);
+  const ClumpDef clump = prepareCase(config).clump;
   int batches = 0;
   const World bed = makeBed(config, clump, [&](const BedStatus& s) { batches = s.batch; });
   EXPECT_GE(batches, 2);

@@ -50,17 +50,17 @@ RunOptions quiet(const std::string& dir) {
 TEST(Experiment, ResumedRunIsBitwiseIdenticalToAnUninterruptedOne) {
   const RunConfig config = tinyConfig(scratch(""));
   const std::string straight = scratch("straight"), interrupted = scratch("interrupted");
-  const RunOutcome reference = runExperiment(config, quiet(straight));
+  const RunOutcome reference = runExperiment(prepareCase(config), quiet(straight));
   ASSERT_EQ(reference.status, "ok");
 
   RunOptions stop = quiet(interrupted);
   stop.stopAfterSteps = 1700;  // mid-period, between samples and dump frames
   stop.checkpointAtStop = true;
-  ASSERT_EQ(runExperiment(config, stop).status, "stopped");
+  ASSERT_EQ(runExperiment(prepareCase(config), stop).status, "stopped");
   // Work done after the checkpoint and lost in a crash: the resumed run must not depend on it.
   RunOptions resume = quiet(interrupted);
   resume.resume = true;
-  const RunOutcome resumed = runExperiment(config, resume);
+  const RunOutcome resumed = runExperiment(prepareCase(config), resume);
   EXPECT_EQ(resumed.stateHash, reference.stateHash);
   for (const char* file : {"trajectory.csv", "phase_rates.csv", "fields.csv", "dumps/dump.lammpstrj", "model.json"})
     EXPECT_EQ(readFile(interrupted + "/" + file), readFile(straight + "/" + file)) << file;
@@ -85,11 +85,11 @@ TEST(Experiment, FinishedRunExtendedIsTheLongerRunFromTheStart) {
   RunConfig longer = shorter;
   longer.run.duration = 0.8;
   const std::string straight = scratch("long-straight"), extended = scratch("extended");
-  const RunOutcome reference = runExperiment(longer, quiet(straight));
-  ASSERT_EQ(runExperiment(shorter, quiet(extended)).status, "ok");
+  const RunOutcome reference = runExperiment(prepareCase(longer), quiet(straight));
+  ASSERT_EQ(runExperiment(prepareCase(shorter), quiet(extended)).status, "ok");
   RunOptions resume = quiet(extended);
   resume.resume = true;
-  const RunOutcome grown = runExperiment(longer, resume);
+  const RunOutcome grown = runExperiment(prepareCase(longer), resume);
   EXPECT_EQ(grown.stateHash, reference.stateHash);
   EXPECT_EQ(grown.vy, reference.vy);
   EXPECT_EQ(readFile(extended + "/trajectory.csv"), readFile(straight + "/trajectory.csv"));
@@ -103,7 +103,7 @@ TEST(Experiment, FinishedRunExtendedIsTheLongerRunFromTheStart) {
   // What cannot continue a run is refused, naming the key: a shorter run, or any other key.
   auto refusal = [&](RunConfig changed) {
     try {
-      runExperiment(changed, resume);
+      runExperiment(prepareCase(changed), resume);
     } catch (const Error& e) {
       return std::string(e.what());
     }
@@ -123,8 +123,8 @@ TEST(Experiment, ThreadCountDoesNotChangeTheResult) {
   one.threads = 1;
   RunOptions three = quiet(scratch("three-threads"));
   three.threads = 3;
-  const RunOutcome a = runExperiment(config, one);
-  const RunOutcome b = runExperiment(config, three);
+  const RunOutcome a = runExperiment(prepareCase(config), one);
+  const RunOutcome b = runExperiment(prepareCase(config), three);
   EXPECT_EQ(a.stateHash, b.stateHash);
   EXPECT_EQ(readFile(one.outDir + "/fields.csv"), readFile(three.outDir + "/fields.csv"));
 }
@@ -132,15 +132,15 @@ TEST(Experiment, ThreadCountDoesNotChangeTheResult) {
 TEST(Experiment, RefusesToOverwriteARunAndKeepsItsFiles) {
   const RunConfig config = tinyConfig(scratch(""));
   const std::string dir = scratch("existing");
-  runExperiment(config, quiet(dir));
+  runExperiment(prepareCase(config), quiet(dir));
   const std::string before = readFile(dir + "/summary.json");
-  EXPECT_THROW(runExperiment(config, quiet(dir)), Error);
+  EXPECT_THROW(runExperiment(prepareCase(config), quiet(dir)), Error);
   EXPECT_EQ(readFile(dir + "/summary.json"), before);
   RunConfig other = config;
   other.drive.period = 1.0;
   RunOptions resume = quiet(dir);
   resume.resume = true;
-  EXPECT_THROW(runExperiment(other, resume), Error);  // a different config cannot resume this run
+  EXPECT_THROW(runExperiment(prepareCase(other), resume), Error);  // a different config cannot resume this run
   EXPECT_EQ(readFile(dir + "/summary.json"), before);
 }
 
@@ -148,7 +148,7 @@ TEST(Experiment, GeometryErrorsNameTheKey) {
   RunConfig c = tinyConfig(scratch(""));
   auto message = [&](const RunConfig& config) {
     try {
-      runExperiment(config, quiet(scratch("never")));
+      runExperiment(prepareCase(config), quiet(scratch("never")));
     } catch (const Error& e) {
       return std::string(e.what());
     }
@@ -169,22 +169,22 @@ TEST(Experiment, GeometryErrorsNameTheKey) {
 TEST(Experiment, CorruptCheckpointFallsBackToThePreviousOne) {
   const RunConfig config = tinyConfig(scratch(""));
   const std::string reference = scratch("ref-corrupt"), dir = scratch("corrupt");
-  const RunOutcome expected = runExperiment(config, quiet(reference));
+  const RunOutcome expected = runExperiment(prepareCase(config), quiet(reference));
   RunOptions stop = quiet(dir);
   stop.stopAfterSteps = 1000;
   stop.checkpointAtStop = true;
-  runExperiment(config, stop);
+  runExperiment(prepareCase(config), stop);
   RunOptions more = quiet(dir);
   more.resume = true;
   more.stopAfterSteps = 1000;
   more.checkpointAtStop = true;
-  runExperiment(config, more);  // now checkpoint.bin (step 2000) and checkpoint.prev.bin (step 1000)
+  runExperiment(prepareCase(config), more);  // now checkpoint.bin (step 2000) and checkpoint.prev.bin (step 1000)
   std::string bytes = readFile(dir + "/checkpoint.bin");
   bytes[bytes.size() / 2] ^= 0x10;
   writeFileAtomically(dir + "/checkpoint.bin", bytes);
   RunOptions resume = quiet(dir);
   resume.resume = true;
-  EXPECT_EQ(runExperiment(config, resume).stateHash, expected.stateHash);
+  EXPECT_EQ(runExperiment(prepareCase(config), resume).stateHash, expected.stateHash);
   EXPECT_NE(readFile(dir + "/log.txt").find("checksum"), std::string::npos);
 }
 
@@ -198,10 +198,10 @@ TEST(Experiment, DamagedCheckpointsAndBedsAreNeverLoaded) {
   RunOptions stop = quiet(dir);
   stop.stopAfterSteps = 300;
   stop.checkpointAtStop = true;
-  runExperiment(config, stop);
+  runExperiment(prepareCase(config), stop);
   const std::string configToml = toToml(config);
   const std::string checkpoint = readFile(checkpointPath(dir));
-  const std::string key = bedKey(config, checkedClump(config));
+  const std::string key = bedKey(config, prepareCase(config).clump);
   const std::string bed = readFile(bedCachePath(config, key));
   ASSERT_NO_THROW(parseCheckpoint(checkpoint, "c.bin", config, configToml));
   ASSERT_NO_THROW(parseCachedBed(bed, "b.bin", key));
@@ -238,7 +238,7 @@ TEST(Experiment, DamagedCheckpointsAndBedsAreNeverLoaded) {
 
 TEST(Experiment, CorruptOrForeignCachedBedIsRebuiltIdentically) {
   const RunConfig config = tinyConfig(scratch("bed-rebuild"));
-  const ClumpDef clump = checkedClump(config);
+  const ClumpDef clump = prepareCase(config).clump;
   const std::string path = bedCachePath(config, bedKey(config, clump));
   const CachedBed first = obtainBed(config, clump);
   const std::string good = readFile(path);
@@ -271,7 +271,7 @@ TEST(Experiment, CorruptOrForeignCachedBedIsRebuiltIdentically) {
 const std::string& tinyBedHash() {
   static const std::string hash = [] {
     const RunConfig config = tinyConfig(scratch("bed-reference"));
-    return makeBed(config, checkedClump(config)).stateHash();
+    return makeBed(config, prepareCase(config).clump).stateHash();
   }();
   return hash;
 }
@@ -281,7 +281,7 @@ TEST(Experiment, BedMakingStoppedBySignalContinuesToTheSameBits) {
   // same call then continues it to the bits of a bed made in one go. A damaged partial file is
   // refused and the bed made afresh, to the same bits.
   const RunConfig base = tinyConfig(scratch("bed-signal-reference"));
-  const ClumpDef clump = checkedClump(base);
+  const ClumpDef clump = prepareCase(base).clump;
   const std::string hash = tinyBedHash();
   for (const std::string stage : {"pouring", "relaxing"}) {
     RunConfig config = base;
@@ -326,7 +326,7 @@ TEST(Experiment, BedSavedPeriodicallyContinuesAfterAKill) {
   // of the bed made in one go.
   RunConfig config = tinyConfig(scratch("bed-periodic"));
   config.run.checkpointInterval = 0.0;
-  const ClumpDef clump = checkedClump(config);
+  const ClumpDef clump = prepareCase(config).clump;
   const std::string key = bedKey(config, clump);
   const std::string partial = bedPartialPath(config, key), aside = partial + ".aside";
   {

@@ -1,6 +1,6 @@
 // export-lammps: the data file carries wiggle's state to the bit, the deck holds the case's
 // parameters, and LAMMPS running the deck follows wiggle's intruder over a short window.
-#include "io/LammpsExport.h"
+#include "scenario/LammpsExport.h"
 
 #include <gtest/gtest.h>
 
@@ -87,7 +87,7 @@ TEST(LammpsExport, DataFileCarriesTheStateBitForBit) {
   config.box.width = 20;
   config.run.duration = 0.5;
   World world = smallWorld(MassModel::Sphere);
-  const LammpsDeck deck = makeLammpsDeck(world, config);
+  const LammpsDeck deck = makeLammpsDeck(world, prepareCase(config));
   const ParticleStore& s = world.particles();
   const std::size_t clumpAtoms = world.clump().offsetX.size();
   EXPECT_EQ(deck.atoms, s.size() + clumpAtoms);
@@ -129,7 +129,7 @@ TEST(LammpsExport, DeckHoldsTheCaseParameters) {
   config.run.sampleInterval = 0.01;
   config.run.dumpInterval = 0;
   const World world = smallWorld(MassModel::Sphere);
-  const std::string in = makeLammpsDeck(world, config).input;
+  const std::string in = makeLammpsDeck(world, prepareCase(config)).input;
   char mass[64];
   std::snprintf(mass, sizeof mass, "%.17g", world.clump().mass);
   for (const std::string& needle :
@@ -147,7 +147,7 @@ TEST(LammpsExport, DeckHoldsTheCaseParameters) {
 
   RunConfig disc = config;
   disc.grains.massModel = MassModel::Disc;
-  const std::string inDisc = makeLammpsDeck(smallWorld(MassModel::Disc), disc).input;
+  const std::string inDisc = makeLammpsDeck(smallWorld(MassModel::Disc), prepareCase(disc)).input;
   EXPECT_NE(inDisc.find("set group grains density/disc 1\n"), std::string::npos);
   EXPECT_NE(inDisc.find("fix integrate grains nve/sphere disc\n"), std::string::npos);
 
@@ -156,7 +156,7 @@ TEST(LammpsExport, DeckHoldsTheCaseParameters) {
   motion.kind = HorizontalMotion::RampedSinusoid;
   motion.rampTime = 4.0;  // two periods
   ramped.setIntruderMotion(motion);
-  const std::string inRamp = makeLammpsDeck(ramped, config).input;
+  const std::string inRamp = makeLammpsDeck(ramped, prepareCase(config)).input;
   EXPECT_NE(inRamp.find("variable ramp equal 4\n"), std::string::npos);
   EXPECT_NE(inRamp.find("variable dx equal 3*v_s*sin(v_w*(step*dt))\n"), std::string::npos);
   EXPECT_EQ(in.find("v_s"), std::string::npos);  // the plain drive has no ramp (docs/PHYSICS.md §7)
@@ -167,11 +167,11 @@ TEST(LammpsExport, RefusesAWorldNotAtTheStartOfADrivenRun) {
   config.box.width = 20;
   World world = smallWorld(MassModel::Sphere);
   world.step();
-  EXPECT_THROW(makeLammpsDeck(world, config), Error);  // clock not at 0
+  EXPECT_THROW(makeLammpsDeck(world, prepareCase(config)), Error);  // clock not at 0
   World held(worldDefFor(config));
   held.addFrozen(0, 0, 0.5);
   held.setIntruder(makeClump(IntruderDef{}, MassModel::Sphere, 1.0), 10, 9);
-  EXPECT_THROW(makeLammpsDeck(held, config), Error);  // intruder held, not driven
+  EXPECT_THROW(makeLammpsDeck(held, prepareCase(config)), Error);  // intruder held, not driven
 }
 
 TEST(LammpsExport, WithoutContactHistoryKeepsEveryParticle) {
@@ -234,7 +234,7 @@ void expectLammpsFollowsWiggle(const std::string& rampPeriods) {
   config.bed.cacheDir = (root / "cache").string();
   const std::string dir = (root / ("deck-ramp" + rampPeriods)).string();
   fs::remove_all(dir);
-  const LammpsExportResult exported = exportLammps(config, dir, false);
+  const LammpsExportResult exported = exportLammps(prepareCase(config), dir, false);
   ASSERT_EQ(exported.deck.steps, 2000u);
 
   const std::string command = "cd '" + dir + "' && lmp -in in.wiggle -log log.lammps -screen none";
@@ -246,7 +246,7 @@ void expectLammpsFollowsWiggle(const std::string& rampPeriods) {
   const ClumpDef clump = makeClump(config.intruder, config.grains.massModel, 1.0);
   CachedBed bed = obtainBed(config, clump);
   ASSERT_TRUE(bed.fromCache);
-  startDrive(bed.world, config);
+  startDrive(bed.world, prepareCase(config));
   const auto fresh = runWiggle(withoutContactHistory(bed.world), 2000, 100);
   const auto withHistory = runWiggle(bed.world, 2000, 100);
 

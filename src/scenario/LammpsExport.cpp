@@ -1,4 +1,4 @@
-#include "io/LammpsExport.h"
+#include "scenario/LammpsExport.h"
 
 #include <unistd.h>
 
@@ -13,7 +13,7 @@
 #include "core/StopSignal.h"
 #include "io/AtomicFile.h"
 #include "scenario/BedMaker.h"
-#include "scenario/Experiment.h"
+#include "scenario/Case.h"
 #include "scenario/Shape.h"
 
 namespace wiggle {
@@ -38,7 +38,8 @@ double wrapX(double x, double width) {
 
 }  // namespace
 
-LammpsDeck makeLammpsDeck(const World& world, const RunConfig& config) {
+LammpsDeck makeLammpsDeck(const World& world, const Case& run) {
+  const RunConfig& config = run.config;
   if (!world.hasIntruder()) throw Error("export-lammps: the world has no intruder");
   const ClumpMotion& motion = world.intruderMotion();
   const bool ramped = motion.kind == HorizontalMotion::RampedSinusoid;
@@ -55,10 +56,9 @@ LammpsDeck makeLammpsDeck(const World& world, const RunConfig& config) {
   LammpsDeck deck;
   deck.grains = s.grainCount;
   deck.atoms = s.size() + nAtoms;
-  deck.steps = stepsIn(config.run.duration, def.dt, "run.duration");
-  const std::uint64_t sampleEvery = stepsIn(config.run.sampleInterval, def.dt, "run.sample_interval");
-  const std::uint64_t dumpEvery =
-      config.run.dumpInterval > 0 ? stepsIn(config.run.dumpInterval, def.dt, "run.dump_interval") : 0;
+  deck.steps = run.steps.total;
+  const std::uint64_t sampleEvery = run.steps.sampleEvery;
+  const std::uint64_t dumpEvery = run.steps.dumpEvery;
 
   // ---- data file
   double yLo = -1.0, yHi = 1.0;
@@ -207,14 +207,14 @@ World withoutContactHistory(const World& world) {
   return fresh;
 }
 
-LammpsExportResult exportLammps(const RunConfig& config, const std::string& dir, bool progressLine) {
-  const ClumpDef clump = checkedClump(config);
+LammpsExportResult exportLammps(const Case& run, const std::string& dir, bool progressLine) {
+  const RunConfig& config = run.config;
   // On a terminal a rewritten status line; otherwise (a log, a benchmark script) a line every 30 s,
   // so that a bed that takes an hour to make shows that it is getting on.
   const bool terminal = progressLine && ::isatty(STDERR_FILENO);
   auto lastLine = std::chrono::steady_clock::now();
   const StopSignalGuard stopOnSignal;  // SIGINT/SIGTERM while the bed is made: save it, then stop
-  CachedBed bed = obtainBed(config, clump, [&](const BedStatus& st) {
+  CachedBed bed = obtainBed(config, run.clump, [&](const BedStatus& st) {
     if (!progressLine) return;
     const auto now = std::chrono::steady_clock::now();
     if (!terminal && now - lastLine < std::chrono::seconds(30)) return;
@@ -230,9 +230,9 @@ LammpsExportResult exportLammps(const RunConfig& config, const std::string& dir,
   if (!bed.note.empty()) std::fprintf(stderr, "wiggle: warning: %s\n", bed.note.c_str());
   // Exactly what runExperiment does before its first step.
   World& world = bed.world;
-  startDrive(world, config);
+  startDrive(world, run);
   LammpsExportResult result;
-  result.deck = makeLammpsDeck(world, config);
+  result.deck = makeLammpsDeck(world, run);
   result.bedPath = bed.path;
   result.bedFromCache = bed.fromCache;
   writeLammpsDeck(dir, result.deck);

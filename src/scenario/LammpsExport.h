@@ -16,8 +16,8 @@
 #include <cstdint>
 #include <string>
 
-#include "io/RunConfig.h"
 #include "physics/World.h"
+#include "scenario/Case.h"
 
 namespace wiggle {
 
@@ -37,7 +37,7 @@ inline constexpr const char* kLammpsTrajectoryFile = "trajectory.csv";
 // The deck for `world` at the start of the run: intruder set, its Sinusoid motion with y free,
 // clock at 0 (what runExperiment has just before its first step). Throws wiggle::Error when the
 // world is not in that state (no intruder, another motion, clock not at 0).
-LammpsDeck makeLammpsDeck(const World& world, const RunConfig& config);
+LammpsDeck makeLammpsDeck(const World& world, const Case& run);
 
 // Writes DIR/data.lammps and DIR/in.wiggle, each atomically; creates DIR.
 void writeLammpsDeck(const std::string& dir, const LammpsDeck& deck);
@@ -55,6 +55,6 @@ struct LammpsExportResult {
 
 // The whole command: gets the bed as `wiggle run` does (obtainBed: the cache, or made and cached),
 // starts the drive, and writes the deck into `dir`.
-LammpsExportResult exportLammps(const RunConfig& config, const std::string& dir, bool progressLine = true);
+LammpsExportResult exportLammps(const Case& run, const std::string& dir, bool progressLine = true);
 
 }  // namespace wiggle

@@ -1,0 +1,112 @@
+#include "scenario/Case.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "core/Error.h"
+#include "io/Config.h"
+
+namespace wiggle {
+
+namespace {
+
+std::string number(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", v);
+  return text;
+}
+
+// The count of run.dt steps in an interval io/Config has already checked to be whole.
+std::uint64_t stepsOf(double interval, double dt, const char* key) {
+  const std::uint64_t steps = wholeStepsIn(interval, dt);
+  if (steps == 0)  // only a config that bypassed validateRunConfig gets here
+    throw Error(std::string(key) + " = " + number(interval) + " is not a whole number of run.dt = " + number(dt) +
+                " steps");
+  return steps;
+}
+
+void checkGeometry(const RunConfig& config, const ClumpDef& clump) {
+  constexpr double kMaxGrains = 5e7;
+  if (const double grains = estimatedGrains(config); grains > kMaxGrains)
+    throw Error("box.width x box.bed_height = " + number(config.box.width) + " x " + number(config.box.bedHeight) +
+                " needs about " + number(grains) + " grains, more than the " + number(kMaxGrains) + " wiggle accepts");
+  double minX = 0, maxX = 0, minY = 0, maxY = 0;
+  for (std::size_t a = 0; a < clump.offsetX.size(); ++a) {
+    minX = std::min(minX, clump.offsetX[a] - clump.atomRadius);
+    maxX = std::max(maxX, clump.offsetX[a] + clump.atomRadius);
+    minY = std::min(minY, clump.offsetY[a] - clump.atomRadius);
+    maxY = std::max(maxY, clump.offsetY[a] + clump.atomRadius);
+  }
+  const double width = maxX - minX;
+  // Room for the intruder's sweep plus a few grain diameters between its images across the
+  // periodic boundary, so it never meets itself.
+  const double needed = width + 2.0 * config.drive.amplitude + 4.0 * config.grains.dMax;
+  if (config.box.width < needed)
+    throw Error("box.width = " + number(config.box.width) + " is too narrow for the " + config.intruder.shape + " (" +
+                number(width) + " wide) moving +-" + number(config.drive.amplitude) + ": need at least " +
+                number(std::ceil(needed)));
+  const double bottom = config.intruder.y0 + minY, top = config.intruder.y0 + maxY;
+  if (bottom < 0.5 + 2.0 * config.grains.dMax)
+    throw Error("intruder.y0 = " + number(config.intruder.y0) + " puts the intruder's bottom at y = " + number(bottom) +
+                ", too near the base: need at least two grain layers below it");
+  if (top > config.box.bedHeight - 2.0 * config.grains.dMax)
+    throw Error("intruder.y0 = " + number(config.intruder.y0) + " puts the intruder's top at y = " + number(top) +
+                ", outside or too near the top of the bed (box.bed_height = " + number(config.box.bedHeight) +
+                "): need at least two grain layers above it");
+}
+
+}  // namespace
+
+double estimatedGrains(const RunConfig& config) {
+  constexpr double kPacking = 0.84;  // area fraction of a loose random packing below the surface
+  const double a = config.grains.dMin, b = config.grains.dMax;
+  const double meanArea = std::numbers::pi / 4.0 * (a * a + a * b + b * b) / 3.0;  // diameters uniform in [a, b]
+  return config.box.width * config.box.bedHeight * kPacking / meanArea;
+}
+
+Case prepareCase(const RunConfig& config) {
+  Case c;
+  c.config = config;
+  c.shape = makeShape(config.intruder);
+  const OutlineBox box = boundingBox(c.shape.outline);
+  if (!(box.width() <= config.box.width && box.height() <= config.box.bedHeight))
+    throw Error(std::string(config.intruder.shape == "polygon" ? "intruder.vertices" : "intruder.shape") +
+                ": the outline is " + number(box.width()) + " x " + number(box.height()) +
+                ", larger than the bed (box.width = " + number(config.box.width) +
+                ", box.bed_height = " + number(config.box.bedHeight) + ")");
+  c.clump = makeClump(config.intruder, c.shape, config.grains.massModel, 1.0);
+  checkGeometry(config, c.clump);
+
+  c.drive.kind = config.drive.rampPeriods > 0 ? HorizontalMotion::RampedSinusoid : HorizontalMotion::Sinusoid;
+  c.drive.x0 = 0.5 * config.box.width;
+  c.drive.amplitude = config.drive.amplitude;
+  c.drive.period = config.drive.period;
+  c.drive.rampTime = static_cast<double>(config.drive.rampPeriods) * config.drive.period;
+  c.drive.verticalFree = true;
+
+  const double dt = config.run.dt;
+  RunSchedule& s = c.steps;
+  s.total = stepsOf(config.run.duration, dt, "run.duration");
+  s.sampleEvery = stepsOf(config.run.sampleInterval, dt, "run.sample_interval");
+  s.period = stepsOf(config.drive.period, dt, "drive.period");
+  s.dumpEvery = config.run.dumpInterval > 0 ? stepsOf(config.run.dumpInterval, dt, "run.dump_interval") : 0;
+  s.firstMeasured = static_cast<std::uint64_t>(std::llround(0.1 * static_cast<double>(s.total)));
+  for (double p : config.fields.phases)
+    s.fieldPhaseStep.push_back(static_cast<std::uint64_t>(std::llround(p / 20.0 * static_cast<double>(s.period))) %
+                               s.period);
+
+  double clumpTop = 0.0;
+  for (std::size_t a = 0; a < c.clump.offsetY.size(); ++a)
+    clumpTop = std::max(clumpTop, c.clump.offsetY[a] + c.clump.atomRadius);
+  c.surfacedHeight = config.box.bedHeight - clumpTop - 2.0 * config.grains.dMax;
+  return c;
+}
+
+void startDrive(World& world, const Case& c) {
+  world.setIntruderMotion(c.drive);
+  world.resetClock();
+}
+
+}  // namespace wiggle
