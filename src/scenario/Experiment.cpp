@@ -23,6 +23,7 @@
 #include "model/CavityModel.h"
 #include "scenario/BedMaker.h"
 #include "scenario/Checkpoint.h"
+#include "scenario/RunSummary.h"
 
 namespace wiggle {
 
@@ -341,59 +342,48 @@ RunOutcome runExperiment(const Case& run, const RunOptions& options) {
                        number(rate.tInitial) + ": the run was extended (resumed with a longer run.duration); the "
                        "trajectory, V_y and the final state are those of a run this long from the start");
 
-  nlohmann::json summary;
-  summary["vy"] = rate.vy;
-  summary["vy_slope"] = rate.slope;
-  summary["vy_rule"] = "(y_f - y_i)/(t_f - t_i), t_i = 0.1 t_total, t_f = t_total or the start of a plateau at "
-                       "the free surface (docs/OUTPUT-FORMATS.md)";
-  summary["plateau"] = rate.plateau;
-  summary["t_i"] = rate.tInitial;
-  summary["t_f"] = rate.tFinal;
-  summary["y_initial"] = rate.yInitial;
-  summary["y_final"] = rate.yFinal;
-  summary["y_start"] = state.samples.front().y;
-  summary["vy_window_periods"] = rate.windowPeriods;
-  summary["averaged_from_t"] = averagedFrom;
-  summary["warnings"] = warnings;
-  // How close the run came to the blow-up detector's bounds (1 = stopped), at its full scans.
-  summary["overlap_margin"] = world.healthMargins().overlap;
-  summary["speed_margin"] = world.healthMargins().speed;
-  summary["status"] = "ok";
-  summary["n_grains"] = world.grainCount();
-  summary["n_particles"] = world.particles().size();
-  summary["steps"] = world.stepCount();
-  summary["threads"] = omp_get_max_threads();
-  summary["wall_s"] = state.runWallSeconds + state.bedWallSeconds;
-  summary["run_wall_s"] = state.runWallSeconds;
-  summary["bed_wall_s"] = state.bedWallSeconds;
-  summary["bed_from_cache"] = state.bedFromCache;
-  summary["bed_key"] = state.bedKey;
-  summary["ns_per_particle_step"] = 1e9 * state.runWallSeconds / (particles * static_cast<double>(world.stepCount()));
-  summary["state_hash"] = world.stateHash();
-  // Engine diagnostics at the end of the run (docs/PERFORMANCE.md): list sizes and the memory of the
-  // simulation state per grain.
-  summary["neighbour_pairs"] = world.neighbours().pairCount();
-  summary["contacts"] = [&] {  // listed pairs that touch (a non-zero force) at the last step
-    const NeighbourList& list = world.neighbours();
-    std::uint32_t touching = 0;
-    for (std::uint32_t k = 0; k < list.pairCount(); ++k) touching += list.forceX[k] != 0.0 || list.forceY[k] != 0.0;
-    return touching;
-  }();
-  summary["intruder_pairs"] = world.intruderPairs().size();
-  summary["state_bytes_per_grain"] = static_cast<double>(world.stateBytes()) / std::max(1u, world.grainCount());
-  summary["shape"] = config.intruder.shape;
-  summary["amplitude"] = config.drive.amplitude;
-  summary["period"] = config.drive.period;
-  summary["mu"] = config.contact.mu;
-  summary["field_frames"] = [&] {
-    nlohmann::json f = nlohmann::json::array();
-    for (std::size_t p = 0; p < config.fields.phases.size(); ++p) f.push_back(fields.frames(p));
-    return f;
-  }();
-  summary["version"] = WIGGLE_VERSION;
-  writeFileAtomically(dir + "/summary.json", summary.dump(2) + "\n");
+  RunSummary summary;
+  summary.vy = rate.vy;
+  summary.vySlope = rate.slope;
+  summary.vyRule = "(y_f - y_i)/(t_f - t_i), t_i = 0.1 t_total, t_f = t_total or the start of a plateau at "
+                   "the free surface (docs/OUTPUT-FORMATS.md)";
+  summary.plateau = rate.plateau;
+  summary.tInitial = rate.tInitial;
+  summary.tFinal = rate.tFinal;
+  summary.yInitial = rate.yInitial;
+  summary.yFinal = rate.yFinal;
+  summary.yStart = state.samples.front().y;
+  summary.vyWindowPeriods = rate.windowPeriods;
+  summary.averagedFromT = averagedFrom;
+  summary.warnings = warnings;
+  summary.overlapMargin = world.healthMargins().overlap;
+  summary.speedMargin = world.healthMargins().speed;
+  summary.status = "ok";
+  summary.grains = world.grainCount();
+  summary.particles = world.particles().size();
+  summary.steps = world.stepCount();
+  summary.threads = static_cast<std::uint64_t>(omp_get_max_threads());
+  summary.wallSeconds = state.runWallSeconds + state.bedWallSeconds;
+  summary.runWallSeconds = state.runWallSeconds;
+  summary.bedWallSeconds = state.bedWallSeconds;
+  summary.bedFromCache = state.bedFromCache;
+  summary.bedKey = state.bedKey;
+  summary.nsPerParticleStep = 1e9 * state.runWallSeconds / (particles * static_cast<double>(world.stepCount()));
+  summary.stateHash = world.stateHash();
+  const NeighbourList& list = world.neighbours();
+  summary.neighbourPairs = list.pairCount();
+  for (std::uint32_t k = 0; k < list.pairCount(); ++k) summary.contacts += list.forceX[k] != 0.0 || list.forceY[k] != 0.0;
+  summary.intruderPairs = world.intruderPairs().size();
+  summary.stateBytesPerGrain = static_cast<double>(world.stateBytes()) / std::max(1u, world.grainCount());
+  summary.shape = config.intruder.shape;
+  summary.amplitude = config.drive.amplitude;
+  summary.period = config.drive.period;
+  summary.mu = config.contact.mu;
+  for (std::size_t p = 0; p < config.fields.phases.size(); ++p) summary.fieldFrames.push_back(fields.frames(p));
+  summary.version = WIGGLE_VERSION;
+  writeFileAtomically(dir + "/summary.json", toJson(summary).dump(2) + "\n");
   log.line("done: vy = " + number(rate.vy) + ", slope = " + number(rate.slope) + ", " +
-           number(summary["ns_per_particle_step"].get<double>()) + " ns/particle-step, state " + world.stateHash());
+           number(summary.nsPerParticleStep) + " ns/particle-step, state " + world.stateHash());
   for (const std::string& w : warnings) log.line("warning: " + w);
   outcome.status = "ok";
   outcome.vy = rate.vy;

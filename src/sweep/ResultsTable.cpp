@@ -7,6 +7,7 @@
 #include "core/Error.h"
 #include "io/AtomicFile.h"
 #include "io/Config.h"
+#include "scenario/RunSummary.h"
 
 namespace wiggle {
 
@@ -58,29 +59,31 @@ std::string csvCell(const std::string& text) {
 
 CaseResult readCaseSummary(const std::string& runDir) {
   const std::string path = runDir + "/summary.json";
-  nlohmann::json j;
+  RunSummary summary;
   try {
-    j = nlohmann::json::parse(readFile(path));
+    summary = summaryFromJson(nlohmann::json::parse(readFile(path)));
   } catch (const nlohmann::json::exception& e) {
     throw Error(path + " is not valid JSON: " + e.what());
+  } catch (const Error& e) {
+    throw Error(path + ": " + e.what());
   }
   CaseResult r;
-  r.status = j.value("status", "");
-  if (r.status != "ok") {
+  if (summary.status != "ok") {
     r.status = "failed";
-    r.error = path + " has status '" + j.value("status", "") + "'";
+    r.error = path + " has status '" + summary.status + "'";
     return r;
   }
-  r.vy = j.value("vy", 0.0);
-  r.vySlope = j.value("vy_slope", 0.0);
-  r.wallSeconds = j.value("wall_s", 0.0);
-  r.nsPerParticleStep = j.value("ns_per_particle_step", 0.0);
-  r.runWallSeconds = j.value("run_wall_s", 0.0);
-  r.grains = j.value("n_grains", std::uint64_t{0});
-  r.steps = j.value("steps", std::uint64_t{0});
-  const double particles = j.value("n_particles", static_cast<double>(r.grains));
+  r.status = "ok";
+  r.vy = summary.vy;
+  r.vySlope = summary.vySlope;
+  r.wallSeconds = summary.wallSeconds;
+  r.nsPerParticleStep = summary.nsPerParticleStep;
+  r.runWallSeconds = summary.runWallSeconds;
+  r.grains = summary.grains;
+  r.steps = summary.steps;
+  const double particles = summary.particles ? static_cast<double>(summary.particles) : static_cast<double>(r.grains);
   r.particleSteps = particles * static_cast<double>(r.steps);
-  r.stateHash = j.value("state_hash", "");
+  r.stateHash = summary.stateHash;
   return r;
 }
 

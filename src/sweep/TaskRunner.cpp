@@ -47,18 +47,18 @@ std::string TaskOutcome::toJson() const {
   j["task"] = task.encode();
   j["ok"] = ok;
   j["error"] = error;
-  j["wall"] = wallSeconds;
+  j["task_wall_s"] = wallSeconds;
   j["pid"] = pid;
   j["status"] = result.status;
   j["vy"] = result.vy;
   j["vy_slope"] = result.vySlope;
   j["wall_s"] = result.wallSeconds;
-  j["ns"] = result.nsPerParticleStep;
+  j["ns_per_particle_step"] = result.nsPerParticleStep;
   j["run_wall_s"] = result.runWallSeconds;
   j["particle_steps"] = result.particleSteps;
-  j["grains"] = result.grains;
+  j["n_grains"] = result.grains;
   j["steps"] = result.steps;
-  j["hash"] = result.stateHash;
+  j["state_hash"] = result.stateHash;
   j["result_error"] = result.error;
   return j.dump();
 }
@@ -69,18 +69,18 @@ TaskOutcome TaskOutcome::fromJson(const std::string& text) {
   o.task = SweepTask::decode(j.at("task").get<std::int64_t>());
   o.ok = j.at("ok").get<bool>();
   o.error = j.at("error").get<std::string>();
-  o.wallSeconds = j.at("wall").get<double>();
+  o.wallSeconds = j.at("task_wall_s").get<double>();
   o.pid = j.at("pid").get<int>();
   o.result.status = j.at("status").get<std::string>();
   o.result.vy = j.at("vy").get<double>();
   o.result.vySlope = j.at("vy_slope").get<double>();
   o.result.wallSeconds = j.at("wall_s").get<double>();
-  o.result.nsPerParticleStep = j.at("ns").get<double>();
+  o.result.nsPerParticleStep = j.at("ns_per_particle_step").get<double>();
   o.result.runWallSeconds = j.at("run_wall_s").get<double>();
   o.result.particleSteps = j.at("particle_steps").get<double>();
-  o.result.grains = j.at("grains").get<std::uint64_t>();
+  o.result.grains = j.at("n_grains").get<std::uint64_t>();
   o.result.steps = j.at("steps").get<std::uint64_t>();
-  o.result.stateHash = j.at("hash").get<std::string>();
+  o.result.stateHash = j.at("state_hash").get<std::string>();
   o.result.error = j.at("result_error").get<std::string>();
   return o;
 }

@@ -1,6 +1,7 @@
 // One case end to end on a tiny bed: outputs, resume from a checkpoint bit for bit, bad input.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
@@ -15,6 +16,7 @@
 #include "scenario/BedMaker.h"
 #include "scenario/Checkpoint.h"
 #include "scenario/Experiment.h"
+#include "scenario/RunSummary.h"
 
 namespace wiggle {
 namespace {
@@ -69,6 +71,13 @@ TEST(Experiment, ResumedRunIsBitwiseIdenticalToAnUninterruptedOne) {
   EXPECT_EQ(summary["steps"], 4000);
   EXPECT_EQ(summary["state_hash"], reference.stateHash);
   EXPECT_GT(summary["n_grains"].get<int>(), 100);
+  // The file holds exactly the schema's keys, and reads back into the struct that wrote it.
+  std::vector<std::string> keys, schema;
+  for (const auto& [key, value] : summary.items()) keys.push_back(key);
+  for (const SummaryField& f : summaryFields()) schema.push_back(f.name);
+  std::sort(schema.begin(), schema.end());
+  EXPECT_EQ(keys, schema);
+  EXPECT_EQ(toJson(summaryFromJson(summary)), summary);
   // 20 phase rows, each bin filled over t > t_i = 0.04 (3600 steps, 180 per bin).
   std::ifstream rates(straight + "/phase_rates.csv");
   std::string line;

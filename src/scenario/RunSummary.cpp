@@ -1,0 +1,98 @@
+#include "scenario/RunSummary.h"
+
+#include "core/Error.h"
+
+namespace wiggle {
+
+namespace {
+using S = RunSummary;
+}  // namespace
+
+const std::vector<SummaryField>& summaryFields() {
+  static const std::vector<SummaryField> fields = {
+      {"vy", "sqrt(g d)", "the paper's rate (y_f - y_i) / (t_f - t_i)", &S::vy},
+      {"vy_slope", "sqrt(g d)", "least-squares slope of y(t) over [t_i, t_f]", &S::vySlope},
+      {"vy_rule", "", "the rule that chose t_i and t_f, in words", &S::vyRule},
+      {"plateau", "", "true when t_f is the start of a plateau at the free surface", &S::plateau},
+      {"t_i", "sqrt(d/g)", "start of the rate's window: 0.1 t_total", &S::tInitial},
+      {"t_f", "sqrt(d/g)", "end of the rate's window", &S::tFinal},
+      {"y_initial", "d", "intruder centre height at t_i", &S::yInitial},
+      {"y_final", "d", "intruder centre height at t_f", &S::yFinal},
+      {"y_start", "d", "intruder centre height at t = 0", &S::yStart},
+      {"vy_window_periods", "", "(t_f - t_i) / T: the drive periods V_y is measured over", &S::vyWindowPeriods},
+      {"averaged_from_t", "sqrt(d/g)", "where the phase rates and fields begin to average", &S::averagedFromT},
+      {"warnings", "", "what makes the result less than it seems; empty when nothing is amiss", &S::warnings},
+      {"overlap_margin", "", "deepest overlap seen, as a fraction of the blow-up bound", &S::overlapMargin},
+      {"speed_margin", "", "fastest grain seen, as a fraction of the blow-up bound", &S::speedMargin},
+      {"status", "", "ok", &S::status},
+      {"n_grains", "", "grains in the bed", &S::grains},
+      {"n_particles", "", "grains and frozen base particles", &S::particles},
+      {"steps", "", "time steps of the run", &S::steps},
+      {"threads", "", "OpenMP threads of the last stretch run", &S::threads},
+      {"wall_s", "s", "wall time: run and bed", &S::wallSeconds},
+      {"run_wall_s", "s", "wall time of the run phase", &S::runWallSeconds},
+      {"bed_wall_s", "s", "wall time spent obtaining the bed (made or loaded)", &S::bedWallSeconds},
+      {"bed_from_cache", "", "true when the bed was loaded from the cache", &S::bedFromCache},
+      {"bed_key", "", "hex key of the bed's parameters", &S::bedKey},
+      {"ns_per_particle_step", "ns", "run-phase wall time per particle per step", &S::nsPerParticleStep},
+      {"state_hash", "", "hash of the final state's bits", &S::stateHash},
+      {"neighbour_pairs", "", "pairs in the grain list at the end (skin included)", &S::neighbourPairs},
+      {"contacts", "", "listed pairs that touch at the last step", &S::contacts},
+      {"intruder_pairs", "", "grain-atom pairs listed for the intruder at the end", &S::intruderPairs},
+      {"state_bytes_per_grain", "B", "the simulation state's arrays per grain", &S::stateBytesPerGrain},
+      {"shape", "", "intruder.shape", &S::shape},
+      {"amplitude", "d", "drive.amplitude", &S::amplitude},
+      {"period", "sqrt(d/g)", "drive.period", &S::period},
+      {"mu", "", "contact.mu", &S::mu},
+      {"field_frames", "", "frames averaged per fields.phases entry", &S::fieldFrames},
+      {"version", "", "version of the wiggle that wrote the file", &S::version},
+  };
+  return fields;
+}
+
+nlohmann::json toJson(const RunSummary& summary) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const SummaryField& f : summaryFields())
+    std::visit([&](auto member) { j[f.name] = summary.*member; }, f.member);
+  return j;
+}
+
+RunSummary summaryFromJson(const nlohmann::json& json) {
+  if (!json.is_object()) throw Error("summary: expected a JSON object");
+  RunSummary summary;
+  for (const SummaryField& f : summaryFields()) {
+    const auto it = json.find(f.name);
+    if (it == json.end()) continue;
+    std::visit(
+        [&](auto member) {
+          try {
+            it->get_to(summary.*member);
+          } catch (const nlohmann::json::exception&) {
+            throw Error(std::string("summary: key '") + f.name + "' has the wrong type");
+          }
+        },
+        f.member);
+  }
+  return summary;
+}
+
+nlohmann::json summarySchema() {
+  nlohmann::json schema = nlohmann::json::array();
+  for (const SummaryField& f : summaryFields()) {
+    const char* type = std::visit(
+        [](auto member) -> const char* {
+          using T = std::remove_reference_t<decltype(RunSummary{}.*member)>;
+          if constexpr (std::is_same_v<T, double>) return "number";
+          else if constexpr (std::is_same_v<T, bool>) return "boolean";
+          else if constexpr (std::is_same_v<T, std::uint64_t>) return "integer";
+          else if constexpr (std::is_same_v<T, std::string>) return "string";
+          else if constexpr (std::is_same_v<T, std::vector<std::string>>) return "list of strings";
+          else return "list of integers";
+        },
+        f.member);
+    schema.push_back({{"name", f.name}, {"type", type}, {"unit", f.unit}, {"meaning", f.meaning}});
+  }
+  return schema;
+}
+
+}  // namespace wiggle

@@ -1,0 +1,64 @@
+#pragma once
+// summary.json, typed: what a finished run reports (docs/OUTPUT-FORMATS.md). One table of fields
+// (name, unit, meaning, member) writes the file, reads it back (the sweep's results table), and is
+// the schema the Python package reads (docs/summary-schema.json, checked against this table by a
+// test), so the three cannot drift apart.
+#include <cstdint>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace wiggle {
+
+struct RunSummary {
+  // the rise rate (analysis/RiseRate.h)
+  double vy = 0.0, vySlope = 0.0;
+  std::string vyRule;
+  bool plateau = false;
+  double tInitial = 0.0, tFinal = 0.0, yInitial = 0.0, yFinal = 0.0, yStart = 0.0;
+  double vyWindowPeriods = 0.0, averagedFromT = 0.0;
+  std::vector<std::string> warnings;
+  // the blow-up detector (docs/RELIABILITY.md, section 7)
+  double overlapMargin = 0.0, speedMargin = 0.0;
+  std::string status;  // "ok"
+  // size and cost
+  std::uint64_t grains = 0, particles = 0, steps = 0, threads = 0;
+  double wallSeconds = 0.0, runWallSeconds = 0.0, bedWallSeconds = 0.0;
+  bool bedFromCache = false;
+  std::string bedKey;
+  double nsPerParticleStep = 0.0;
+  std::string stateHash;
+  // engine diagnostics at the end of the run
+  std::uint64_t neighbourPairs = 0, contacts = 0, intruderPairs = 0;
+  double stateBytesPerGrain = 0.0;
+  // the case's parameters again, for convenience
+  std::string shape;
+  double amplitude = 0.0, period = 0.0, mu = 0.0;
+  std::vector<std::uint64_t> fieldFrames;  // frames averaged per fields.phases entry
+  std::string version;                     // of the wiggle that wrote it
+};
+
+struct SummaryField {
+  const char* name;     // the JSON key
+  const char* unit;     // "" for none
+  const char* meaning;  // one line
+  std::variant<double RunSummary::*, bool RunSummary::*, std::uint64_t RunSummary::*, std::string RunSummary::*,
+               std::vector<std::string> RunSummary::*, std::vector<std::uint64_t> RunSummary::*>
+      member;
+};
+
+// Every field, in the file's order.
+const std::vector<SummaryField>& summaryFields();
+
+nlohmann::json toJson(const RunSummary& summary);
+
+// Reads a summary.json object; a key that is missing keeps its default (files written by an older
+// wiggle), a key of the wrong type throws wiggle::Error naming it.
+RunSummary summaryFromJson(const nlohmann::json& json);
+
+// The schema as JSON: [{"name", "type", "unit", "meaning"}, ...] (docs/summary-schema.json).
+nlohmann::json summarySchema();
+
+}  // namespace wiggle

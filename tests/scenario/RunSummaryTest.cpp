@@ -1,0 +1,67 @@
+// summary.json's one table (scenario/RunSummary.h): it writes and reads the file, and it is the
+// schema the documents and the Python package use.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "core/Error.h"
+#include "scenario/RunSummary.h"
+
+namespace wiggle {
+namespace {
+
+std::string sourceFile(const std::string& relative) {
+  std::ifstream in(std::string(WIGGLE_SOURCE_DIR) + "/" + relative);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+TEST(RunSummary, ReadsBackWhatItWrites) {
+  RunSummary s;
+  s.vy = 0.0886;
+  s.plateau = true;
+  s.warnings = {"one", "two"};
+  s.steps = 1000000;
+  s.stateHash = "6308a1dc6fb47752";
+  s.fieldFrames = {3, 4};
+  const nlohmann::json j = toJson(s);
+  EXPECT_EQ(j["vy"], 0.0886);
+  EXPECT_EQ(j["state_hash"], "6308a1dc6fb47752");
+  EXPECT_EQ(toJson(summaryFromJson(j)), j);
+}
+
+TEST(RunSummary, MissingKeysKeepTheirDefaultsAndWrongTypesAreNamed) {
+  const RunSummary old = summaryFromJson(nlohmann::json{{"vy", 0.5}, {"status", "ok"}});
+  EXPECT_EQ(old.vy, 0.5);
+  EXPECT_EQ(old.status, "ok");
+  EXPECT_TRUE(old.warnings.empty());
+  try {
+    summaryFromJson(nlohmann::json{{"steps", "many"}});
+    FAIL() << "expected an error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("'steps'"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(summaryFromJson(nlohmann::json::array()), Error);
+}
+
+// The schema file the Python package reads is this table; on a change, replace
+// docs/summary-schema.json by the text this test prints.
+TEST(RunSummary, SchemaFileIsTheTable) {
+  const std::string expected = summarySchema().dump(2) + "\n";
+  EXPECT_EQ(sourceFile("docs/summary-schema.json"), expected) << "docs/summary-schema.json should be:\n" << expected;
+}
+
+// docs/OUTPUT-FORMATS.md names every key of summary.json.
+TEST(RunSummary, EveryKeyIsDocumented) {
+  const std::string doc = sourceFile("docs/OUTPUT-FORMATS.md");
+  const auto begin = doc.find("### `summary.json`");
+  ASSERT_NE(begin, std::string::npos);
+  const std::string section = doc.substr(begin, doc.find("\n### ", begin + 1) - begin);
+  for (const SummaryField& f : summaryFields())
+    EXPECT_NE(section.find(std::string("`") + f.name + "`"), std::string::npos) << f.name;
+}
+
+}  // namespace
+}  // namespace wiggle
