@@ -7,6 +7,7 @@
 #include "Commands.h"
 #include "PathChecks.h"
 #include "core/Error.h"
+#include "core/Format.h"
 #include "io/AtomicFile.h"
 #include "io/Config.h"
 #include "scenario/BedMaker.h"
@@ -28,14 +29,6 @@ struct RunArgs {
   bool check = false;
 };
 
-std::string duration(double seconds) {
-  char text[32];
-  if (seconds < 120) std::snprintf(text, sizeof text, "%.0f s", seconds);
-  else if (seconds < 7200) std::snprintf(text, sizeof text, "%.0f min", seconds / 60);
-  else std::snprintf(text, sizeof text, "%.1f h", seconds / 3600);
-  return text;
-}
-
 // `run --check`: everything `wiggle run` checks before it starts (the config, the outline, the
 // clump, the geometry, the output directory), then what the run would be, without running it.
 void printCheck(const RunConfig& c, const std::string& out, bool resume) {
@@ -53,11 +46,11 @@ void printCheck(const RunConfig& c, const std::string& out, bool resume) {
     std::printf("bed %s: cached (%s)\n", key.c_str(), bedPath.c_str());
   else
     std::printf("bed %s: not cached, making it takes about %s on one core (estimate)\n", key.c_str(),
-                duration(estimatedBedSeconds(c, ns)).c_str());
+                formatDuration(estimatedBedSeconds(c, ns)).c_str());
   std::printf("run: %llu steps (t = %g at dt = %g), about %s on one core at %g ns per particle-step "
               "(estimate: docs/PERFORMANCE.md has this machine's figures)\n",
               static_cast<unsigned long long>(steps), c.run.duration, c.run.dt,
-              duration(estimatedRunSeconds(c, ns)).c_str(), ns);
+              formatDuration(estimatedRunSeconds(c, ns)).c_str(), ns);
   const bool finished = std::filesystem::exists(out + "/summary.json");
   const bool started = std::filesystem::exists(checkpointPath(out));
   std::printf("out: %s (%s)\n", out.c_str(),

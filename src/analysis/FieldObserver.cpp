@@ -9,6 +9,7 @@
 #include <omp.h>
 
 #include "core/Error.h"
+#include "core/Format.h"
 #include "io/AtomicFile.h"
 #include "physics/World.h"
 
@@ -17,12 +18,6 @@ namespace {
 
 constexpr std::size_t kMaxPointsPerSide = 4001;
 constexpr std::uint32_t kSaveVersion = 1;
-
-std::string fmt(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.10g", v);
-  return buf;
-}
 
 // x into [-W/2, W/2]: the minimum image of a separation in the periodic direction.
 double wrap(double dx, double width) { return dx - width * std::round(dx / width); }
@@ -85,13 +80,13 @@ void FieldObserver::Grid::zero() {
 
 FieldObserver::FieldObserver(const FieldsDef& def, double boxWidth) : def_(def), boxWidth_(boxWidth) {
   if (!(def.width > 0) || !std::isfinite(def.width))
-    throw Error("fields.width must be > 0, got " + fmt(def.width));
+    throw Error("fields.width must be > 0, got " + formatNumber(def.width, 10));
   if (!(def.spacing > 0) || !std::isfinite(def.spacing))
-    throw Error("fields.spacing must be > 0, got " + fmt(def.spacing));
+    throw Error("fields.spacing must be > 0, got " + formatNumber(def.spacing, 10));
   if (!(def.radius >= 0) || !std::isfinite(def.radius))
-    throw Error("fields.radius must be >= 0, got " + fmt(def.radius));
+    throw Error("fields.radius must be >= 0, got " + formatNumber(def.radius, 10));
   if (!(boxWidth > 0) || !std::isfinite(boxWidth))
-    throw Error("fields: box width must be > 0, got " + fmt(boxWidth));
+    throw Error("fields: box width must be > 0, got " + formatNumber(boxWidth, 10));
   const double steps = 2.0 * def.radius / def.spacing;
   if (steps + 1.0 > static_cast<double>(kMaxPointsPerSide))
     throw Error("fields.radius / fields.spacing gives more than " + std::to_string(kMaxPointsPerSide) +
@@ -127,8 +122,8 @@ void FieldObserver::addFrameAt(const World& world, std::size_t phaseIndex, doubl
     throw Error("fields: phase index " + std::to_string(phaseIndex) + " out of range (" +
                 std::to_string(frames_.size()) + " phases)");
   if (world.def().boxWidth != boxWidth_)
-    throw Error("fields: the world's box width " + fmt(world.def().boxWidth) +
-                " differs from the observer's " + fmt(boxWidth_));
+    throw Error("fields: the world's box width " + formatNumber(world.def().boxWidth, 10) +
+                " differs from the observer's " + formatNumber(boxWidth_, 10));
   const NeighbourList& list = world.neighbours();
   if (list.forceX.size() < list.pairCount() || list.forceY.size() < list.pairCount() ||
       list.owner.size() < list.pairCount())

@@ -8,6 +8,7 @@
 #include <type_traits>
 
 #include "core/Assert.h"
+#include "core/Format.h"
 #include "core/Hash.h"
 
 #include <omp.h>
@@ -17,13 +18,6 @@ namespace wiggle {
 namespace {
 
 constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
-
-std::string fmt(double v) {
-  std::ostringstream s;
-  s.precision(6);
-  s << v;
-  return s.str();
-}
 
 void requireFinite(double v, const char* what) {
   if (!std::isfinite(v)) throw Error(std::string(what) + " is not a finite number");
@@ -106,8 +100,8 @@ double hertzContactTime(double kn, double radius, double mass, double speed) {
 
 World::World(const WorldDef& def) : def_(def) {
   requireFinite(def.boxWidth, "box width");
-  if (def.boxWidth <= 0) throw Error("box width must be > 0, got " + fmt(def.boxWidth));
-  if (!(def.dt > 0) || !std::isfinite(def.dt)) throw Error("time step must be > 0, got " + fmt(def.dt));
+  if (def.boxWidth <= 0) throw Error("box width must be > 0, got " + formatNumber(def.boxWidth));
+  if (!(def.dt > 0) || !std::isfinite(def.dt)) throw Error("time step must be > 0, got " + formatNumber(def.dt));
   if (!(def.density > 0) || !std::isfinite(def.density)) throw Error("density must be > 0");
   if (!std::isfinite(def.gravity) || def.gravity < 0) throw Error("gravity must be >= 0");
   const ContactParams& c = def.contact;
@@ -185,10 +179,10 @@ std::uint32_t World::addGrain(double x, double y, double radius, double vx, doub
   requireFinite(vx, "grain vx");
   requireFinite(vy, "grain vy");
   requireFinite(omega, "grain omega");
-  if (!(radius > 0) || !std::isfinite(radius)) throw Error("grain radius must be > 0, got " + fmt(radius));
+  if (!(radius > 0) || !std::isfinite(radius)) throw Error("grain radius must be > 0, got " + formatNumber(radius));
   if (x < 0 || x >= def_.boxWidth)
-    throw Error("grain at x = " + fmt(x) + " is outside the periodic box [0, " + fmt(def_.boxWidth) + ")");
-  if (y < 0) throw Error("grain at y = " + fmt(y) + " is below the base (y = 0)");
+    throw Error("grain at x = " + formatNumber(x) + " is outside the periodic box [0, " + formatNumber(def_.boxWidth) + ")");
+  if (y < 0) throw Error("grain at y = " + formatNumber(y) + " is below the base (y = 0)");
   invalidate();
   const double mass = particleMass(def_.massModel, def_.density, radius);
   const double invInertia = 1.0 / (inertiaCoefficient(def_.massModel) * mass * radius * radius);
@@ -210,7 +204,7 @@ void World::addFrozen(double x, double y, double radius) {
   requireFinite(y, "frozen particle y");
   if (!(radius > 0) || !std::isfinite(radius)) throw Error("frozen particle radius must be > 0");
   if (x < 0 || x >= def_.boxWidth)
-    throw Error("frozen particle at x = " + fmt(x) + " is outside the periodic box");
+    throw Error("frozen particle at x = " + formatNumber(x) + " is outside the periodic box");
   invalidate();
   const double mass = particleMass(def_.massModel, def_.density, radius);
   store_.append(x, y, 0.0, 0.0, 0.0, radius, mass, 0.0, 0.0, nextTag_++);
@@ -562,9 +556,9 @@ void World::checkTimeStep() const {
   const double contactTime = hertzContactTime(def_.contact.kn, s.radius[lightest], s.mass[lightest], speed);
   const double limit = contactTime / def_.minStepsPerContact;
   if (def_.dt > limit)
-    throw Error("run.dt = " + fmt(def_.dt) + " is too large: a Hertz contact between the lightest grains (d = " +
-                fmt(2 * s.radius[lightest]) + ") at impact speed " + fmt(speed) + " lasts " + fmt(contactTime) +
-                ", which needs dt <= " + fmt(limit) + " (" + fmt(def_.minStepsPerContact) + " steps per contact)");
+    throw Error("run.dt = " + formatNumber(def_.dt) + " is too large: a Hertz contact between the lightest grains (d = " +
+                formatNumber(2 * s.radius[lightest]) + ") at impact speed " + formatNumber(speed) + " lasts " + formatNumber(contactTime) +
+                ", which needs dt <= " + formatNumber(limit) + " (" + formatNumber(def_.minStepsPerContact) + " steps per contact)");
 }
 
 // The full scan of the blow-up detector (docs/RELIABILITY.md, "The blow-up detector"). Each bound
@@ -572,7 +566,7 @@ void World::checkTimeStep() const {
 // drive: it stops a run whose numbers no longer mean anything, never a run that is merely extreme.
 void World::checkHealth() {
   const ParticleStore& s = store_;
-  const std::string at = "step " + std::to_string(step_) + " (t = " + fmt(time()) + "): ";
+  const std::string at = "step " + std::to_string(step_) + " (t = " + formatNumber(time()) + "): ";
   const std::string cure = " (the simulation blew up: reduce run.dt)";
   const double maxSpeed = speedBound();
   double fastestSq = 0.0;
@@ -583,12 +577,12 @@ void World::checkHealth() {
       throw SimulationError(at + "grain " + std::to_string(s.tag[i]) + " has a non-finite position or velocity" + cure);
     if (s.y[i] < 0.0)
       throw SimulationError(at + "grain " + std::to_string(s.tag[i]) + " fell through the base (y = " +
-                            fmt(s.y[i]) + ")" + cure);
+                            formatNumber(s.y[i]) + ")" + cure);
     const double speedSq = s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i];
     if (speedSq > maxSpeed * maxSpeed)
-      throw SimulationError(at + "grain " + std::to_string(s.tag[i]) + " moves at " + fmt(std::sqrt(speedSq)) +
-                            " sqrt(g d), more than " + fmt(def_.maxSpeedFactor) +
-                            " times the fastest the fall or the drive can make it (" + fmt(maxSpeed / def_.maxSpeedFactor) +
+      throw SimulationError(at + "grain " + std::to_string(s.tag[i]) + " moves at " + formatNumber(std::sqrt(speedSq)) +
+                            " sqrt(g d), more than " + formatNumber(def_.maxSpeedFactor) +
+                            " times the fastest the fall or the drive can make it (" + formatNumber(maxSpeed / def_.maxSpeedFactor) +
                             "): energy grew without a source" + cure);
     fastestSq = std::max(fastestSq, speedSq);
   }
@@ -605,8 +599,8 @@ void World::checkHealth() {
     const double overlap = ri + rj - std::sqrt(dx * dx + dy * dy);
     const double allowed = def_.maxOverlapRatio * boundRadius;
     if (overlap > allowed)
-      throw SimulationError(at + "grain " + std::to_string(tag) + " overlaps " + what + " by " + fmt(overlap) +
-                            " d, more than " + fmt(def_.maxOverlapRatio) + " of the radius " + fmt(boundRadius) +
+      throw SimulationError(at + "grain " + std::to_string(tag) + " overlaps " + what + " by " + formatNumber(overlap) +
+                            " d, more than " + formatNumber(def_.maxOverlapRatio) + " of the radius " + formatNumber(boundRadius) +
                             ": it is passing through" + cure);
     deepest = std::max(deepest, overlap / allowed);
   };

@@ -8,6 +8,7 @@
 #include <numbers>
 #include <optional>
 
+#include "core/Format.h"
 #include "core/Hash.h"
 #include "core/Rng.h"
 #include "core/StopSignal.h"
@@ -374,6 +375,12 @@ World finishBed(const RunConfig& config, const ClumpDef& clump, PartialBed p, co
 }
 
 }  // namespace
+
+std::string bedStatusLine(const BedStatus& s, double targetHeight) {
+  return "[bed] " + s.stage + " batch " + std::to_string(s.batch) + ", " + std::to_string(s.grains) +
+         " grains, surface " + formatNumber(s.surface) + " / " + formatNumber(targetHeight) + ", t = " +
+         formatNumber(s.time) + (s.stage == "relaxing" ? ", KE/grain " + formatNumber(s.kineticPerGrain) : "");
+}
 
 World makeBed(const RunConfig& config, const ClumpDef& clump, const BedProgress& progress) {
   return finishBed(config, clump, startBed(config, clump), progress, [](const PartialBed&) {});

@@ -25,6 +25,9 @@ struct BedStatus {
 };
 using BedProgress = std::function<void(const BedStatus&)>;
 
+// The status as one line of text: "[bed] pouring batch 5, 4590 grains, surface 59.1 / 195, t = 33.8".
+std::string bedStatusLine(const BedStatus& status, double targetHeight);
+
 // The engine parameters of a run config (everything but the particles).
 WorldDef worldDefFor(const RunConfig& config);
 

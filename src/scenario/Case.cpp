@@ -6,23 +6,18 @@
 #include <numbers>
 
 #include "core/Error.h"
+#include "core/Format.h"
 #include "io/Config.h"
 
 namespace wiggle {
 
 namespace {
 
-std::string number(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", v);
-  return text;
-}
-
 // The count of run.dt steps in an interval io/Config has already checked to be whole.
 std::uint64_t stepsOf(double interval, double dt, const char* key) {
   const std::uint64_t steps = wholeStepsIn(interval, dt);
   if (steps == 0)  // only a config that bypassed validateRunConfig gets here
-    throw Error(std::string(key) + " = " + number(interval) + " is not a whole number of run.dt = " + number(dt) +
+    throw Error(std::string(key) + " = " + formatNumber(interval) + " is not a whole number of run.dt = " + formatNumber(dt) +
                 " steps");
   return steps;
 }
@@ -30,8 +25,8 @@ std::uint64_t stepsOf(double interval, double dt, const char* key) {
 void checkGeometry(const RunConfig& config, const ClumpDef& clump) {
   constexpr double kMaxGrains = 5e7;
   if (const double grains = estimatedGrains(config); grains > kMaxGrains)
-    throw Error("box.width x box.bed_height = " + number(config.box.width) + " x " + number(config.box.bedHeight) +
-                " needs about " + number(grains) + " grains, more than the " + number(kMaxGrains) + " wiggle accepts");
+    throw Error("box.width x box.bed_height = " + formatNumber(config.box.width) + " x " + formatNumber(config.box.bedHeight) +
+                " needs about " + formatNumber(grains) + " grains, more than the " + formatNumber(kMaxGrains) + " wiggle accepts");
   double minX = 0, maxX = 0, minY = 0, maxY = 0;
   for (std::size_t a = 0; a < clump.offsetX.size(); ++a) {
     minX = std::min(minX, clump.offsetX[a] - clump.atomRadius);
@@ -44,16 +39,16 @@ void checkGeometry(const RunConfig& config, const ClumpDef& clump) {
   // periodic boundary, so it never meets itself.
   const double needed = width + 2.0 * config.drive.amplitude + 4.0 * config.grains.dMax;
   if (config.box.width < needed)
-    throw Error("box.width = " + number(config.box.width) + " is too narrow for the " + config.intruder.shape + " (" +
-                number(width) + " wide) moving +-" + number(config.drive.amplitude) + ": need at least " +
-                number(std::ceil(needed)));
+    throw Error("box.width = " + formatNumber(config.box.width) + " is too narrow for the " + config.intruder.shape + " (" +
+                formatNumber(width) + " wide) moving +-" + formatNumber(config.drive.amplitude) + ": need at least " +
+                formatNumber(std::ceil(needed)));
   const double bottom = config.intruder.y0 + minY, top = config.intruder.y0 + maxY;
   if (bottom < 0.5 + 2.0 * config.grains.dMax)
-    throw Error("intruder.y0 = " + number(config.intruder.y0) + " puts the intruder's bottom at y = " + number(bottom) +
+    throw Error("intruder.y0 = " + formatNumber(config.intruder.y0) + " puts the intruder's bottom at y = " + formatNumber(bottom) +
                 ", too near the base: need at least two grain layers below it");
   if (top > config.box.bedHeight - 2.0 * config.grains.dMax)
-    throw Error("intruder.y0 = " + number(config.intruder.y0) + " puts the intruder's top at y = " + number(top) +
-                ", outside or too near the top of the bed (box.bed_height = " + number(config.box.bedHeight) +
+    throw Error("intruder.y0 = " + formatNumber(config.intruder.y0) + " puts the intruder's top at y = " + formatNumber(top) +
+                ", outside or too near the top of the bed (box.bed_height = " + formatNumber(config.box.bedHeight) +
                 "): need at least two grain layers above it");
 }
 
@@ -73,9 +68,9 @@ Case prepareCase(const RunConfig& config) {
   const OutlineBox box = boundingBox(c.shape.outline);
   if (!(box.width() <= config.box.width && box.height() <= config.box.bedHeight))
     throw Error(std::string(config.intruder.shape == "polygon" ? "intruder.vertices" : "intruder.shape") +
-                ": the outline is " + number(box.width()) + " x " + number(box.height()) +
-                ", larger than the bed (box.width = " + number(config.box.width) +
-                ", box.bed_height = " + number(config.box.bedHeight) + ")");
+                ": the outline is " + formatNumber(box.width()) + " x " + formatNumber(box.height()) +
+                ", larger than the bed (box.width = " + formatNumber(config.box.width) +
+                ", box.bed_height = " + formatNumber(config.box.bedHeight) + ")");
   c.clump = makeClump(config.intruder, c.shape, config.grains.massModel, 1.0);
   checkGeometry(config, c.clump);
 

@@ -1,12 +1,10 @@
 #include "scenario/Experiment.h"
 
 #include <omp.h>
-#include <unistd.h>
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
@@ -15,7 +13,9 @@
 
 #include "analysis/FieldObserver.h"
 #include "analysis/RiseRate.h"
+#include "core/Console.h"
 #include "core/Error.h"
+#include "core/Format.h"
 #include "core/StopSignal.h"
 #include "io/AtomicFile.h"
 #include "io/Config.h"
@@ -34,76 +34,11 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double secondsSince(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-std::string number(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", v);
-  return text;
-}
-
-std::string duration(double seconds) {
-  char text[32];
-  if (seconds < 0 || !std::isfinite(seconds)) return "?";
-  const long s = std::lround(seconds);
-  if (s >= 3600) std::snprintf(text, sizeof text, "%ldh%02ldm", s / 3600, (s % 3600) / 60);
-  else if (s >= 60) std::snprintf(text, sizeof text, "%ldm%02lds", s / 60, s % 60);
-  else std::snprintf(text, sizeof text, "%lds", s);
-  return text;
-}
-
-// Appends timestamped lines to DIR/log.txt.
-class RunLog {
- public:
-  explicit RunLog(const std::string& path) : out_(path, std::ios::app) {}
-  void line(const std::string& text) {
-    const std::time_t now = std::time(nullptr);
-    char stamp[32];
-    std::strftime(stamp, sizeof stamp, "%Y-%m-%d %H:%M:%S", std::localtime(&now));
-    out_ << stamp << "  " << text << '\n';
-    out_.flush();
-  }
-
- private:
-  std::ofstream out_;
-};
-
-// Progress: a rewritten line on a terminal, otherwise a log line every 30 s.
-class Progress {
- public:
-  Progress(bool enabled, RunLog& log) : terminal_(enabled && ::isatty(STDERR_FILENO)), log_(log) {}
-  void update(const std::string& text) {
-    const double now = secondsSince(start_);
-    if (terminal_ && now - lastTerminal_ >= 0.5) {
-      std::fprintf(stderr, "\r\033[K%s", text.c_str());
-      std::fflush(stderr);
-      lastTerminal_ = now;
-    }
-    if (now - lastLog_ >= 30.0) {
-      log_.line(text);
-      lastLog_ = now;
-    }
-  }
-  void finish() {
-    if (terminal_) std::fprintf(stderr, "\r\033[K");
-  }
-
- private:
-  bool terminal_;
-  RunLog& log_;
-  Clock::time_point start_ = Clock::now();
-  double lastTerminal_ = -1.0, lastLog_ = 0.0;
-};
-
-std::string csvNumber(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.10g", v);
-  return text;
-}
-
 void writeTrajectory(const std::string& path, const std::vector<TrajectorySample>& samples) {
   std::string out = "t,x,y,vx,vy,fy\n";
   for (const auto& s : samples)
-    out += csvNumber(s.t) + ',' + csvNumber(s.x) + ',' + csvNumber(s.y) + ',' + csvNumber(s.vx) + ',' +
-           csvNumber(s.vy) + ',' + csvNumber(s.fy) + '\n';
+    out += formatNumber(s.t, 10) + ',' + formatNumber(s.x, 10) + ',' + formatNumber(s.y, 10) + ',' + formatNumber(s.vx, 10) + ',' +
+           formatNumber(s.vy, 10) + ',' + formatNumber(s.fy, 10) + '\n';
   writeFileAtomically(path, out);
 }
 
@@ -111,8 +46,8 @@ void writePhaseRates(const std::string& path, const RunState& state) {
   std::string out = "bin,phase_center,vy_mean,samples\n";
   for (int b = 0; b < kPhaseBins; ++b) {
     const std::uint64_t n = state.phaseCount[b];
-    out += std::to_string(b) + ',' + csvNumber(b + 0.5) + ',' +
-           (n ? csvNumber(state.phaseSum[b] / static_cast<double>(n)) : std::string()) + ',' + std::to_string(n) + '\n';
+    out += std::to_string(b) + ',' + formatNumber(b + 0.5, 10) + ',' +
+           (n ? formatNumber(state.phaseSum[b] / static_cast<double>(n), 10) : std::string()) + ',' + std::to_string(n) + '\n';
   }
   writeFileAtomically(path, out);
 }
@@ -172,7 +107,7 @@ RunOutcome runExperiment(const Case& run, const RunOptions& options) {
   }
   if (options.resume) removeLeftoverTemporaries(dir);  // of a run killed while writing a file
   writeFileAtomically(dir + "/config.toml", configToml);
-  RunLog log(dir + "/log.txt");
+  LogFile log(dir + "/log.txt");
   log.line(std::string("wiggle ") + WIGGLE_VERSION + (options.resume ? " run --resume" : " run") + " in " + dir +
            " with " + std::to_string(omp_get_max_threads()) + " threads");
 
@@ -198,7 +133,8 @@ RunOutcome runExperiment(const Case& run, const RunOptions& options) {
   }
 
   const std::string dumpPath = dir + "/dumps/dump.lammpstrj";
-  Progress progress(options.progressLine, log);
+  // A rewritten line on a terminal; the log gets it every 30 s.
+  ProgressLine progress(options.progressLine, [&log](const std::string& text) { log.line(text); }, 30.0);
   // SIGINT/SIGTERM while the bed is made or the run steps: save the bed in the making or a
   // checkpoint, then stop. Not while the outputs are written: there they stop the process at once.
   std::optional<StopSignalGuard> stopOnSignal;
@@ -208,18 +144,16 @@ RunOutcome runExperiment(const Case& run, const RunOptions& options) {
     std::optional<CachedBed> obtained;
     try {
       obtained.emplace(obtainBed(config, run.clump, [&](const BedStatus& s) {
-        progress.update("[bed] " + s.stage + " batch " + std::to_string(s.batch) + ", " + std::to_string(s.grains) +
-                        " grains, surface " + number(s.surface) + " / " + number(config.box.bedHeight) + ", t = " +
-                        number(s.time) + (s.stage == "relaxing" ? ", KE/grain " + number(s.kineticPerGrain) : "") +
-                        ", " + duration(secondsSince(bedStart)) + " elapsed");
+        progress.update(bedStatusLine(s, config.box.bedHeight) + ", " + formatDuration(secondsSince(bedStart)) +
+                        " elapsed");
       }));
     } catch (const Error& e) {  // interrupted (the bed so far is saved) or failed: say so in the log too
-      progress.finish();
+      progress.clear();
       log.line(e.what());
       throw;
     }
     CachedBed& bed = *obtained;
-    progress.finish();
+    progress.clear();
     state.bedWallSeconds = secondsSince(bedStart);
     state.bedKey = bed.key;
     state.bedFromCache = bed.fromCache;
@@ -228,8 +162,8 @@ RunOutcome runExperiment(const Case& run, const RunOptions& options) {
       std::fprintf(stderr, "wiggle: warning: %s\n", bed.note.c_str());
     }
     log.line(std::string(bed.fromCache ? "bed loaded from " : "bed made and cached at ") + bed.path + " (" +
-             std::to_string(bed.world.grainCount()) + " grains, surface " + number(freeSurfaceHeight(bed.world)) +
-             ", " + number(state.bedWallSeconds) + " s)");
+             std::to_string(bed.world.grainCount()) + " grains, surface " + formatNumber(freeSurfaceHeight(bed.world)) +
+             ", " + formatNumber(state.bedWallSeconds) + " s)");
     loaded.emplace(std::move(bed.world));
     if (!config.run.keepBedHistory) loaded->clearContactHistory();
     startDrive(*loaded, run);
@@ -285,16 +219,16 @@ RunOutcome runExperiment(const Case& run, const RunOptions& options) {
         const double eta = done > 0 ? state.runWallSeconds / static_cast<double>(step) *
                                           static_cast<double>(steps.total - step)
                                     : -1.0;
-        progress.update("[run] " + number(100.0 * static_cast<double>(step) / static_cast<double>(steps.total)) +
-                        "%  t = " + number(world.time()) + " / " + number(config.run.duration) + "  ETA " +
-                        duration(eta) + "  " + number(nsPerParticleStep) + " ns/particle-step  y = " +
-                        number(world.intruder().y));
+        progress.update("[run] " + formatNumber(100.0 * static_cast<double>(step) / static_cast<double>(steps.total)) +
+                        "%  t = " + formatNumber(world.time()) + " / " + formatNumber(config.run.duration) + "  ETA " +
+                        formatDuration(eta) + "  " + formatNumber(nsPerParticleStep) + " ns/particle-step  y = " +
+                        formatNumber(world.intruder().y));
         if (const int signal = stopSignalReceived(); signal != 0) {
           writeCheckpoint(dir, configToml, world, state, fields);
-          progress.finish();
+          progress.clear();
           log.line("interrupted by signal " + std::to_string(signal) + " at step " + std::to_string(step) +
                    "; checkpoint written");
-          throw Error("interrupted at t = " + number(world.time()) + "; continue with: wiggle run --out " + dir +
+          throw Error("interrupted at t = " + formatNumber(world.time()) + "; continue with: wiggle run --out " + dir +
                       " --resume");
         }
         if (secondsSince(lastCheckpoint) >= config.run.checkpointInterval) {
@@ -305,16 +239,16 @@ RunOutcome runExperiment(const Case& run, const RunOptions& options) {
       }
       if (options.stopAfterSteps && step - startStep >= options.stopAfterSteps) {
         if (options.checkpointAtStop) writeCheckpoint(dir, configToml, world, state, fields);
-        progress.finish();
+        progress.clear();
         outcome.status = "stopped";
         return outcome;
       }
     }
   } catch (...) {
-    progress.finish();
+    progress.clear();
     throw;
   }
-  progress.finish();
+  progress.clear();
   state.runWallSeconds += secondsSince(chunkStart);
   writeCheckpoint(dir, configToml, world, state, fields);
   stopOnSignal.reset();
@@ -327,9 +261,9 @@ RunOutcome runExperiment(const Case& run, const RunOptions& options) {
 
   std::vector<std::string> warnings;
   if (rate.windowTooShort())
-    warnings.push_back("V_y is measured over " + number(rate.windowPeriods) + " drive periods (t = " +
-                       number(rate.tInitial) + " to " + number(rate.tFinal) + "), fewer than " +
-                       number(RiseRate::kMinWindowPeriods) + ": it reflects the phase of the drive more than a drift; " +
+    warnings.push_back("V_y is measured over " + formatNumber(rate.windowPeriods) + " drive periods (t = " +
+                       formatNumber(rate.tInitial) + " to " + formatNumber(rate.tFinal) + "), fewer than " +
+                       formatNumber(RiseRate::kMinWindowPeriods) + ": it reflects the phase of the drive more than a drift; " +
                        "run longer (run.duration)");
   // Phase rates and field frames accumulate one step per step from 0.1 t_total on; a run extended
   // (resumed with a longer run.duration) began at 0.1 of its first duration. Where that window
@@ -338,8 +272,8 @@ RunOutcome runExperiment(const Case& run, const RunOptions& options) {
   for (const std::uint64_t n : state.phaseCount) accumulated += n;
   const double averagedFrom = static_cast<double>(world.stepCount() - accumulated) * config.run.dt;
   if (std::fabs(averagedFrom - rate.tInitial) > 0.5 * config.run.sampleInterval)
-    warnings.push_back("phase_rates.csv and fields.csv average from t = " + number(averagedFrom) + ", V_y from t = " +
-                       number(rate.tInitial) + ": the run was extended (resumed with a longer run.duration); the "
+    warnings.push_back("phase_rates.csv and fields.csv average from t = " + formatNumber(averagedFrom) + ", V_y from t = " +
+                       formatNumber(rate.tInitial) + ": the run was extended (resumed with a longer run.duration); the "
                        "trajectory, V_y and the final state are those of a run this long from the start");
 
   RunSummary summary;
@@ -382,8 +316,8 @@ RunOutcome runExperiment(const Case& run, const RunOptions& options) {
   for (std::size_t p = 0; p < config.fields.phases.size(); ++p) summary.fieldFrames.push_back(fields.frames(p));
   summary.version = WIGGLE_VERSION;
   writeFileAtomically(dir + "/summary.json", toJson(summary).dump(2) + "\n");
-  log.line("done: vy = " + number(rate.vy) + ", slope = " + number(rate.slope) + ", " +
-           number(summary.nsPerParticleStep) + " ns/particle-step, state " + world.stateHash());
+  log.line("done: vy = " + formatNumber(rate.vy) + ", slope = " + formatNumber(rate.slope) + ", " +
+           formatNumber(summary.nsPerParticleStep) + " ns/particle-step, state " + world.stateHash());
   for (const std::string& w : warnings) log.line("warning: " + w);
   outcome.status = "ok";
   outcome.vy = rate.vy;

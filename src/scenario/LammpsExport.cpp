@@ -1,15 +1,14 @@
 #include "scenario/LammpsExport.h"
 
-#include <unistd.h>
-
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <numbers>
 
+#include "core/Console.h"
 #include "core/Error.h"
+#include "core/Format.h"
 #include "core/StopSignal.h"
 #include "io/AtomicFile.h"
 #include "scenario/BedMaker.h"
@@ -22,11 +21,7 @@ namespace {
 
 // Shortest text that reads back as the same double is not needed here: %.17g always round-trips,
 // and LAMMPS reads numbers with strtod/atof, so every value reaches LAMMPS bit for bit.
-std::string num(double v) {
-  char text[40];
-  std::snprintf(text, sizeof text, "%.17g", v);
-  return text;
-}
+std::string num(double v) { return formatNumber(v, 17); }
 
 // The same wrap as World::rebuildNeighbours, so that withoutContactHistory and the data file hold
 // the very same bits.
@@ -211,22 +206,17 @@ LammpsExportResult exportLammps(const Case& run, const std::string& dir, bool pr
   const RunConfig& config = run.config;
   // On a terminal a rewritten status line; otherwise (a log, a benchmark script) a line every 30 s,
   // so that a bed that takes an hour to make shows that it is getting on.
-  const bool terminal = progressLine && ::isatty(STDERR_FILENO);
-  auto lastLine = std::chrono::steady_clock::now();
+  ProgressLine progress(
+      progressLine,
+      [&](const std::string& text) {
+        if (!progress.onTerminal()) std::fprintf(stderr, "%s\n", text.c_str());
+      },
+      30.0);
   const StopSignalGuard stopOnSignal;  // SIGINT/SIGTERM while the bed is made: save it, then stop
   CachedBed bed = obtainBed(config, run.clump, [&](const BedStatus& st) {
-    if (!progressLine) return;
-    const auto now = std::chrono::steady_clock::now();
-    if (!terminal && now - lastLine < std::chrono::seconds(30)) return;
-    lastLine = now;
-    char energy[48] = "";
-    if (st.stage == "relaxing") std::snprintf(energy, sizeof energy, ", KE/grain %.3g", st.kineticPerGrain);
-    std::fprintf(stderr, "%s[bed] %s batch %d, %u grains, surface %.4g / %.4g, t = %.4g%s%s",
-                 terminal ? "\r\033[K" : "", st.stage.c_str(), st.batch, st.grains, st.surface, config.box.bedHeight,
-                 st.time, energy, terminal ? "" : "\n");
-    std::fflush(stderr);
+    if (progressLine) progress.update(bedStatusLine(st, config.box.bedHeight));
   });
-  if (terminal) std::fprintf(stderr, "\r\033[K");
+  progress.clear();
   if (!bed.note.empty()) std::fprintf(stderr, "wiggle: warning: %s\n", bed.note.c_str());
   // Exactly what runExperiment does before its first step.
   World& world = bed.world;

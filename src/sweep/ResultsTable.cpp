@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/Error.h"
+#include "core/Format.h"
 #include "io/AtomicFile.h"
 #include "io/Config.h"
 #include "scenario/RunSummary.h"
@@ -19,12 +20,6 @@ constexpr const char* kAlwaysKeys[] = {"intruder.shape", "drive.amplitude", "dri
 // A [[case]] label comes from SweepSpec under the key "case", which results.csv already uses for
 // the case's full name; its column is called case_label instead.
 std::string columnName(const std::string& key) { return key == "case" ? "case_label" : key; }
-
-std::string number(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.10g", v);
-  return text;
-}
 
 std::vector<std::string> parameterKeys(const SweepSpec& spec) {
   std::vector<std::string> keys = spec.parameterKeys;
@@ -106,8 +101,8 @@ std::string resultsCsv(const SweepSpec& spec, const std::vector<std::string>& ru
     const SweepCase& sc = spec.cases[c];
     const CaseResult& r = results[c];
     const bool ok = r.status == "ok";
-    std::vector<std::string> row = {sc.name, runDirs[c], r.status, ok ? number(r.vy) : "",
-                                    ok ? number(r.vySlope) : "", ok ? number(r.wallSeconds) : ""};
+    std::vector<std::string> row = {sc.name, runDirs[c], r.status, ok ? formatNumber(r.vy, 10) : "",
+                                    ok ? formatNumber(r.vySlope, 10) : "", ok ? formatNumber(r.wallSeconds, 10) : ""};
     for (const std::string& k : keys) {
       std::string value;
       for (const SweepParameter& p : sc.parameters)
@@ -117,7 +112,7 @@ std::string resultsCsv(const SweepSpec& spec, const std::vector<std::string>& ru
     }
     row.push_back(ok ? std::to_string(r.grains) : "");
     row.push_back(ok ? std::to_string(r.steps) : "");
-    row.push_back(ok ? number(r.nsPerParticleStep) : "");
+    row.push_back(ok ? formatNumber(r.nsPerParticleStep, 10) : "");
     row.push_back(ok ? r.stateHash : "");
     row.push_back(r.error);
     appendRow(out, row);

@@ -6,7 +6,6 @@
 #include <sys/file.h>
 #include <unistd.h>
 
-#include <atomic>
 #include <cerrno>
 #include <cmath>
 #include <csignal>
@@ -24,7 +23,9 @@
 #include <sstream>
 #include <thread>
 
+#include "core/Console.h"
 #include "core/Error.h"
+#include "core/Format.h"
 #include "core/StopSignal.h"
 #include "io/AtomicFile.h"
 #include "io/Config.h"
@@ -38,26 +39,6 @@ namespace wiggle {
 namespace fs = std::filesystem;
 
 namespace {
-
-std::atomic<int> gStopSignal{0};
-extern "C" void onStopSignal(int sig) { gStopSignal = sig; }
-
-std::string number(double v, const char* format = "%.4g") {
-  char text[32];
-  std::snprintf(text, sizeof text, format, v);
-  return text;
-}
-
-std::string duration(double seconds) {
-  if (!std::isfinite(seconds) || seconds < 0) return "?";
-  char text[32];
-  const long s = std::lround(seconds);
-  if (s >= 86400) std::snprintf(text, sizeof text, "%ldd%02ldh", s / 86400, (s % 86400) / 3600);
-  else if (s >= 3600) std::snprintf(text, sizeof text, "%ldh%02ldm", s / 3600, (s % 3600) / 60);
-  else if (s >= 60) std::snprintf(text, sizeof text, "%ldm%02lds", s / 60, s % 60);
-  else std::snprintf(text, sizeof text, "%lds", s);
-  return text;
-}
 
 std::string selfExecutable() {
   std::error_code ec;
@@ -98,58 +79,34 @@ class DirectoryLock {
   int fd_ = -1;
 };
 
-// sweep.log, the status line on a terminal, and event lines on stderr otherwise.
+// The sweep's voice: events go to sweep.log and stderr; the status line is rewritten on a terminal
+// and logged (and echoed to stderr when there is no terminal) once a minute.
 class Monitor {
  public:
   Monitor(const std::string& logPath, const SweepOptions& options)
-      : log_(logPath, std::ios::app),
-        terminal_(options.progress && ::isatty(STDERR_FILENO)),
-        echo_(!terminal_ && options.logToStderr) {}
+      : log_(logPath),
+        status_(
+            options.progress,
+            [this](const std::string& text) {
+              log_.line(text);
+              if (echo_) std::fprintf(stderr, "%s\n", text.c_str());
+            },
+            60.0),
+        echo_(!status_.onTerminal() && options.logToStderr) {}
 
   void event(const std::string& text) {
-    const std::time_t now = std::time(nullptr);
-    char stamp[32];
-    std::strftime(stamp, sizeof stamp, "%Y-%m-%d %H:%M:%S", std::localtime(&now));
-    log_ << stamp << "  " << text << '\n';
-    log_.flush();
-    if (terminal_) {
-      std::fprintf(stderr, "\r\033[K%s\n", text.c_str());
-      lastStatus_.clear();
-    } else if (echo_) {
-      std::fprintf(stderr, "%s\n", text.c_str());
-    }
+    log_.line(text);
+    status_.clear();
+    if (status_.onTerminal() || echo_) std::fprintf(stderr, "%s\n", text.c_str());
   }
 
-  // The status line, redrawn at most twice a second (and written to the log once a minute).
-  void status(const std::string& text, bool force = false) {
-    const double now = monotonicSeconds();
-    if (terminal_ && (force || now - lastDraw_ >= 0.5) && text != lastStatus_) {
-      std::fprintf(stderr, "\r\033[K%s", text.c_str());
-      std::fflush(stderr);
-      lastDraw_ = now;
-      lastStatus_ = text;
-    }
-    if (now - lastLogged_ >= 60.0) {
-      lastLogged_ = now;
-      const std::time_t t = std::time(nullptr);
-      char stamp[32];
-      std::strftime(stamp, sizeof stamp, "%Y-%m-%d %H:%M:%S", std::localtime(&t));
-      log_ << stamp << "  " << text << '\n';
-      log_.flush();
-      if (echo_) std::fprintf(stderr, "%s\n", text.c_str());
-    }
-  }
-
-  void clear() {
-    if (terminal_ && !lastStatus_.empty()) std::fprintf(stderr, "\r\033[K");
-    lastStatus_.clear();
-  }
+  void status(const std::string& text, bool force = false) { status_.update(text, force); }
+  void clear() { status_.clear(); }
 
  private:
-  std::ofstream log_;
-  bool terminal_, echo_;
-  double lastDraw_ = -1e9, lastLogged_ = monotonicSeconds();
-  std::string lastStatus_;
+  LogFile log_;
+  ProgressLine status_;
+  bool echo_;
 };
 
 enum class BedState { Waiting, Running, Done, Failed };
@@ -202,9 +159,9 @@ class Coordinator {
 
     while (true) {
       bool progressed = false;
-      if (gStopSignal != 0 && !stopping_) {
+      if (const int signal = stopSignalReceived(); signal != 0 && !stopping_) {
         stopping_ = true;
-        monitor_.event("signal " + std::to_string(gStopSignal.load()) + ": stopping; running cases write a checkpoint");
+        monitor_.event("signal " + std::to_string(signal) + ": stopping; running cases write a checkpoint");
         runner_.signalAll(SIGTERM);
       }
       // Hand out work.
@@ -364,7 +321,7 @@ class Coordinator {
       if (o.ok) {
         bedState_[b] = BedState::Done;
         ++bedsMade_;
-        monitor_.event("bed " + plan_.beds[b].key + " ready" + where + " (" + duration(o.wallSeconds) + ")");
+        monitor_.event("bed " + plan_.beds[b].key + " ready" + where + " (" + formatDuration(o.wallSeconds) + ")");
         return;
       }
       bedState_[b] = BedState::Failed;
@@ -386,8 +343,8 @@ class Coordinator {
     if (o.ok) {
       results_[c] = o.result;
       results_[c].status = "ok";
-      monitor_.event("ok " + name + where + ": vy = " + number(o.result.vy) + ", " + duration(o.wallSeconds) + ", " +
-                     number(o.result.nsPerParticleStep, "%.3g") + " ns/particle-step");
+      monitor_.event("ok " + name + where + ": vy = " + formatNumber(o.result.vy, 4) + ", " + formatDuration(o.wallSeconds) + ", " +
+                     formatNumber(o.result.nsPerParticleStep, 3) + " ns/particle-step");
       return;
     }
     results_[c] = CaseResult{};
@@ -444,7 +401,7 @@ class Coordinator {
                        " running, " + std::to_string(countStatus("failed")) + " failed, " + std::to_string(left) + " left";
     if (!plan_.beds.empty())
       line += ", beds " + std::to_string(bedsMade_) + "/" + std::to_string(plan_.beds.size());
-    line += "  ETA " + duration(remaining / concurrency_) + " (" + number(ns, "%.3g") + " ns/particle-step" +
+    line += "  ETA " + formatDuration(remaining / concurrency_) + " (" + formatNumber(ns, 3) + " ns/particle-step" +
             (ns == CostModel::nsPerParticleStep ? ", assumed)" : ")");
     return line;
   }
@@ -540,7 +497,7 @@ std::string dryRunListing(const SweepPlan& plan, int jobs, int threads) {
     const double seconds = estimatedRunSeconds(c.config, ns);
     char line[512];
     std::snprintf(line, sizeof line, "%3zu  %-42s %-8s %7.0f %10llu %10s\n", p.index + 1, c.name.c_str(), state.c_str(),
-                  estimatedGrains(c.config), static_cast<unsigned long long>(p.steps), duration(seconds).c_str());
+                  estimatedGrains(c.config), static_cast<unsigned long long>(p.steps), formatDuration(seconds).c_str());
     out << line;
     if (p.state == CaseState::Failed) out << "       " << p.error << "\n";
     if (p.state == CaseState::Pending) {
@@ -555,7 +512,7 @@ std::string dryRunListing(const SweepPlan& plan, int jobs, int threads) {
     bedSeconds += b.estimatedSeconds;
     longestBed = std::max(longestBed, b.estimatedSeconds);
     out << "  bed " << b.key << " (first needed by " << plan.spec.cases[b.firstCase].name << "): est. "
-        << duration(b.estimatedSeconds) << "\n";
+        << formatDuration(b.estimatedSeconds) << "\n";
   }
   // Beds are made in parallel first, one per job; then the cases share the jobs.
   const double bedPhase = plan.beds.empty() ? 0.0
@@ -563,8 +520,8 @@ std::string dryRunListing(const SweepPlan& plan, int jobs, int threads) {
   const double total = (bedPhase + runSeconds / std::max(1, jobs)) / std::max(1, threads);
   out << plan.cases.size() << " cases: " << toRun << " to run, " << done << " done, " << failed << " failed; "
       << plan.beds.size() << " of " << plan.distinctBeds << " distinct beds to make\n";
-  out << "estimated cost: " << duration(total) << " wall on " << jobs << " jobs x " << threads << " threads (runs "
-      << duration(runSeconds) << " + beds " << duration(bedSeconds) << " of single-core time at " << number(ns, "%.3g")
+  out << "estimated cost: " << formatDuration(total) << " wall on " << jobs << " jobs x " << threads << " threads (runs "
+      << formatDuration(runSeconds) << " + beds " << formatDuration(bedSeconds) << " of single-core time at " << formatNumber(ns, 3)
       << " ns per particle-step, CostModel in src/sweep/SweepPlan.h"
       << (threads > 1 ? "; assumes threads scale perfectly" : "") << ")\n";
   return out.str();
@@ -575,7 +532,9 @@ void makeSweepBed(const std::string& configPath, int threads) {
   const RunConfig config = parseRunConfig(readFile(configPath), configPath);
   const ClumpDef clump = prepareCase(config).clump;
   const StopSignalGuard stopOnSignal;  // the sweep's SIGTERM: save the bed in the making, then stop
-  const CachedBed bed = obtainBed(config, clump);
+  // The bed task's log (beds/bed-KEY.log) gets the status every minute: a deep bed takes an hour.
+  ProgressLine progress(false, [](const std::string& text) { std::printf("%s\n", text.c_str()); std::fflush(stdout); }, 60.0);
+  const CachedBed bed = obtainBed(config, clump, [&](const BedStatus& s) { progress.update(bedStatusLine(s, config.box.bedHeight)); });
   if (!bed.note.empty()) std::fprintf(stderr, "wiggle: warning: %s\n", bed.note.c_str());
   std::printf("bed %s %s (%u grains)\n", bed.key.c_str(), bed.fromCache ? "was cached" : "made and cached",
               static_cast<unsigned>(bed.world.grainCount()));
@@ -647,29 +606,14 @@ SweepOutcome runSweep(const std::string& sweepFile, const SweepOptions& options)
     return out;
   }
 
-  struct sigaction previousInt {}, previousTerm {};
-  if (options.handleSignals) {
-    gStopSignal = 0;
-    struct sigaction sa {};
-    sa.sa_handler = onStopSignal;
-    sigemptyset(&sa.sa_mask);
-    ::sigaction(SIGINT, &sa, &previousInt);
-    ::sigaction(SIGTERM, &sa, &previousTerm);
-  }
+  // SIGINT/SIGTERM: the coordinator passes SIGTERM on to the running cases (they write a
+  // checkpoint) and stops handing out work.
+  std::optional<StopSignalGuard> stopOnSignal;
+  if (options.handleSignals) stopOnSignal.emplace();
   SweepOutcome out;
-  try {
+  {
     Coordinator coordinator(plan, settings, options, mpi.get());
     out = coordinator.run();
-  } catch (...) {
-    if (options.handleSignals) {
-      ::sigaction(SIGINT, &previousInt, nullptr);
-      ::sigaction(SIGTERM, &previousTerm, nullptr);
-    }
-    throw;
-  }
-  if (options.handleSignals) {
-    ::sigaction(SIGINT, &previousInt, nullptr);
-    ::sigaction(SIGTERM, &previousTerm, nullptr);
   }
   return out;
 }
