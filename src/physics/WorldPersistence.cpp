@@ -1,0 +1,213 @@
+// World::save and World::load: the whole dynamic state, field by field, so that a loaded world
+// continues bit for bit. Kept apart from the step (World.cpp) because it changes for a different
+// reason: the state file's layout (docs/RELIABILITY.md; the checkpoint and bed formats in
+// scenario/Checkpoint and scenario/BedMaker frame it with io/StateFile's magic, version and checksum).
+// A field added to World is added here too, and the state format version is raised.
+#include <cmath>
+#include <cstdint>
+
+#include "core/Error.h"
+#include "io/BinaryStream.h"
+#include "physics/World.h"
+
+namespace wiggle {
+
+void World::save(BinaryWriter& out) const {
+  out.value(def_.boxWidth);
+  out.value(def_.dt);
+  out.value(def_.gravity);
+  out.value(def_.density);
+  out.value(static_cast<std::uint8_t>(def_.massModel));
+  out.value(def_.contact.kn);
+  out.value(def_.contact.kt);
+  out.value(def_.contact.gammaN);
+  out.value(def_.contact.gammaT);
+  out.value(def_.contact.mu);
+  out.value(def_.skin);
+  out.value(def_.intruderSkin);
+  out.value(def_.sortInterval);
+  out.value(def_.healthInterval);
+  out.value(def_.maxOverlapRatio);
+  out.value(def_.referenceImpactSpeed);
+  out.value(def_.maxSpeedFactor);
+  out.value(def_.minStepsPerContact);
+
+  const ParticleStore& s = store_;
+  out.value(s.grainCount);
+  for (const auto* v : {&s.x, &s.y, &s.vx, &s.vy, &s.omega, &s.fx, &s.fy, &s.torque, &s.radius, &s.invMass,
+                        &s.invInertia, &s.mass})
+    out.array(*v);
+  out.array(s.tag);
+
+  out.array(list_.rowStart);
+  out.array(list_.partner);
+  out.array(list_.shearX);
+  out.array(list_.shearY);
+  out.array(intruderPairs_.grain);
+  out.array(intruderPairs_.atom);
+  out.array(intruderPairs_.shearX);
+  out.array(intruderPairs_.shearY);
+
+  out.value(static_cast<std::uint8_t>(hasIntruder_));
+  out.array(clump_.offsetX);
+  out.array(clump_.offsetY);
+  out.value(clump_.atomRadius);
+  out.value(clump_.mass);
+  out.value(clumpState_.x);
+  out.value(clumpState_.y);
+  out.value(clumpState_.vx);
+  out.value(clumpState_.vy);
+  out.value(clumpState_.contactFx);
+  out.value(clumpState_.contactFy);
+  out.value(static_cast<std::uint8_t>(motion_.kind));
+  out.value(motion_.x0);
+  out.value(motion_.amplitude);
+  out.value(motion_.period);
+  out.value(motion_.velocity);
+  out.value(static_cast<std::uint8_t>(motion_.verticalFree));
+  // Only the ramped drive stores its ramp: files of the other motions keep their earlier layout.
+  if (motion_.kind == HorizontalMotion::RampedSinusoid) out.value(motion_.rampTime);
+
+  out.value(step_);
+  out.value(rebuilds_);
+  out.value(lastSortStep_);
+  out.value(nextTag_);
+  out.value(static_cast<std::uint8_t>(prepared_));
+  out.value(static_cast<std::uint8_t>(listsStale_));
+  out.array(xAtBuild_);
+  out.array(yAtBuild_);
+  out.value(maxDisplacementSq_);
+  out.value(clumpXAtBuild_);
+  out.value(clumpYAtBuild_);
+  out.value(grainDisplacementAtIntruderBuild_);
+  out.array(pendingNewToOld_);
+  out.value(margins_.overlap);
+  out.value(margins_.speed);
+}
+
+World World::load(BinaryReader& in) {
+  WorldDef def;
+  def.boxWidth = in.value<double>();
+  def.dt = in.value<double>();
+  def.gravity = in.value<double>();
+  def.density = in.value<double>();
+  const auto massModel = in.value<std::uint8_t>();
+  if (massModel > 1) throw Error(in.what() + " is corrupt: unknown mass model");
+  def.massModel = static_cast<MassModel>(massModel);
+  def.contact.kn = in.value<double>();
+  def.contact.kt = in.value<double>();
+  def.contact.gammaN = in.value<double>();
+  def.contact.gammaT = in.value<double>();
+  def.contact.mu = in.value<double>();
+  def.skin = in.value<double>();
+  def.intruderSkin = in.value<double>();
+  def.sortInterval = in.value<std::uint64_t>();
+  def.healthInterval = in.value<std::uint64_t>();
+  def.maxOverlapRatio = in.value<double>();
+  def.referenceImpactSpeed = in.value<double>();
+  def.maxSpeedFactor = in.value<double>();
+  def.minStepsPerContact = in.value<double>();
+  World w(def);
+
+  ParticleStore& s = w.store_;
+  s.grainCount = in.value<std::uint32_t>();
+  for (auto* v : {&s.x, &s.y, &s.vx, &s.vy, &s.omega, &s.fx, &s.fy, &s.torque, &s.radius, &s.invMass,
+                  &s.invInertia, &s.mass})
+    *v = in.array<double>();
+  s.tag = in.array<std::uint32_t>();
+  const std::size_t n = s.x.size();
+  for (const auto* v : {&s.y, &s.vx, &s.vy, &s.omega, &s.fx, &s.fy, &s.torque, &s.radius, &s.invMass,
+                        &s.invInertia, &s.mass})
+    if (v->size() != n) throw Error(in.what() + " is corrupt: particle arrays differ in length");
+  if (s.tag.size() != n || s.grainCount > n) throw Error(in.what() + " is corrupt: particle counts disagree");
+
+  NeighbourList& list = w.list_;
+  list.rowStart = in.array<std::uint32_t>();
+  list.partner = in.array<std::uint32_t>();
+  list.shearX = in.array<double>();
+  list.shearY = in.array<double>();
+  const std::size_t pairs = list.partner.size();
+  // The stale flag is read further down; a list saved stale (grains added or removed since its
+  // build) may not match the grain count, and is rebuilt before use anyway.
+  const bool neverBuilt = list.rowStart.empty() && pairs == 0;
+  bool listOk = neverBuilt || (!list.rowStart.empty() && list.shearX.size() == pairs &&
+                               list.shearY.size() == pairs && list.rowStart.front() == 0 &&
+                               list.rowStart.back() == pairs);
+  for (std::size_t i = 0; listOk && i + 1 < list.rowStart.size(); ++i)
+    listOk = list.rowStart[i] <= list.rowStart[i + 1];
+  for (std::size_t k = 0; listOk && k < pairs; ++k) listOk = list.partner[k] < n;
+  // Row i holds partners above i in ascending order: the force blocks rely on it (a pair only ever
+  // adds to its own block's grains or, later, to a cross partner).
+  for (std::size_t i = 0; listOk && i + 1 < list.rowStart.size(); ++i)
+    for (std::uint32_t k = list.rowStart[i]; listOk && k < list.rowStart[i + 1]; ++k)
+      listOk = list.partner[k] > i && (k == list.rowStart[i] || list.partner[k] > list.partner[k - 1]);
+  if (!listOk) throw Error(in.what() + " is corrupt: the neighbour list is inconsistent");
+  list.forceX.assign(pairs, 0.0);
+  list.forceY.assign(pairs, 0.0);
+  list.torqueArm.assign(pairs, 0.0);
+  if (!neverBuilt) list.deriveIndex(forceBlockRows(def.boxWidth));
+
+  IntruderPairs& ip = w.intruderPairs_;
+  ip.grain = in.array<std::uint32_t>();
+  ip.atom = in.array<std::uint32_t>();
+  ip.shearX = in.array<double>();
+  ip.shearY = in.array<double>();
+  ip.forceX.assign(ip.grain.size(), 0.0);
+  ip.forceY.assign(ip.grain.size(), 0.0);
+  ip.torqueArm.assign(ip.grain.size(), 0.0);
+
+  w.hasIntruder_ = in.value<std::uint8_t>() != 0;
+  w.clump_.offsetX = in.array<double>();
+  w.clump_.offsetY = in.array<double>();
+  w.clump_.atomRadius = in.value<double>();
+  w.clump_.mass = in.value<double>();
+  if (ip.atom.size() != ip.grain.size() || ip.shearX.size() != ip.grain.size() ||
+      ip.shearY.size() != ip.grain.size() || w.clump_.offsetX.size() != w.clump_.offsetY.size())
+    throw Error(in.what() + " is corrupt: intruder arrays differ in length");
+  for (std::size_t p = 0; p < ip.grain.size(); ++p)
+    if (ip.grain[p] >= n || ip.atom[p] >= w.clump_.offsetX.size())
+      throw Error(in.what() + " is corrupt: an intruder pair points outside the arrays");
+  w.clumpState_.x = in.value<double>();
+  w.clumpState_.y = in.value<double>();
+  w.clumpState_.vx = in.value<double>();
+  w.clumpState_.vy = in.value<double>();
+  w.clumpState_.contactFx = in.value<double>();
+  w.clumpState_.contactFy = in.value<double>();
+  const auto kind = in.value<std::uint8_t>();
+  if (kind > 3) throw Error(in.what() + " is corrupt: unknown intruder motion");
+  w.motion_.kind = static_cast<HorizontalMotion>(kind);
+  w.motion_.x0 = in.value<double>();
+  w.motion_.amplitude = in.value<double>();
+  w.motion_.period = in.value<double>();
+  w.motion_.velocity = in.value<double>();
+  w.motion_.verticalFree = in.value<std::uint8_t>() != 0;
+  if (w.motion_.kind == HorizontalMotion::RampedSinusoid) {
+    w.motion_.rampTime = in.value<double>();
+    if (!(w.motion_.rampTime > 0 && std::isfinite(w.motion_.rampTime)))
+      throw Error(in.what() + " is corrupt: a ramped drive without a ramp time");
+  }
+
+  w.step_ = in.value<std::uint64_t>();
+  w.rebuilds_ = in.value<std::uint64_t>();
+  w.lastSortStep_ = in.value<std::uint64_t>();
+  w.nextTag_ = in.value<std::uint32_t>();
+  w.prepared_ = in.value<std::uint8_t>() != 0;
+  w.listsStale_ = in.value<std::uint8_t>() != 0;
+  if (!w.listsStale_ && list.rowStart.size() != s.grainCount + 1)
+    throw Error(in.what() + " is corrupt: the neighbour list does not match the grains");
+  w.xAtBuild_ = in.array<double>();
+  w.yAtBuild_ = in.array<double>();
+  w.maxDisplacementSq_ = in.value<double>();
+  w.clumpXAtBuild_ = in.value<double>();
+  w.clumpYAtBuild_ = in.value<double>();
+  w.grainDisplacementAtIntruderBuild_ = in.value<double>();
+  w.pendingNewToOld_ = in.array<std::uint32_t>();
+  w.margins_.overlap = in.value<double>();
+  w.margins_.speed = in.value<double>();
+  if (!w.listsStale_ && (w.xAtBuild_.size() != s.grainCount || w.yAtBuild_.size() != s.grainCount))
+    throw Error(in.what() + " is corrupt: build positions do not match the grains");
+  w.refreshKinematics();
+  return w;
+}
+
+}  // namespace wiggle
