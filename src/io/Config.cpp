@@ -203,6 +203,9 @@ const std::vector<KeyInfo>& keyTable() {
              noBound, "sqrt(g d)", "the next batch is poured when the rms grain speed is below this"),
       number("bed.rest_energy", [](C& c) -> double& { return c.bed.restEnergy; }, above(0), noBound,
              "m g d", "final relaxation ends when the kinetic energy per grain, averaged over one time unit, is below this"),
+      number("bed.relax_damping", [](C& c) -> double& { return c.bed.relaxDamping; }, atLeast(0), atMost(100),
+             "sqrt(g/d)", "while the levelled bed relaxes, its grains' velocities decay as exp(-rate t) besides the "
+             "contacts' own damping (applied every 1000 steps), so it comes to rest sooner; 0 = off"),
       number("bed.max_time", [](C& c) -> double& { return c.bed.maxTime; }, above(0), noBound,
              "sqrt(d/g)", "give up making the bed after this much simulated time"),
       text("bed.cache_dir", [](C& c) -> std::string& { return c.bed.cacheDir; },

@@ -47,6 +47,7 @@ struct BedDef {
   double pourSpeed = 1.0;      // bed.pour_speed: initial downward speed of a random batch (pour = random) [sqrt(g d)]
   double settleSpeed = 0.05;   // bed.settle_speed: pour the next batch when the rms grain speed is below [sqrt(g d)]
   double restEnergy = 1e-6;    // bed.rest_energy: relax until kinetic energy per grain (1-time-unit mean) below [m g d]
+  double relaxDamping = 0.0;   // bed.relax_damping: viscous damping rate of the grains while relaxing; 0 = none [sqrt(g/d)]
   double maxTime = 2000.0;     // bed.max_time: give up making the bed after this simulated time
   std::string cacheDir;        // bed.cache_dir: where beds are cached ("" = $WIGGLE_CACHE or ~/.cache/wiggle)
 };

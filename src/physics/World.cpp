@@ -277,6 +277,18 @@ void World::clearContactHistory() {
   prepared_ = false;  // forces from the unloaded springs before the next step
 }
 
+void World::scaleGrainVelocities(double factor) {
+  requireFinite(factor, "velocity factor");
+  ParticleStore& s = store_;
+  for (std::uint32_t i = 0; i < s.grainCount; ++i) {
+    s.vx[i] *= factor;
+    s.vy[i] *= factor;
+    s.omega[i] *= factor;
+  }
+  refreshKinematics();
+  prepared_ = false;
+}
+
 // ---------------------------------------------------------------- the step
 
 void World::run(std::uint64_t steps) {

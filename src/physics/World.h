@@ -83,6 +83,9 @@ class World {
   void resetClock();
   // Every contact's tangential spring unloaded (the history a LAMMPS data file cannot carry).
   void clearContactHistory();
+  // Every grain's velocity and spin multiplied by `factor` (bed making's damped relaxation); the
+  // forces are evaluated afresh before the next step, as after any change of the state.
+  void scaleGrainVelocities(double factor);
 
   // --- stepping ---
   void step();

@@ -88,6 +88,10 @@ std::string bedKey(const RunConfig& c, const ClumpDef& clump) {
     h.addValue(c.bed.pourFraction);
     h.addValue(c.bed.pourSpeed);
   }
+  if (c.bed.relaxDamping > 0) {  // likewise: an undamped bed keeps its key
+    h.addBytes("relax_damping", 13);
+    h.addValue(c.bed.relaxDamping);
+  }
   return h.hex();
 }
 
@@ -367,6 +371,8 @@ World finishBed(const RunConfig& config, const ClumpDef& clump, PartialBed p, co
                       " > bed.rest_energy) within bed.max_time = " + std::to_string(config.bed.maxTime));
         p.world.run(kStepsPerCheck);
         p.steps += kStepsPerCheck;
+        if (config.bed.relaxDamping > 0)
+          p.world.scaleGrainVelocities(std::exp(-config.bed.relaxDamping * static_cast<double>(kStepsPerCheck) * dt));
         save(p);
         break;
       }

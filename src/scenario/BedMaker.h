@@ -33,7 +33,8 @@ WorldDef worldDefFor(const RunConfig& config);
 
 // Hex key of everything a bed depends on: box, seed, grains, contact, intruder clump and position,
 // bed-making parameters (not bed.max_time, a bound only; bed.pour and its parameters only when
-// pour = "random", so a lattice bed keeps the key it had before those keys existed), time step and
+// pour = "random", and bed.relax_damping only when not 0, so a bed made as before those keys existed
+// keeps its key), time step and
 // engine settings, and the bed format version.
 std::string bedKey(const RunConfig& config, const ClumpDef& clump);
 

@@ -66,6 +66,7 @@ std::vector<std::string> differingFields(const RunConfig& a, const RunConfig& b)
   num("bed.pourSpeed", a.bed.pourSpeed, b.bed.pourSpeed);
   num("bed.settleSpeed", a.bed.settleSpeed, b.bed.settleSpeed);
   num("bed.restEnergy", a.bed.restEnergy, b.bed.restEnergy);
+  num("bed.relaxDamping", a.bed.relaxDamping, b.bed.relaxDamping);
   num("bed.maxTime", a.bed.maxTime, b.bed.maxTime);
   other("bed.cacheDir", a.bed.cacheDir == b.bed.cacheDir);
   num("run.dt", a.run.dt, b.run.dt);
@@ -121,6 +122,7 @@ const std::vector<std::tuple<std::string, std::string, std::string>>& everyKey()
       {"bed.pour_speed", "2", "bed.pourSpeed"},
       {"bed.settle_speed", "0.1", "bed.settleSpeed"},
       {"bed.rest_energy", "1e-5", "bed.restEnergy"},
+      {"bed.relax_damping", "2", "bed.relaxDamping"},
       {"bed.max_time", "500", "bed.maxTime"},
       {"bed.cache_dir", "/tmp/beds", "bed.cacheDir"},
       {"run.dt", "2e-4", "run.dt"},
@@ -160,7 +162,7 @@ TEST(Config, KeyListIsExactlyTheSpecKeys) {
   std::set<std::string> expected;
   for (const auto& [key, value, field] : everyKey()) expected.insert(key);
   const std::vector<std::string> keys = configKeys();
-  EXPECT_EQ(keys.size(), 45u);
+  EXPECT_EQ(keys.size(), 46u);
   EXPECT_EQ(std::set<std::string>(keys.begin(), keys.end()), expected);
 }
 
