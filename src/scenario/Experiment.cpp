@@ -84,6 +84,183 @@ void writeModel(const std::string& path, const RunConfig& config, const Shape& s
   writeFileAtomically(path, j.dump(2) + "\n");
 }
 
+
+// The run directory's rules: made if missing; a run already there is continued only with --resume,
+// and only by a config that can continue it; leftovers of a write cut short are removed; the
+// config is written.
+void prepareRunDirectory(const std::string& dir, const RunConfig& config, const std::string& configToml,
+                         bool resume) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw Error("cannot create output directory " + dir + ": " + ec.message());
+  fs::create_directories(dir + "/dumps", ec);
+  const bool hasCheckpoint = fs::exists(checkpointPath(dir)) || fs::exists(previousCheckpointPath(dir));
+  if (!resume && (hasCheckpoint || fs::exists(dir + "/summary.json")))
+    throw Error(dir + " already holds a run: use --resume to continue it, or choose another --out");
+  if (resume && fs::exists(dir + "/config.toml")) {
+    const RunConfig previous = parseRunConfig(readFile(dir + "/config.toml"), dir + "/config.toml");
+    if (const std::string why = whyRunCannotContinue(previous, config); !why.empty())
+      throw Error("--resume: cannot continue the run in " + dir + ": " + why);
+  }
+  if (resume) removeLeftoverTemporaries(dir);  // of a run killed while writing a file
+  writeFileAtomically(dir + "/config.toml", configToml);
+}
+
+// The newest checkpoint of the run in `dir` that is sound and of this config, or nothing.
+std::optional<Checkpoint> newestGoodCheckpoint(const std::string& dir, const RunConfig& config,
+                                               const std::string& configToml, LogFile& log) {
+  for (const std::string& path : {checkpointPath(dir), previousCheckpointPath(dir)}) {
+    if (!fs::exists(path)) continue;
+    try {
+      Checkpoint checkpoint = parseCheckpoint(readFile(path), path, config, configToml);
+      log.line("resumed from " + path + " at step " + std::to_string(checkpoint.world.stepCount()));
+      return checkpoint;
+    } catch (const Error& e) {
+      log.line(std::string("checkpoint refused: ") + e.what());
+      std::fprintf(stderr, "wiggle: warning: %s; trying an older one\n", e.what());
+    }
+  }
+  log.line("no usable checkpoint: starting from the bed");
+  return std::nullopt;
+}
+
+// A run's start from its bed (cached or made now), the drive started; the bed's key, origin and
+// wall time go into `state`.
+World startFromBed(const Case& run, RunState& state, LogFile& log, ProgressLine& progress) {
+  const RunConfig& config = run.config;
+  const auto bedStart = Clock::now();
+  std::optional<CachedBed> obtained;
+  try {
+    obtained.emplace(obtainBed(config, run.clump, [&](const BedStatus& s) {
+      progress.update(bedStatusLine(s, config.box.bedHeight) + ", " + formatDuration(secondsSince(bedStart)) +
+                      " elapsed");
+    }));
+  } catch (const Error& e) {  // interrupted (the bed so far is saved) or failed: say so in the log too
+    progress.clear();
+    log.line(e.what());
+    throw;
+  }
+  CachedBed& bed = *obtained;
+  progress.clear();
+  state.bedWallSeconds = secondsSince(bedStart);
+  state.bedKey = bed.key;
+  state.bedFromCache = bed.fromCache;
+  if (!bed.note.empty()) {
+    log.line(bed.note);
+    std::fprintf(stderr, "wiggle: warning: %s\n", bed.note.c_str());
+  }
+  log.line(std::string(bed.fromCache ? "bed loaded from " : "bed made and cached at ") + bed.path + " (" +
+           std::to_string(bed.world.grainCount()) + " grains, surface " + formatNumber(freeSurfaceHeight(bed.world)) +
+           ", " + formatNumber(state.bedWallSeconds) + " s)");
+  World world = std::move(bed.world);
+  if (!config.run.keepBedHistory) world.clearContactHistory();
+  startDrive(world, run);
+  return world;
+}
+
+// What the step loop feeds after each step: the phase bins and field frames (after t_i), the
+// trajectory samples and the dump frames, all kept in the RunState a checkpoint saves.
+class RunObservers {
+ public:
+  RunObservers(const Case& run, RunState& state, FieldObserver& fields, std::string dumpPath)
+      : run_(run), state_(state), fields_(fields), dumpPath_(std::move(dumpPath)) {}
+
+  void sample(const World& world) {
+    const ClumpState& c = world.intruder();
+    state_.samples.push_back({world.time(), c.x, c.y, c.vx, c.vy, c.contactFy});
+  }
+
+  void dumpFrame(const World& world) {
+    const std::string frame = lammpsDumpFrame(world);
+    appendToFile(dumpPath_, frame);
+    state_.dumpBytes += frame.size();
+  }
+
+  void afterStep(const World& world) {
+    const RunSchedule& steps = run_.steps;
+    const std::uint64_t step = world.stepCount();
+    if (step > steps.firstMeasured) {
+      const int bin = static_cast<int>((step % steps.period) * kPhaseBins / steps.period);
+      state_.phaseSum[bin] += world.intruder().vy;
+      ++state_.phaseCount[bin];
+      if (run_.config.fields.enabled)
+        for (std::size_t p = 0; p < steps.fieldPhaseStep.size(); ++p)
+          if (step % steps.period == steps.fieldPhaseStep[p]) fields_.addFrame(world, p);
+    }
+    if (step % steps.sampleEvery == 0) sample(world);
+    if (steps.dumpEvery && step % steps.dumpEvery == 0) dumpFrame(world);
+  }
+
+ private:
+  const Case& run_;
+  RunState& state_;
+  FieldObserver& fields_;
+  std::string dumpPath_;
+};
+
+// What makes the result less than it seems, in sentences (summary.json's warnings).
+std::vector<std::string> runWarnings(const RiseRate& rate, double averagedFrom, const RunConfig& config) {
+  std::vector<std::string> warnings;
+  if (rate.windowTooShort())
+    warnings.push_back("V_y is measured over " + formatNumber(rate.windowPeriods) + " drive periods (t = " +
+                       formatNumber(rate.tInitial) + " to " + formatNumber(rate.tFinal) + "), fewer than " +
+                       formatNumber(RiseRate::kMinWindowPeriods) +
+                       ": it reflects the phase of the drive more than a drift; run longer (run.duration)");
+  if (std::fabs(averagedFrom - rate.tInitial) > 0.5 * config.run.sampleInterval)
+    warnings.push_back("phase_rates.csv and fields.csv average from t = " + formatNumber(averagedFrom) +
+                       ", V_y from t = " + formatNumber(rate.tInitial) +
+                       ": the run was extended (resumed with a longer run.duration); the "
+                       "trajectory, V_y and the final state are those of a run this long from the start");
+  return warnings;
+}
+
+RunSummary summarise(const Case& run, const World& world, const RunState& state, const FieldObserver& fields,
+                     const RiseRate& rate, double averagedFrom) {
+  const RunConfig& config = run.config;
+  RunSummary summary;
+  summary.vy = rate.vy;
+  summary.vySlope = rate.slope;
+  summary.vyRule = "(y_f - y_i)/(t_f - t_i), t_i = 0.1 t_total, t_f = t_total or the start of a plateau at "
+                   "the free surface (docs/OUTPUT-FORMATS.md)";
+  summary.plateau = rate.plateau;
+  summary.tInitial = rate.tInitial;
+  summary.tFinal = rate.tFinal;
+  summary.yInitial = rate.yInitial;
+  summary.yFinal = rate.yFinal;
+  summary.yStart = state.samples.front().y;
+  summary.vyWindowPeriods = rate.windowPeriods;
+  summary.averagedFromT = averagedFrom;
+  summary.warnings = runWarnings(rate, averagedFrom, config);
+  summary.overlapMargin = world.healthMargins().overlap;
+  summary.speedMargin = world.healthMargins().speed;
+  summary.status = "ok";
+  summary.grains = world.grainCount();
+  summary.particles = world.particles().size();
+  summary.steps = world.stepCount();
+  summary.threads = static_cast<std::uint64_t>(omp_get_max_threads());
+  summary.wallSeconds = state.runWallSeconds + state.bedWallSeconds;
+  summary.runWallSeconds = state.runWallSeconds;
+  summary.bedWallSeconds = state.bedWallSeconds;
+  summary.bedFromCache = state.bedFromCache;
+  summary.bedKey = state.bedKey;
+  summary.nsPerParticleStep = 1e9 * state.runWallSeconds /
+                              (static_cast<double>(world.particles().size()) * static_cast<double>(world.stepCount()));
+  summary.stateHash = world.stateHash();
+  const NeighbourList& list = world.neighbours();
+  summary.neighbourPairs = list.pairCount();
+  for (std::uint32_t k = 0; k < list.pairCount(); ++k)
+    summary.contacts += list.forceX[k] != 0.0 || list.forceY[k] != 0.0;
+  summary.intruderPairs = world.intruderPairs().size();
+  summary.stateBytesPerGrain = static_cast<double>(world.stateBytes()) / std::max(1u, world.grainCount());
+  summary.shape = config.intruder.shape;
+  summary.amplitude = config.drive.amplitude;
+  summary.period = config.drive.period;
+  summary.mu = config.contact.mu;
+  for (std::size_t p = 0; p < config.fields.phases.size(); ++p) summary.fieldFrames.push_back(fields.frames(p));
+  summary.version = WIGGLE_VERSION;
+  return summary;
+}
+
 }  // namespace
 
 RunOutcome runExperiment(const Case& run, const RunOptions& options) {
@@ -91,22 +268,8 @@ RunOutcome runExperiment(const Case& run, const RunOptions& options) {
   const RunConfig& config = run.config;
   const RunSchedule& steps = run.steps;
   const std::string dir = options.outDir;
-
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec) throw Error("cannot create output directory " + dir + ": " + ec.message());
-  fs::create_directories(dir + "/dumps", ec);
   const std::string configToml = toToml(config);
-  const bool hasCheckpoint = fs::exists(checkpointPath(dir)) || fs::exists(previousCheckpointPath(dir));
-  if (!options.resume && (hasCheckpoint || fs::exists(dir + "/summary.json")))
-    throw Error(dir + " already holds a run: use --resume to continue it, or choose another --out");
-  if (options.resume && fs::exists(dir + "/config.toml")) {
-    const RunConfig previous = parseRunConfig(readFile(dir + "/config.toml"), dir + "/config.toml");
-    if (const std::string why = whyRunCannotContinue(previous, config); !why.empty())
-      throw Error("--resume: cannot continue the run in " + dir + ": " + why);
-  }
-  if (options.resume) removeLeftoverTemporaries(dir);  // of a run killed while writing a file
-  writeFileAtomically(dir + "/config.toml", configToml);
+  prepareRunDirectory(dir, config, configToml, options.resume);
   LogFile log(dir + "/log.txt");
   log.line(std::string("wiggle ") + WIGGLE_VERSION + (options.resume ? " run --resume" : " run") + " in " + dir +
            " with " + std::to_string(omp_get_max_threads()) + " threads");
@@ -115,21 +278,11 @@ RunOutcome runExperiment(const Case& run, const RunOptions& options) {
   FieldObserver fields(config.fields, config.box.width);
   std::optional<World> loaded;
   if (options.resume) {
-    for (const std::string& path : {checkpointPath(dir), previousCheckpointPath(dir)}) {
-      if (!fs::exists(path)) continue;
-      try {
-        Checkpoint checkpoint = parseCheckpoint(readFile(path), path, config, configToml);
-        loaded.emplace(std::move(checkpoint.world));
-        state = std::move(checkpoint.state);
-        fields = std::move(checkpoint.fields);
-        log.line("resumed from " + path + " at step " + std::to_string(loaded->stepCount()));
-        break;
-      } catch (const Error& e) {
-        log.line(std::string("checkpoint refused: ") + e.what());
-        std::fprintf(stderr, "wiggle: warning: %s; trying an older one\n", e.what());
-      }
+    if (std::optional<Checkpoint> checkpoint = newestGoodCheckpoint(dir, config, configToml, log)) {
+      loaded.emplace(std::move(checkpoint->world));
+      state = std::move(checkpoint->state);
+      fields = std::move(checkpoint->fields);
     }
-    if (!loaded) log.line("no usable checkpoint: starting from the bed");
   }
 
   const std::string dumpPath = dir + "/dumps/dump.lammpstrj";
@@ -140,54 +293,20 @@ RunOutcome runExperiment(const Case& run, const RunOptions& options) {
   std::optional<StopSignalGuard> stopOnSignal;
   stopOnSignal.emplace();
   if (!loaded) {
-    const auto bedStart = Clock::now();
-    std::optional<CachedBed> obtained;
-    try {
-      obtained.emplace(obtainBed(config, run.clump, [&](const BedStatus& s) {
-        progress.update(bedStatusLine(s, config.box.bedHeight) + ", " + formatDuration(secondsSince(bedStart)) +
-                        " elapsed");
-      }));
-    } catch (const Error& e) {  // interrupted (the bed so far is saved) or failed: say so in the log too
-      progress.clear();
-      log.line(e.what());
-      throw;
-    }
-    CachedBed& bed = *obtained;
-    progress.clear();
-    state.bedWallSeconds = secondsSince(bedStart);
-    state.bedKey = bed.key;
-    state.bedFromCache = bed.fromCache;
-    if (!bed.note.empty()) {
-      log.line(bed.note);
-      std::fprintf(stderr, "wiggle: warning: %s\n", bed.note.c_str());
-    }
-    log.line(std::string(bed.fromCache ? "bed loaded from " : "bed made and cached at ") + bed.path + " (" +
-             std::to_string(bed.world.grainCount()) + " grains, surface " + formatNumber(freeSurfaceHeight(bed.world)) +
-             ", " + formatNumber(state.bedWallSeconds) + " s)");
-    loaded.emplace(std::move(bed.world));
-    if (!config.run.keepBedHistory) loaded->clearContactHistory();
-    startDrive(*loaded, run);
+    loaded.emplace(startFromBed(run, state, log, progress));
     std::ofstream(dumpPath, std::ios::trunc);
     state.dumpBytes = 0;
   } else {
     // Drop dump frames written after the checkpoint: they will be written again.
+    std::error_code ec;
     if (fs::exists(dumpPath)) fs::resize_file(dumpPath, state.dumpBytes, ec);
     if (ec) throw Error("cannot truncate " + dumpPath + ": " + ec.message());
   }
   World& world = *loaded;
-
-  auto sample = [&] {
-    const ClumpState& c = world.intruder();
-    state.samples.push_back({world.time(), c.x, c.y, c.vx, c.vy, c.contactFy});
-  };
-  auto dumpFrame = [&] {
-    const std::string frame = lammpsDumpFrame(world);
-    appendToFile(dumpPath, frame);
-    state.dumpBytes += frame.size();
-  };
+  RunObservers observers(run, state, fields, dumpPath);
   if (world.stepCount() == 0 && state.samples.empty()) {
-    sample();
-    if (steps.dumpEvery) dumpFrame();
+    observers.sample(world);
+    if (steps.dumpEvery) observers.dumpFrame(world);
   }
 
   const double particles = static_cast<double>(world.particles().size());
@@ -198,17 +317,8 @@ RunOutcome runExperiment(const Case& run, const RunOptions& options) {
   try {
     while (world.stepCount() < steps.total) {
       world.step();
+      observers.afterStep(world);
       const std::uint64_t step = world.stepCount();
-      if (step > steps.firstMeasured) {
-        const int bin = static_cast<int>((step % steps.period) * kPhaseBins / steps.period);
-        state.phaseSum[bin] += world.intruder().vy;
-        ++state.phaseCount[bin];
-        if (config.fields.enabled)
-          for (std::size_t p = 0; p < steps.fieldPhaseStep.size(); ++p)
-            if (step % steps.period == steps.fieldPhaseStep[p]) fields.addFrame(world, p);
-      }
-      if (step % steps.sampleEvery == 0) sample();
-      if (steps.dumpEvery && step % steps.dumpEvery == 0) dumpFrame();
       if (step % 200 == 0 || step == steps.total) {
         state.runWallSeconds += secondsSince(chunkStart);
         chunkStart = Clock::now();
@@ -259,70 +369,21 @@ RunOutcome runExperiment(const Case& run, const RunOptions& options) {
   if (config.fields.enabled) fields.writeCsv(dir + "/fields.csv");
   writeModel(dir + "/model.json", config, run.shape);
 
-  std::vector<std::string> warnings;
-  if (rate.windowTooShort())
-    warnings.push_back("V_y is measured over " + formatNumber(rate.windowPeriods) + " drive periods (t = " +
-                       formatNumber(rate.tInitial) + " to " + formatNumber(rate.tFinal) + "), fewer than " +
-                       formatNumber(RiseRate::kMinWindowPeriods) + ": it reflects the phase of the drive more than a drift; " +
-                       "run longer (run.duration)");
   // Phase rates and field frames accumulate one step per step from 0.1 t_total on; a run extended
   // (resumed with a longer run.duration) began at 0.1 of its first duration. Where that window
   // began follows from the count of accumulated steps.
   std::uint64_t accumulated = 0;
   for (const std::uint64_t n : state.phaseCount) accumulated += n;
   const double averagedFrom = static_cast<double>(world.stepCount() - accumulated) * config.run.dt;
-  if (std::fabs(averagedFrom - rate.tInitial) > 0.5 * config.run.sampleInterval)
-    warnings.push_back("phase_rates.csv and fields.csv average from t = " + formatNumber(averagedFrom) + ", V_y from t = " +
-                       formatNumber(rate.tInitial) + ": the run was extended (resumed with a longer run.duration); the "
-                       "trajectory, V_y and the final state are those of a run this long from the start");
-
-  RunSummary summary;
-  summary.vy = rate.vy;
-  summary.vySlope = rate.slope;
-  summary.vyRule = "(y_f - y_i)/(t_f - t_i), t_i = 0.1 t_total, t_f = t_total or the start of a plateau at "
-                   "the free surface (docs/OUTPUT-FORMATS.md)";
-  summary.plateau = rate.plateau;
-  summary.tInitial = rate.tInitial;
-  summary.tFinal = rate.tFinal;
-  summary.yInitial = rate.yInitial;
-  summary.yFinal = rate.yFinal;
-  summary.yStart = state.samples.front().y;
-  summary.vyWindowPeriods = rate.windowPeriods;
-  summary.averagedFromT = averagedFrom;
-  summary.warnings = warnings;
-  summary.overlapMargin = world.healthMargins().overlap;
-  summary.speedMargin = world.healthMargins().speed;
-  summary.status = "ok";
-  summary.grains = world.grainCount();
-  summary.particles = world.particles().size();
-  summary.steps = world.stepCount();
-  summary.threads = static_cast<std::uint64_t>(omp_get_max_threads());
-  summary.wallSeconds = state.runWallSeconds + state.bedWallSeconds;
-  summary.runWallSeconds = state.runWallSeconds;
-  summary.bedWallSeconds = state.bedWallSeconds;
-  summary.bedFromCache = state.bedFromCache;
-  summary.bedKey = state.bedKey;
-  summary.nsPerParticleStep = 1e9 * state.runWallSeconds / (particles * static_cast<double>(world.stepCount()));
-  summary.stateHash = world.stateHash();
-  const NeighbourList& list = world.neighbours();
-  summary.neighbourPairs = list.pairCount();
-  for (std::uint32_t k = 0; k < list.pairCount(); ++k) summary.contacts += list.forceX[k] != 0.0 || list.forceY[k] != 0.0;
-  summary.intruderPairs = world.intruderPairs().size();
-  summary.stateBytesPerGrain = static_cast<double>(world.stateBytes()) / std::max(1u, world.grainCount());
-  summary.shape = config.intruder.shape;
-  summary.amplitude = config.drive.amplitude;
-  summary.period = config.drive.period;
-  summary.mu = config.contact.mu;
-  for (std::size_t p = 0; p < config.fields.phases.size(); ++p) summary.fieldFrames.push_back(fields.frames(p));
-  summary.version = WIGGLE_VERSION;
+  const RunSummary summary = summarise(run, world, state, fields, rate, averagedFrom);
   writeFileAtomically(dir + "/summary.json", toJson(summary).dump(2) + "\n");
   log.line("done: vy = " + formatNumber(rate.vy) + ", slope = " + formatNumber(rate.slope) + ", " +
            formatNumber(summary.nsPerParticleStep) + " ns/particle-step, state " + world.stateHash());
-  for (const std::string& w : warnings) log.line("warning: " + w);
+  for (const std::string& w : summary.warnings) log.line("warning: " + w);
   outcome.status = "ok";
   outcome.vy = rate.vy;
   outcome.vySlope = rate.slope;
-  outcome.warnings = warnings;
+  outcome.warnings = summary.warnings;
   outcome.stateHash = world.stateHash();
   outcome.summaryPath = dir + "/summary.json";
   return outcome;
