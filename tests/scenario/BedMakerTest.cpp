@@ -168,6 +168,14 @@ std::string scratch(const std::string& name) {
   return dir + "/" + name;
 }
 
+// One thread for the tiny beds (the bits do not depend on it): about 100 grains gain nothing from
+// two, and a second thread on a busy core makes every step wait for it.
+struct OneThread {
+  int saved = omp_get_max_threads();
+  OneThread() { omp_set_num_threads(1); }
+  ~OneThread() { omp_set_num_threads(saved); }
+};
+
 // A 12 x 8 bed (about 80 grains) around a 1.5 x 1.5 square, poured at random.
 RunConfig tinyRandomConfig() {
   return loadRunConfig(std::nullopt,
@@ -178,13 +186,7 @@ RunConfig tinyRandomConfig() {
 }
 
 TEST(BedMaker, TinyRandomBedComesToRestAndContinuesToTheSameBits) {
-  // One thread (the bits do not depend on it): about 100 grains gain nothing from two, and a second
-  // thread on a busy core makes every step wait for it.
-  struct OneThread {
-    int saved = omp_get_max_threads();
-    OneThread() { omp_set_num_threads(1); }
-    ~OneThread() { omp_set_num_threads(saved); }
-  } oneThread;
+  const OneThread oneThread;
   const RunConfig config = tinyRandomConfig();
   const ClumpDef clump = prepareCase(config).clump;
   int batches = 0;
@@ -228,11 +230,7 @@ TEST(BedMaker, TinyRandomBedComesToRestAndContinuesToTheSameBits) {
 // undamped relaxation leaves them to well within a grain, and a bed stopped while relaxing
 // continues to the same bits (the damping is applied at the same steps either way).
 TEST(BedMaker, DampedRelaxationRestsSoonerAndContinuesToTheSameBits) {
-  struct OneThread {
-    int saved = omp_get_max_threads();
-    OneThread() { omp_set_num_threads(1); }
-    ~OneThread() { omp_set_num_threads(saved); }
-  } oneThread;
+  const OneThread oneThread;
   RunConfig config = tinyRandomConfig();
   config.bed.pour = "lattice";
   config.bed.restEnergy = 1e-6;
