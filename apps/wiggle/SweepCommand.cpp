@@ -1,6 +1,6 @@
 // `wiggle sweep SWEEP.toml [--out DIR] [--jobs N] [--threads T] [--dry-run]`, also under
-// `mpirun -np N wiggle sweep ...` (docs/SWEEPS.md). The hidden `--make-bed CONFIG.toml` is the
-// bed task the sweep runs in a child process.
+// `mpirun -np N wiggle sweep ...` (docs/SWEEPS.md). The hidden `--run-case CONFIG.toml --out DIR`
+// and `--make-bed CONFIG.toml` are the tasks the sweep runs in child processes.
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
@@ -9,6 +9,7 @@
 #include "PathChecks.h"
 #include "core/Error.h"
 #include "sweep/SweepRunner.h"
+#include "sweep/TaskRunner.h"
 
 namespace wiggle::cli {
 
@@ -22,6 +23,7 @@ struct SweepArgs {
   bool dryRun = false;
   bool local = false;
   std::string makeBed;
+  std::string runCase;
 };
 
 }  // namespace
@@ -40,7 +42,9 @@ void addSweepCommand(CLI::App& app) {
       ->check(CLI::Range(1, 1024));
   cmd->add_flag("--dry-run", args->dryRun, "List the cases and the estimated cost; run nothing");
   cmd->add_flag("--local", args->local, "Ignore an MPI launcher: run every case from this process");
-  cmd->add_option("--make-bed", args->makeBed, "(internal) make and cache the bed of a run config")->group("");
+  // The one entry through which a sweep runs its tasks in child processes (sweep/TaskRunner.h).
+  cmd->add_option(kBedTaskFlag, args->makeBed, "(internal) make and cache the bed of a run config")->group("");
+  cmd->add_option(kCaseTaskFlag, args->runCase, "(internal) run a case's config into --out, resuming")->group("");
   cmd->footer(
       "Each case runs in DIR/cases/<case name>/ as `wiggle run ... --resume`; DIR/results.csv is rewritten after\n"
       "every case, DIR/sweep.log records what happened. Run the same command again to resume: finished cases\n"
@@ -50,6 +54,12 @@ void addSweepCommand(CLI::App& app) {
     if (!args->makeBed.empty()) {
       requireInputFile(args->makeBed, "config file");
       makeSweepBed(args->makeBed, args->threads);
+      return;
+    }
+    if (!args->runCase.empty()) {
+      requireInputFile(args->runCase, "config file");
+      if (args->out.empty()) throw Error(std::string(kCaseTaskFlag) + " needs --out (the case's run directory)");
+      runSweepCase(args->runCase, args->out, args->threads);
       return;
     }
     if (args->file.empty()) throw Error("sweep: no sweep file given (wiggle sweep SWEEP.toml)");

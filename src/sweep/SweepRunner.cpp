@@ -540,6 +540,19 @@ void makeSweepBed(const std::string& configPath, int threads) {
               static_cast<unsigned>(bed.world.grainCount()));
 }
 
+void runSweepCase(const std::string& configPath, const std::string& runDir, int threads) {
+  const RunConfig config = parseRunConfig(readFile(configPath), configPath);
+  RunOptions options;
+  options.outDir = runDir;
+  options.threads = threads;
+  options.resume = true;
+  options.progressLine = false;
+  const RunOutcome outcome = runExperiment(prepareCase(config), options);
+  std::printf("V_y = %.6g (least-squares slope %.6g); summary in %s\n", outcome.vy, outcome.vySlope,
+              outcome.summaryPath.c_str());
+  for (const std::string& w : outcome.warnings) std::fprintf(stderr, "wiggle: warning: %s\n", w.c_str());
+}
+
 SweepOutcome runSweep(const std::string& sweepFile, const SweepOptions& options) {
   SweepSpec spec = loadSweepSpec(sweepFile);
   const std::string outDir = options.outDir.empty() ? "sweep-" + spec.settings.name : options.outDir;

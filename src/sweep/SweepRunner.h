@@ -57,6 +57,12 @@ std::string dryRunListing(const SweepPlan& plan, int jobs, int threads);
 // bed of that run config with `threads` OpenMP threads (0 = default).
 void makeSweepBed(const std::string& configPath, int threads);
 
+// The case task of a sweep (`wiggle sweep --run-case CONFIG.toml --out DIR`): runs that config in
+// DIR, continuing from DIR's checkpoint when there is one (a run stopped, killed or extended),
+// without a progress line or figures. A failure is a wiggle::Error, printed by the command as the
+// child's last error line, which the sweep records.
+void runSweepCase(const std::string& configPath, const std::string& runDir, int threads);
+
 // Cores this process may run on (its CPU affinity), at least 1.
 int availableCores();
 

@@ -129,15 +129,15 @@ pid_t TaskRunner::start(const SweepTask& task) {
     // config or one it continues (a longer run.duration: the run is extended from its checkpoint).
     writeFileAtomically(dir + "/config.toml", toToml(sc.config));
     logPath = dir + "/sweep-child.log";
-    args = {executable_, "run", dir + "/config.toml", "--out", dir, "--resume", "--threads",
-            std::to_string(threads_), "--no-plot"};
+    args = {executable_, "sweep", kCaseTaskFlag, dir + "/config.toml", "--out", dir, "--threads",
+            std::to_string(threads_)};
   } else {
     const std::string base = outDir_ + "/beds/bed-" + bedKey(sc.config, prepareCase(sc.config).clump);
     fs::create_directories(outDir_ + "/beds", ec);
     if (ec) throw Error("cannot create " + outDir_ + "/beds: " + ec.message());
     writeFileAtomically(base + ".toml", toToml(sc.config));
     logPath = base + ".log";
-    args = {executable_, "sweep", "--make-bed", base + ".toml", "--threads", std::to_string(threads_)};
+    args = {executable_, "sweep", kBedTaskFlag, base + ".toml", "--threads", std::to_string(threads_)};
   }
 
   // Everything the child needs is made before fork(): after it, only async-signal-safe calls.

@@ -1,7 +1,8 @@
 #pragma once
 // Runs a sweep's tasks as child processes of the `wiggle` binary (docs/SWEEPS.md explains why
-// processes and not threads):
-//   a case:  wiggle run CASE_DIR/config.toml --out CASE_DIR --resume --threads T --no-plot
+// processes and not threads), through the sweep command's one internal entry (kCaseTaskFlag,
+// kBedTaskFlag; the command hands them to runSweepCase and makeSweepBed in sweep/SweepRunner.h):
+//   a case:  wiggle sweep --run-case CASE_DIR/config.toml --out CASE_DIR --threads T
 //   a bed:   wiggle sweep --make-bed OUT/beds/bed-<key>.toml --threads T
 // Each child's stdout and stderr are appended to CASE_DIR/sweep-child.log (OUT/beds/bed-<key>.log);
 // a failure is described by the last error line the child printed in that attempt, or the signal
@@ -19,6 +20,10 @@
 #include "sweep/ResultsTable.h"
 
 namespace wiggle {
+
+// The flags of `wiggle sweep` that run one task in a child process (hidden from --help).
+inline constexpr const char* kCaseTaskFlag = "--run-case";
+inline constexpr const char* kBedTaskFlag = "--make-bed";
 
 // A unit of work, as it travels between MPI ranks: make the bed of case `caseIndex`'s config, or
 // run case `caseIndex`. Every rank expands the same sweep file, so the index is enough.

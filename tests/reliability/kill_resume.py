@@ -349,7 +349,7 @@ def sweep_trials(h, duration):
                     cmd = read(f"/proc/{k}/cmdline").split(b"\0")
                 except OSError:
                     continue
-                if len(cmd) > 1 and cmd[1] == b"run":
+                if b"--run-case" in cmd:
                     return k, cmd[cmd.index(b"--out") + 1].decode()
             time.sleep(0.005)
         return None
