@@ -42,7 +42,10 @@ void printCheck(const RunConfig& c, const std::string& out, bool resume) {
               c.drive.period, c.contact.mu);
   std::printf("bed: %g x %g d, about %.0f grains (estimate), %zu intruder atoms, mass %g\n", c.box.width,
               c.box.bedHeight, estimatedGrains(c), clump.offsetX.size(), clump.mass);
-  if (std::filesystem::exists(bedPath))
+  if (!c.bed.file.empty())
+    std::printf("bed: bed.file = %s (%s)\n", c.bed.file.c_str(),
+                std::filesystem::is_regular_file(c.bed.file) ? "checked when the run starts" : "no such file");
+  else if (std::filesystem::exists(bedPath))
     std::printf("bed %s: cached (%s)\n", key.c_str(), bedPath.c_str());
   else
     std::printf("bed %s: not cached, making it takes about %s on one core (estimate)\n", key.c_str(),

@@ -208,6 +208,10 @@ const std::vector<KeyInfo>& keyTable() {
              "contacts' own damping (applied every 1000 steps), so it comes to rest sooner; 0 = off"),
       number("bed.max_time", [](C& c) -> double& { return c.bed.maxTime; }, above(0), noBound,
              "sqrt(d/g)", "give up making the bed after this much simulated time"),
+      text("bed.file", [](C& c) -> std::string& { return c.bed.file; },
+           "run on the bed in this file (a cached bed-KEY.bin) instead of the config's own, e.g. one bed for a whole "
+           "friction or time-step study; it must have this box width, mass model and intruder (clump, mass, y0); "
+           "contact, run.dt and engine keys are this config's (\"\" = the config's own bed)"),
       text("bed.cache_dir", [](C& c) -> std::string& { return c.bed.cacheDir; },
            "directory of cached beds (\"\" = $WIGGLE_CACHE or ~/.cache/wiggle)"),
       // [run]

@@ -50,6 +50,7 @@ struct BedDef {
   double relaxDamping = 0.0;   // bed.relax_damping: viscous damping rate of the grains while relaxing; 0 = none [sqrt(g/d)]
   double maxTime = 2000.0;     // bed.max_time: give up making the bed after this simulated time
   std::string cacheDir;        // bed.cache_dir: where beds are cached ("" = $WIGGLE_CACHE or ~/.cache/wiggle)
+  std::string file;            // bed.file: run on the bed in this file instead of the config's own ("" = own)
 };
 
 struct RunDef {

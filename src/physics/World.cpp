@@ -277,6 +277,14 @@ void World::clearContactHistory() {
   prepared_ = false;  // forces from the unloaded springs before the next step
 }
 
+void World::setParameters(const WorldDef& def) {
+  if (def.boxWidth != def_.boxWidth || def.massModel != def_.massModel || def.density != def_.density)
+    throw Error("setParameters: the box width, mass model and density must stay those of the particles");
+  def_ = def;
+  invalidate();
+  prepared_ = false;
+}
+
 void World::scaleGrainVelocities(double factor) {
   requireFinite(factor, "velocity factor");
   ParticleStore& s = store_;

@@ -83,6 +83,10 @@ class World {
   void resetClock();
   // Every contact's tangential spring unloaded (the history a LAMMPS data file cannot carry).
   void clearContactHistory();
+  // New engine parameters for the same particles (a bed made with other contact constants, time step
+  // or engine settings, run with these): the box width, mass model and density must be the ones
+  // the particles were made with. The lists are rebuilt and the forces evaluated afresh.
+  void setParameters(const WorldDef& def);
   // Every grain's velocity and spin multiplied by `factor` (bed making's damped relaxation); the
   // forces are evaluated afresh before the next step, as after any change of the state.
   void scaleGrainVelocities(double factor);

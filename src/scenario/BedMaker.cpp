@@ -403,13 +403,57 @@ std::string bedCachePath(const RunConfig& config, const std::string& key) {
   return bedCacheDir(config) + "/bed-" + key + ".bin";
 }
 
-World parseCachedBed(const std::string& file, const std::string& name, const std::string& key) {
+namespace {
+
+struct BedFile {
+  std::string key;
+  World world;
+};
+
+BedFile readBedFile(const std::string& file, const std::string& name) {
   const std::string payload = parseStateFile(file, name, "bed");
   BinaryReader in(payload.data(), payload.size(), name);
-  if (in.string() != key) throw Error(name + " holds a bed for other parameters");
+  std::string key = in.string();
   World world = World::load(in);
   if (!in.atEnd()) throw Error(name + " has trailing data");
-  return world;
+  return {std::move(key), std::move(world)};
+}
+
+// bed.file: the bed in that file fitted to this config. What the particles and the intruder were
+// made with must be this config's; the rest (contact, time step, engine) is set anew.
+CachedBed pinnedBed(const RunConfig& config, const ClumpDef& clump) {
+  const std::string& path = config.bed.file;
+  if (!std::filesystem::is_regular_file(path)) throw Error("bed.file = " + path + ": no such file");
+  BedFile bed = readBedFile(readFile(path), path);
+  World& world = bed.world;
+  const WorldDef& made = world.def();
+  const std::string what = "bed.file = " + path + ": ";
+  if (made.boxWidth != config.box.width)
+    throw Error(what + "its box is " + formatNumber(made.boxWidth) + " d wide, box.width = " + formatNumber(config.box.width));
+  if (made.massModel != config.grains.massModel) throw Error(what + "its grains have another grains.mass_model");
+  const ClumpDef& held = world.clump();
+  if (!world.hasIntruder() || held.offsetX != clump.offsetX || held.offsetY != clump.offsetY ||
+      held.atomRadius != clump.atomRadius)
+    throw Error(what + "its intruder is not this config's (intruder.shape, vertices, angle or surface differ)");
+  if (held.mass != clump.mass)
+    throw Error(what + "its intruder's mass is " + formatNumber(held.mass) + ", this config's " + formatNumber(clump.mass));
+  if (world.intruder().y != config.intruder.y0)
+    throw Error(what + "its intruder is at y = " + formatNumber(world.intruder().y) + ", intruder.y0 = " +
+                formatNumber(config.intruder.y0));
+  world.setParameters(worldDefFor(config));
+  std::string note;
+  if (bed.key != bedKey(config, clump))
+    note = "bed.file: running on the bed made for other parameters (key " + bed.key + "), with this config's contact, "
+           "time step and engine settings";
+  return CachedBed{std::move(world), bed.key, path, true, note};
+}
+
+}  // namespace
+
+World parseCachedBed(const std::string& file, const std::string& name, const std::string& key) {
+  BedFile bed = readBedFile(file, name);
+  if (bed.key != key) throw Error(name + " holds a bed for other parameters");
+  return std::move(bed.world);
 }
 
 std::string bedPartialPath(const RunConfig& config, const std::string& key) {
@@ -417,6 +461,7 @@ std::string bedPartialPath(const RunConfig& config, const std::string& key) {
 }
 
 CachedBed obtainBed(const RunConfig& config, const ClumpDef& clump, const BedProgress& progress) {
+  if (!config.bed.file.empty()) return pinnedBed(config, clump);
   const std::string key = bedKey(config, clump);
   const std::string dir = bedCacheDir(config);
   const std::string path = bedCachePath(config, key);

@@ -90,7 +90,9 @@ World parseCachedBed(const std::string& file, const std::string& name, const std
 // bed's partial file when there is one, and stores it. A corrupt or foreign entry is reported in
 // `note` and rebuilt, never trusted. While a StopSignalGuard is alive, SIGINT/SIGTERM saves the bed
 // in the making and throws wiggle::Error; the same call later continues it, with the same bits as
-// a bed made in one go.
+// a bed made in one go. With bed.file set, the bed is that file's, checked against the config and
+// given its engine parameters (World::setParameters), never made; `note` says when it was made for
+// other parameters.
 CachedBed obtainBed(const RunConfig& config, const ClumpDef& clump, const BedProgress& progress = {});
 
 }  // namespace wiggle

@@ -69,6 +69,7 @@ std::vector<std::string> differingFields(const RunConfig& a, const RunConfig& b)
   num("bed.relaxDamping", a.bed.relaxDamping, b.bed.relaxDamping);
   num("bed.maxTime", a.bed.maxTime, b.bed.maxTime);
   other("bed.cacheDir", a.bed.cacheDir == b.bed.cacheDir);
+  other("bed.file", a.bed.file == b.bed.file);
   num("run.dt", a.run.dt, b.run.dt);
   num("run.duration", a.run.duration, b.run.duration);
   num("run.sampleInterval", a.run.sampleInterval, b.run.sampleInterval);
@@ -125,6 +126,7 @@ const std::vector<std::tuple<std::string, std::string, std::string>>& everyKey()
       {"bed.relax_damping", "2", "bed.relaxDamping"},
       {"bed.max_time", "500", "bed.maxTime"},
       {"bed.cache_dir", "/tmp/beds", "bed.cacheDir"},
+      {"bed.file", "/tmp/bed.bin", "bed.file"},
       {"run.dt", "2e-4", "run.dt"},
       {"run.duration", "10", "run.duration"},
       {"run.sample_interval", "0.1", "run.sampleInterval"},
@@ -162,7 +164,7 @@ TEST(Config, KeyListIsExactlyTheSpecKeys) {
   std::set<std::string> expected;
   for (const auto& [key, value, field] : everyKey()) expected.insert(key);
   const std::vector<std::string> keys = configKeys();
-  EXPECT_EQ(keys.size(), 46u);
+  EXPECT_EQ(keys.size(), 47u);
   EXPECT_EQ(std::set<std::string>(keys.begin(), keys.end()), expected);
 }
 

@@ -355,5 +355,59 @@ TEST(Experiment, BedSavedPeriodicallyContinuesAfterAKill) {
   EXPECT_EQ(continued.world.stateHash(), tinyBedHash());
 }
 
+// bed.file: a friction study on one bed. The run starts from the pinned bed's very particles but
+// with its own friction, which changes the run; a bed of another geometry is refused by name.
+TEST(Experiment, PinnedBedServesAnotherFrictionAndRefusesAnotherGeometry) {
+  const std::string root = scratch("pinned");
+  const RunConfig own = tinyConfig(root);
+  const CachedBed made = obtainBed(own, prepareCase(own).clump);
+  const RunOutcome reference = runExperiment(prepareCase(own), quiet(root + "/own"));
+
+  RunConfig other = own;
+  other.contact.mu = 0.5;
+  other.bed.file = made.path;
+  other.bed.cacheDir = root + "/empty-cache";  // nothing to be found or made there
+  const CachedBed pinned = obtainBed(other, prepareCase(other).clump);
+  EXPECT_EQ(pinned.world.def().contact.mu, 0.5);
+  EXPECT_EQ(pinned.key, made.key);
+  EXPECT_NE(pinned.note.find("made for other parameters"), std::string::npos) << pinned.note;
+  const RunOutcome run = runExperiment(prepareCase(other), quiet(root + "/pinned"));
+  EXPECT_NE(run.stateHash, reference.stateHash);  // the friction took effect
+  EXPECT_FALSE(fs::exists(root + "/empty-cache"));  // no bed was made
+  const auto summary = nlohmann::json::parse(readFile(root + "/pinned/summary.json"));
+  EXPECT_EQ(summary["bed_key"], made.key);
+  const std::string ownStart = readFile(root + "/own/trajectory.csv"), pinnedStart = readFile(root + "/pinned/trajectory.csv");
+  EXPECT_EQ(ownStart.substr(0, ownStart.find('\n', ownStart.find('\n') + 1)),
+            pinnedStart.substr(0, pinnedStart.find('\n', pinnedStart.find('\n') + 1)));  // the same t = 0 row
+
+  auto refusal = [&](const std::vector<std::string>& sets) {
+    RunConfig bad = loadRunConfig(std::nullopt, sets);
+    bad.bed.cacheDir = root + "/cache";
+    bad.bed.file = made.path;
+    try {
+      obtainBed(bad, prepareCase(bad).clump);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  std::vector<std::string> base = {"box.width=20", "box.bed_height=12", "intruder.shape=polygon",
+                                   "intruder.vertices=[[-1.5,-1.5],[1.5,-1.5],[1.5,1.5],[-1.5,1.5]]", "intruder.y0=6",
+                                   "drive.amplitude=1"};
+  auto with = [&](const std::string& set) {
+    std::vector<std::string> v = base;
+    v.push_back(set);
+    return v;
+  };
+  EXPECT_NE(refusal(with("box.width=24")).find("box.width = 24"), std::string::npos);
+  EXPECT_NE(refusal(with("intruder.y0=7")).find("intruder.y0 = 7"), std::string::npos);
+  EXPECT_NE(refusal(with("intruder.mass=3")).find("mass"), std::string::npos);
+  EXPECT_NE(refusal(with("grains.mass_model=disc")).find("grains.mass_model"), std::string::npos);
+  RunConfig missing = own;
+  missing.bed.file = root + "/nope.bin";
+  EXPECT_THROW(obtainBed(missing, prepareCase(missing).clump), Error);
+  fs::remove_all(root);
+}
+
 }  // namespace
 }  // namespace wiggle
