@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <numbers>
 
 #include "core/Error.h"
@@ -73,6 +74,9 @@ Case prepareCase(const RunConfig& config) {
                 ", box.bed_height = " + formatNumber(config.box.bedHeight) + ")");
   c.clump = makeClump(config.intruder, c.shape, config.grains.massModel, 1.0);
   checkGeometry(config, c.clump);
+  // A pinned bed is never made, so it must be there before anything is written.
+  if (!config.bed.file.empty() && !std::filesystem::is_regular_file(config.bed.file))
+    throw Error("bed.file = " + config.bed.file + ": no such file");
 
   c.drive.kind = config.drive.rampPeriods > 0 ? HorizontalMotion::RampedSinusoid : HorizontalMotion::Sinusoid;
   c.drive.x0 = 0.5 * config.box.width;
