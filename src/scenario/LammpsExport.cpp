@@ -1,6 +1,7 @@
 #include "scenario/LammpsExport.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -33,29 +34,19 @@ double wrapX(double x, double width) {
 
 }  // namespace
 
-LammpsDeck makeLammpsDeck(const World& world, const Case& run) {
-  const RunConfig& config = run.config;
-  if (!world.hasIntruder()) throw Error("export-lammps: the world has no intruder");
-  const ClumpMotion& motion = world.intruderMotion();
-  const bool ramped = motion.kind == HorizontalMotion::RampedSinusoid;
-  if ((motion.kind != HorizontalMotion::Sinusoid && !ramped) || !motion.verticalFree)
-    throw Error("export-lammps: the intruder must be driven sinusoidally with y free");
-  if (world.stepCount() != 0) throw Error("export-lammps: the world's clock must be at t = 0");
+namespace {
+
+// data.lammps: the box, every particle (atom_style sphere) and its velocity; the intruder's atoms
+// at the clump's position. Returns the atoms' mean offset from the clump's centre (the deck
+// recovers the centre from the atoms' mean position with it).
+std::array<double, 2> writeLammpsData(const World& world, const RunConfig& config, std::string& d) {
   const WorldDef& def = world.def();
   const ParticleStore& s = world.particles();
   const ClumpDef& clump = world.clump();
   const ClumpState& c = world.intruder();
   const double width = def.boxWidth;
   const std::size_t nAtoms = clump.offsetX.size();
-
-  LammpsDeck deck;
-  deck.grains = s.grainCount;
-  deck.atoms = s.size() + nAtoms;
-  deck.steps = run.steps.total;
-  const std::uint64_t sampleEvery = run.steps.sampleEvery;
-  const std::uint64_t dumpEvery = run.steps.dumpEvery;
-
-  // ---- data file
+  const std::size_t atoms = s.size() + nAtoms;
   double yLo = -1.0, yHi = 1.0;
   for (std::uint32_t i = 0; i < s.size(); ++i) {
     yLo = std::min(yLo, s.y[i] - s.radius[i] - 0.5);
@@ -64,11 +55,10 @@ LammpsDeck makeLammpsDeck(const World& world, const Case& run) {
   for (std::size_t a = 0; a < nAtoms; ++a) yHi = std::max(yHi, c.y + clump.offsetY[a] + clump.atomRadius);
   yHi += 5.0;  // the upper y boundary is shrink-wrapped (fm), so this is only a minimum
 
-  std::string& d = deck.data;
-  d.reserve(deck.atoms * 160 + 1024);
+  d.reserve(atoms * 160 + 1024);
   d += "wiggle export-lammps: " + config.intruder.shape + ", W = " + num(width) + ", bed height " +
        num(config.box.bedHeight) + ", seed " + std::to_string(config.box.seed) + ", t = 0 of the drive\n\n";
-  d += std::to_string(deck.atoms) + " atoms\n3 atom types\n\n";
+  d += std::to_string(atoms) + " atoms\n3 atom types\n\n";
   d += "0 " + num(width) + " xlo xhi\n" + num(yLo) + " " + num(yHi) + " ylo yhi\n-0.5 0.5 zlo zhi\n\n";
   // atom_style sphere: id type diameter density x y z. The diameter 2r is exact in binary, so
   // LAMMPS's radius (0.5 diameter) is wiggle's to the bit. With the grain density rho, read_data
@@ -76,7 +66,7 @@ LammpsDeck makeLammpsDeck(const World& world, const Case& run) {
   // for discs the deck resets it with `set density/disc`.
   d += "Atoms # sphere\n\n";
   std::string v = "\nVelocities\n\n";
-  v.reserve(deck.atoms * 100);
+  v.reserve(atoms * 100);
   char line[320];
   for (std::uint32_t i = 0; i < s.size(); ++i) {
     const bool grain = i < s.grainCount;
@@ -102,12 +92,23 @@ LammpsDeck makeLammpsDeck(const World& world, const Case& run) {
   meanOffsetX /= static_cast<double>(nAtoms);
   meanOffsetY /= static_cast<double>(nAtoms);
   d += v;
+  return {meanOffsetX, meanOffsetY};
 
-  // ---- deck
+}
+
+// in.wiggle: the deck that runs the data file as wiggle runs the case (docs/LAMMPS-EXPORT.md).
+std::string lammpsInput(const World& world, const RunConfig& config, const RunSchedule& steps,
+                        std::array<double, 2> meanOffset) {
+  const WorldDef& def = world.def();
+  const ParticleStore& s = world.particles();
+  const ClumpDef& clump = world.clump();
+  const ClumpMotion& motion = world.intruderMotion();
+  const bool ramped = motion.kind == HorizontalMotion::RampedSinusoid;
+  const double meanOffsetX = meanOffset[0], meanOffsetY = meanOffset[1];
+  std::string in;
   const ContactParams& p = def.contact;
   const bool disc = def.massModel == MassModel::Disc;
   const double omega = motion.omega();  // the value World::placeIntruder uses
-  std::string& in = deck.input;
   in += "# wiggle export-lammps: " + config.intruder.shape + " intruder, A = " + num(motion.amplitude) +
         ", T = " + num(motion.period) + ", mu = " + num(p.mu) + ", " + std::to_string(s.grainCount) +
         " grains (docs/LAMMPS-EXPORT.md)\n";
@@ -120,7 +121,7 @@ LammpsDeck makeLammpsDeck(const World& world, const Case& run) {
   in += "processors * 1 1\n";  // a tall box: split it in x only (docs/PHYSICS.md §14)
   in += "comm_modify vel yes\n";
   in += "read_data " + std::string(kLammpsDataFile) + "\n\n";
-  in += "variable nsteps index " + std::to_string(deck.steps) + "\n";
+  in += "variable nsteps index " + std::to_string(steps.total) + "\n";
   in += "group grains type 1\ngroup base type 2\ngroup intruder type 3\n";
   if (disc) in += "set group grains density/disc " + num(def.density) + "\nset group base density/disc " + num(def.density) + "\n";
   in += "# Every intruder atom carries the clump's total mass M: meff = m M / (m + M) as in wiggle.\n";
@@ -165,16 +166,34 @@ LammpsDeck makeLammpsDeck(const World& world, const Case& run) {
   in += "variable fyc equal c_fcontact\n";
   for (const char* name : {"t", "xc", "yc", "vxc", "vyc", "fyc"})
     in += std::string("variable ") + name + "_f format " + name + " %.17g\n";
-  in += "fix traj all print " + std::to_string(sampleEvery) +
+  in += "fix traj all print " + std::to_string(steps.sampleEvery) +
         " \"${t_f},${xc_f},${yc_f},${vxc_f},${vyc_f},${fyc_f}\" file " + kLammpsTrajectoryFile +
         " screen no title \"t,x,y,vx,vy,fy\"\n";
-  if (dumpEvery)
-    in += "dump snap all custom " + std::to_string(dumpEvery) +
+  if (steps.dumpEvery)
+    in += "dump snap all custom " + std::to_string(steps.dumpEvery) +
           " dump.lammpstrj id type x y z radius vx vy\ndump_modify snap sort id\n";
   in += "thermo_style custom step time ke v_yc v_vyc cpu\n";
   in += "thermo_modify norm no lost error\n";
-  in += "thermo " + std::to_string(std::max<std::uint64_t>(1, std::min<std::uint64_t>(10000, deck.steps / 10))) + "\n";
+  in += "thermo " + std::to_string(std::max<std::uint64_t>(1, std::min<std::uint64_t>(10000, steps.total / 10))) + "\n";
   in += "run ${nsteps}\n";
+  return in;
+}
+
+}  // namespace
+
+LammpsDeck makeLammpsDeck(const World& world, const Case& run) {
+  if (!world.hasIntruder()) throw Error("export-lammps: the world has no intruder");
+  const ClumpMotion& motion = world.intruderMotion();
+  const bool ramped = motion.kind == HorizontalMotion::RampedSinusoid;
+  if ((motion.kind != HorizontalMotion::Sinusoid && !ramped) || !motion.verticalFree)
+    throw Error("export-lammps: the intruder must be driven sinusoidally with y free");
+  if (world.stepCount() != 0) throw Error("export-lammps: the world's clock must be at t = 0");
+  LammpsDeck deck;
+  deck.grains = world.particles().grainCount;
+  deck.atoms = world.particles().size() + world.clump().offsetX.size();
+  deck.steps = run.steps.total;
+  const std::array<double, 2> meanOffset = writeLammpsData(world, run.config, deck.data);
+  deck.input = lammpsInput(world, run.config, run.steps, meanOffset);
   return deck;
 }
 
