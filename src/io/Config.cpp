@@ -700,8 +700,10 @@ void applyConfigTable(RunConfig& config, const toml::table& table, const std::st
   }
 }
 
-void validateRunConfig(const RunConfig& c) {
-  // Each key's own range, from the table (the same check applySetting makes).
+namespace {
+
+// Each key's own range, from the table (the same check applySetting makes).
+void checkKeyRanges(const RunConfig& c) {
   for (const KeyInfo& k : keyTable()) {
     auto fail = [&](const std::string& problem) {
       throw Error(std::string(k.name) + " = " + valueText(k, c, true) + ": " + problem);
@@ -745,8 +747,13 @@ void validateRunConfig(const RunConfig& c) {
     }
   }
 
-  // Checks that involve more than one key.
-  auto num = [](double v) { return formatNumber(v, false); };
+}
+
+std::string num(double v) { return formatNumber(v, false); }
+
+// The rules between the box, the grains and the intruder that need no outline (scenario/Case
+// checks those that do).
+void checkShapeKeys(const RunConfig& c) {
   if (c.box.width != std::floor(c.box.width)) {
     throw Error("box.width = " + num(c.box.width) + ": must be a whole number (the base is a row of "
                 "unit spheres spaced 1 apart)");
@@ -768,24 +775,28 @@ void validateRunConfig(const RunConfig& c) {
     throw Error("intruder.y0 = " + num(c.intruder.y0) + ": must be < box.bed_height (" +
                 num(c.box.bedHeight) + ")");
   }
-  if (!wholeStepsIn(c.drive.period, c.run.dt)) {
-    throw Error("drive.period = " + num(c.drive.period) + ": must be a whole number of run.dt steps (" +
-                num(c.drive.period) + " / " + num(c.run.dt) + " = " + num(c.drive.period / c.run.dt) + ")");
-  }
+}
+
+void requireWholeSteps(const char* key, double interval, double dt, const char* must) {
+  if (!wholeStepsIn(interval, dt))
+    throw Error(std::string(key) + " = " + num(interval) + ": must be " + must + " run.dt steps (" + num(interval) +
+                " / " + num(dt) + " = " + num(interval / dt) + ")");
+}
+
+// Every interval falls on a step.
+void checkSchedule(const RunConfig& c) {
+  requireWholeSteps("drive.period", c.drive.period, c.run.dt, "a whole number of");
   if (c.run.duration < c.run.dt) {
     throw Error("run.duration = " + num(c.run.duration) + ": must be >= run.dt (" + num(c.run.dt) + ")");
   }
-  if (!wholeStepsIn(c.run.duration, c.run.dt)) {
-    throw Error("run.duration = " + num(c.run.duration) + ": must be a whole number of run.dt steps (" +
-                num(c.run.duration) + " / " + num(c.run.dt) + " = " + num(c.run.duration / c.run.dt) + ")");
-  }
-  if (!wholeStepsIn(c.run.sampleInterval, c.run.dt)) {
-    throw Error("run.sample_interval = " + num(c.run.sampleInterval) +
-                ": must be a whole number of run.dt steps (" + num(c.run.sampleInterval) + " / " +
-                num(c.run.dt) + " = " + num(c.run.sampleInterval / c.run.dt) + ")");
-  }
-  // Absurd sizes are refused here, before anything is allocated or run: the step counter, the
-  // trajectory kept in memory and the field sums (one grid of 7 doubles per phase) stay bounded.
+  requireWholeSteps("run.duration", c.run.duration, c.run.dt, "a whole number of");
+  requireWholeSteps("run.sample_interval", c.run.sampleInterval, c.run.dt, "a whole number of");
+  if (c.run.dumpInterval > 0) requireWholeSteps("run.dump_interval", c.run.dumpInterval, c.run.dt, "0 or a whole number of");
+}
+
+// Absurd sizes are refused here, before anything is allocated or run: the step counter, the
+// trajectory kept in memory and the field sums (one grid of 7 doubles per phase) stay bounded.
+void checkSizes(const RunConfig& c) {
   constexpr double kMaxSteps = 1e12, kMaxSamples = 1e8, kMaxFieldBytes = 4e9;
   if (c.run.duration / c.run.dt > kMaxSteps) {
     throw Error("run.duration = " + num(c.run.duration) + ": " + num(c.run.duration / c.run.dt) +
@@ -805,11 +816,15 @@ void validateRunConfig(const RunConfig& c) {
                   " GB, more than the 4 GB wiggle accepts");
     }
   }
-  if (c.run.dumpInterval > 0 && !wholeStepsIn(c.run.dumpInterval, c.run.dt)) {
-    throw Error("run.dump_interval = " + num(c.run.dumpInterval) +
-                ": must be 0 or a whole number of run.dt steps (" + num(c.run.dumpInterval) + " / " +
-                num(c.run.dt) + " = " + num(c.run.dumpInterval / c.run.dt) + ")");
-  }
+}
+
+}  // namespace
+
+void validateRunConfig(const RunConfig& c) {
+  checkKeyRanges(c);
+  checkShapeKeys(c);
+  checkSchedule(c);
+  checkSizes(c);
 }
 
 RunConfig parseRunConfig(const std::string& tomlText, const std::string& sourceName) {
