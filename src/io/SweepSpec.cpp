@@ -71,24 +71,28 @@ std::string lineTag(const ConfigEntry& e, const char* table) {
 
 }  // namespace
 
-SweepSpec parseSweepSpec(const std::string& tomlText, const std::string& sourceName) {
-  const toml::table root = parseTomlText(tomlText, sourceName);
-  SweepSpec spec;
-  spec.settings.name = std::filesystem::path(sourceName).stem().string();
+namespace {
 
-  const toml::table* baseTable = nullptr;
-  const toml::table* gridTable = nullptr;
-  const toml::array* caseArray = nullptr;
+// The file's top-level tables: [sweep], [base], [grid] and the [[case]] list; anything else is an
+// error naming it.
+struct SweepTables {
+  const toml::table* base = nullptr;
+  const toml::table* grid = nullptr;
+  const toml::array* cases = nullptr;
+};
+
+SweepTables topLevelTables(const toml::table& root, const std::string& sourceName) {
+  SweepTables tables;
   for (const auto& [keyName, node] : root) {
     const std::string key(keyName.str());
     const std::string where = sourceName + ":" + std::to_string(node.source().begin.line);
     if (key == "base" || key == "grid" || key == "sweep") {
       if (!node.is_table()) throw Error(where + ": '" + key + "' must be a table ([" + key + "])");
-      if (key == "base") baseTable = node.as_table();
-      if (key == "grid") gridTable = node.as_table();
+      if (key == "base") tables.base = node.as_table();
+      if (key == "grid") tables.grid = node.as_table();
     } else if (key == "case") {
-      caseArray = node.as_array();
-      if (!caseArray || !caseArray->is_array_of_tables()) {
+      tables.cases = node.as_array();
+      if (!tables.cases || !tables.cases->is_array_of_tables()) {
         throw Error(where + ": 'case' must be a list of tables ([[case]])");
       }
     } else {
@@ -98,36 +102,35 @@ SweepSpec parseSweepSpec(const std::string& tomlText, const std::string& sourceN
                              : " (did you mean '" + s + "'?)"));
     }
   }
+  return tables;
+}
 
-  // [sweep]
-  if (const toml::table* sweep = root["sweep"].as_table()) {
-    for (const auto& [keyName, node] : *sweep) {
-      const std::string key(keyName.str());
-      const std::string where = sourceName + ":" + std::to_string(node.source().begin.line) +
-                                ": sweep." + key + " = " + tomlValueString(node);
-      if (key == "name") {
-        const auto* s = node.as_string();
-        if (!s) throw Error(where + ": expected a string");
-        spec.settings.name = s->get();
-      } else if (key == "jobs" || key == "threads_per_case") {
-        const auto* i = node.as_integer();
-        if (!i) throw Error(where + ": expected an integer");
-        if (i->get() < 0 || i->get() > 1000000) throw Error(where + ": must be >= 0 (0 = automatic)");
-        (key == "jobs" ? spec.settings.jobs : spec.settings.threadsPerCase) = static_cast<int>(i->get());
-      } else {
-        throw Error(sourceName + ":" + std::to_string(node.source().begin.line) +
-                    ": unknown key 'sweep." + key + "' (known: name, jobs, threads_per_case)");
-      }
+// [sweep]: name, jobs, threads_per_case.
+void readSweepSettings(const toml::table& root, const std::string& sourceName, SweepSettings& settings) {
+  const toml::table* sweep = root["sweep"].as_table();
+  if (!sweep) return;
+  for (const auto& [keyName, node] : *sweep) {
+    const std::string key(keyName.str());
+    const std::string where = sourceName + ":" + std::to_string(node.source().begin.line) + ": sweep." + key +
+                              " = " + tomlValueString(node);
+    if (key == "name") {
+      const auto* s = node.as_string();
+      if (!s) throw Error(where + ": expected a string");
+      settings.name = s->get();
+    } else if (key == "jobs" || key == "threads_per_case") {
+      const auto* i = node.as_integer();
+      if (!i) throw Error(where + ": expected an integer");
+      if (i->get() < 0 || i->get() > 1000000) throw Error(where + ": must be >= 0 (0 = automatic)");
+      (key == "jobs" ? settings.jobs : settings.threadsPerCase) = static_cast<int>(i->get());
+    } else {
+      throw Error(sourceName + ":" + std::to_string(node.source().begin.line) + ": unknown key 'sweep." + key +
+                  "' (known: name, jobs, threads_per_case)");
     }
   }
+}
 
-  // [base]
-  RunConfig base;
-  if (baseTable) applyConfigTable(base, *baseTable, sourceName, "base");
-
-  // [grid]: every leaf a non-empty array.
-  std::vector<ConfigEntry> grid;
-  if (gridTable) grid = configEntries(*gridTable, sourceName, "grid");
+// [grid]: every leaf a non-empty array; returns the number of combinations.
+std::size_t checkGrid(const std::vector<ConfigEntry>& grid, const std::string& sourceName) {
   std::size_t combinations = 1;
   for (const ConfigEntry& g : grid) {
     const std::string where = sourceName + ":" + std::to_string(g.line) + ": grid." + g.key;
@@ -139,58 +142,82 @@ SweepSpec parseSweepSpec(const std::string& tomlText, const std::string& sourceN
     combinations *= values->size();
     if (combinations > maxCases) throw Error(where + ": the grid has more than " + std::to_string(maxCases) + " cases");
   }
+  return combinations;
+}
 
-  // [[case]]
+// [[case]]: each table's name (or one made of its settings) and settings, none also in [grid].
+std::vector<CaseSource> readCases(const toml::array& caseArray, const std::vector<ConfigEntry>& grid,
+                                  std::size_t combinations, const std::string& sourceName) {
   std::vector<CaseSource> cases;
-  if (caseArray) {
-    for (std::size_t i = 0; i < caseArray->size(); ++i) {
-      const toml::table& t = *caseArray->get(i)->as_table();
-      CaseSource c;
-      if (const toml::node* n = t.get("name")) {
-        const auto* s = n->as_string();
-        if (!s) {
-          throw Error(sourceName + ":" + std::to_string(n->source().begin.line) + ": case " +
-                      std::to_string(i + 1) + ": name must be a string");
-        }
-        c.label = s->get();
-        c.named = true;
+  for (std::size_t i = 0; i < caseArray.size(); ++i) {
+    const toml::table& t = *caseArray.get(i)->as_table();
+    CaseSource c;
+    if (const toml::node* n = t.get("name")) {
+      const auto* s = n->as_string();
+      if (!s) {
+        throw Error(sourceName + ":" + std::to_string(n->source().begin.line) + ": case " + std::to_string(i + 1) +
+                    ": name must be a string");
       }
-      c.entries = configEntries(t, sourceName, "case", {"name"});
-      if (!c.named) {
-        for (const ConfigEntry& e : c.entries) {
-          c.label += (c.label.empty() ? "" : "_") + e.key.substr(e.key.find('.') + 1) + "=" +
-                     sanitize(tomlValueString(*e.value), false);
-        }
-        if (c.label.empty()) c.label = "case" + std::to_string(i + 1);
-      }
-      for (const ConfigEntry& e : c.entries) {
-        for (const ConfigEntry& g : grid) {
-          if (g.key == e.key) {
-            throw Error(sourceName + ": " + e.key + " is set both in [[case]] " + std::to_string(i + 1) +
-                        " (line " + std::to_string(e.line) + ") and in [grid] (line " +
-                        std::to_string(g.line) + ")");
-          }
-        }
-      }
-      cases.push_back(std::move(c));
+      c.label = s->get();
+      c.named = true;
     }
-    if (cases.size() * combinations > maxCases) throw Error(sourceName + ": more than " + std::to_string(maxCases) + " cases");
+    c.entries = configEntries(t, sourceName, "case", {"name"});
+    if (!c.named) {
+      for (const ConfigEntry& e : c.entries) {
+        if (!c.label.empty()) c.label += '_';
+        c.label += e.key.substr(e.key.find('.') + 1);
+        c.label += '=';
+        c.label += sanitize(tomlValueString(*e.value), false);
+      }
+      if (c.label.empty()) c.label = "case" + std::to_string(i + 1);
+    }
+    for (const ConfigEntry& e : c.entries) {
+      for (const ConfigEntry& g : grid) {
+        if (g.key == e.key) {
+          throw Error(sourceName + ": " + e.key + " is set both in [[case]] " + std::to_string(i + 1) + " (line " +
+                      std::to_string(e.line) + ") and in [grid] (line " + std::to_string(g.line) + ")");
+        }
+      }
+    }
+    cases.push_back(std::move(c));
   }
-  const bool haveCases = !cases.empty();
-  if (!haveCases) cases.push_back({});  // just base
+  if (cases.size() * combinations > maxCases) throw Error(sourceName + ": more than " + std::to_string(maxCases) + " cases");
+  return cases;
+}
 
-  // Parameter columns: "case" (when some [[case]] has a name), the keys the cases set (first seen
-  // first), then the grid keys in file order.
-  const bool anyNamed = std::any_of(cases.begin(), cases.end(), [](const CaseSource& c) { return c.named; });
-  if (anyNamed) spec.parameterKeys.push_back("case");
+// The parameter columns: "case" (when some [[case]] has a name), the keys the cases set (first seen
+// first), then the grid keys in file order.
+std::vector<std::string> parameterKeysOf(const std::vector<CaseSource>& cases, const std::vector<ConfigEntry>& grid) {
+  std::vector<std::string> keys;
+  if (std::any_of(cases.begin(), cases.end(), [](const CaseSource& c) { return c.named; })) keys.push_back("case");
   for (const CaseSource& c : cases) {
     for (const ConfigEntry& e : c.entries) {
-      if (std::find(spec.parameterKeys.begin(), spec.parameterKeys.end(), e.key) == spec.parameterKeys.end()) {
-        spec.parameterKeys.push_back(e.key);
-      }
+      if (std::find(keys.begin(), keys.end(), e.key) == keys.end()) keys.push_back(e.key);
     }
   }
-  for (const ConfigEntry& g : grid) spec.parameterKeys.push_back(g.key);
+  for (const ConfigEntry& g : grid) keys.push_back(g.key);
+  return keys;
+}
+
+}  // namespace
+
+SweepSpec parseSweepSpec(const std::string& tomlText, const std::string& sourceName) {
+  const toml::table root = parseTomlText(tomlText, sourceName);
+  SweepSpec spec;
+  spec.settings.name = std::filesystem::path(sourceName).stem().string();
+  const SweepTables tables = topLevelTables(root, sourceName);
+  readSweepSettings(root, sourceName, spec.settings);
+
+  RunConfig base;
+  if (tables.base) applyConfigTable(base, *tables.base, sourceName, "base");
+  std::vector<ConfigEntry> grid;
+  if (tables.grid) grid = configEntries(*tables.grid, sourceName, "grid");
+  const std::size_t combinations = checkGrid(grid, sourceName);
+  std::vector<CaseSource> cases;
+  if (tables.cases) cases = readCases(*tables.cases, grid, combinations, sourceName);
+  const bool haveCases = !cases.empty();
+  if (!haveCases) cases.push_back({});  // just base
+  spec.parameterKeys = parameterKeysOf(cases, grid);
 
   // In names a grid key is shown by its last part (period=5) unless two varying keys share it.
   std::map<std::string, int> leafCount;
