@@ -1,0 +1,165 @@
+// What the World checks and reports about itself, apart from the step: the time-step check against
+// the Hertz contact time, the blow-up detector (docs/RELIABILITY.md, section 7), the kinetic energy,
+// the state's size and its hash.
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "core/Format.h"
+#include "core/Hash.h"
+#include "physics/World.h"
+
+namespace wiggle {
+
+double hertzContactTime(double kn, double radius, double mass, double speed) {
+  const double meff = 0.5 * mass;
+  const double reff = 0.5 * radius;
+  const double k = kn * std::sqrt(reff);
+  const double deltaMax = std::pow(5.0 * meff * speed * speed / (4.0 * k), 0.4);
+  return 2.9433 * deltaMax / speed;
+}
+
+// ---------------------------------------------------------------- checks
+
+double World::peakDriveSpeed() const {
+  if (!hasIntruder_) return 0.0;
+  const double omega = motion_.omega();
+  switch (motion_.kind) {
+    case HorizontalMotion::Held: return 0.0;
+    case HorizontalMotion::Sinusoid: return motion_.amplitude * omega;
+    case HorizontalMotion::RampedSinusoid: return motion_.amplitude * (omega + 1.0 / motion_.rampTime);  // a bound
+    case HorizontalMotion::ConstantVelocity: return std::fabs(motion_.velocity);
+  }
+  return 0.0;
+}
+
+double World::speedBound() const {
+  return def_.maxSpeedFactor * std::max(def_.referenceImpactSpeed, peakDriveSpeed());
+}
+
+void World::checkTimeStep() const {
+  const ParticleStore& s = store_;
+  if (s.grainCount == 0) return;
+  std::uint32_t lightest = 0;
+  for (std::uint32_t i = 1; i < s.grainCount; ++i)
+    if (s.mass[i] < s.mass[lightest]) lightest = i;
+  const double speed = std::max(def_.referenceImpactSpeed, peakDriveSpeed());
+  const double contactTime = hertzContactTime(def_.contact.kn, s.radius[lightest], s.mass[lightest], speed);
+  const double limit = contactTime / def_.minStepsPerContact;
+  if (def_.dt > limit)
+    throw Error("run.dt = " + formatNumber(def_.dt) + " is too large: a Hertz contact between the lightest grains (d = " +
+                formatNumber(2 * s.radius[lightest]) + ") at impact speed " + formatNumber(speed) + " lasts " + formatNumber(contactTime) +
+                ", which needs dt <= " + formatNumber(limit) + " (" + formatNumber(def_.minStepsPerContact) + " steps per contact)");
+}
+
+// The full scan of the blow-up detector (docs/RELIABILITY.md, "The blow-up detector"). Each bound
+// lies far beyond anything the model does when it is integrated correctly, however violent the
+// drive: it stops a run whose numbers no longer mean anything, never a run that is merely extreme.
+void World::checkHealth() {
+  const ParticleStore& s = store_;
+  const std::string at = "step " + std::to_string(step_) + " (t = " + formatNumber(time()) + "): ";
+  const std::string cure = " (the simulation blew up: reduce run.dt)";
+  const double maxSpeed = speedBound();
+  double fastestSq = 0.0;
+  for (std::uint32_t i = 0; i < s.grainCount; ++i) {
+    const bool finite = std::isfinite(s.x[i]) && std::isfinite(s.y[i]) && std::isfinite(s.vx[i]) &&
+                        std::isfinite(s.vy[i]) && std::isfinite(s.omega[i]);
+    if (!finite)
+      throw SimulationError(at + "grain " + std::to_string(s.tag[i]) + " has a non-finite position or velocity" + cure);
+    if (s.y[i] < 0.0)
+      throw SimulationError(at + "grain " + std::to_string(s.tag[i]) + " fell through the base (y = " +
+                            formatNumber(s.y[i]) + ")" + cure);
+    const double speedSq = s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i];
+    if (speedSq > maxSpeed * maxSpeed)
+      throw SimulationError(at + "grain " + std::to_string(s.tag[i]) + " moves at " + formatNumber(std::sqrt(speedSq)) +
+                            " sqrt(g d), more than " + formatNumber(def_.maxSpeedFactor) +
+                            " times the fastest the fall or the drive can make it (" + formatNumber(maxSpeed / def_.maxSpeedFactor) +
+                            "): energy grew without a source" + cure);
+    fastestSq = std::max(fastestSq, speedSq);
+  }
+  margins_.speed = std::max(margins_.speed, std::sqrt(fastestSq) / maxSpeed);
+  const double width = def_.boxWidth, halfWidth = 0.5 * width;
+  double deepest = 0.0;
+  // The bound is relative to the radius of the grain that reaches in (the smaller of two grains):
+  // at maxOverlapRatio = 1 its centre would be at the other grain's surface or the intruder's
+  // outline, where the pair's normal no longer separates them and a grain can pass through.
+  auto checkOverlap = [&](double dx, double dy, double ri, double rj, double boundRadius, std::uint32_t tag,
+                          const char* what) {
+    if (dx > halfWidth) dx -= width;
+    else if (dx < -halfWidth) dx += width;
+    const double overlap = ri + rj - std::sqrt(dx * dx + dy * dy);
+    const double allowed = def_.maxOverlapRatio * boundRadius;
+    if (overlap > allowed)
+      throw SimulationError(at + "grain " + std::to_string(tag) + " overlaps " + what + " by " + formatNumber(overlap) +
+                            " d, more than " + formatNumber(def_.maxOverlapRatio) + " of the radius " + formatNumber(boundRadius) +
+                            ": it is passing through" + cure);
+    deepest = std::max(deepest, overlap / allowed);
+  };
+  for (std::uint32_t k = 0; k < list_.pairCount(); ++k) {
+    const std::uint32_t i = list_.owner[k], j = list_.partner[k];
+    checkOverlap(s.x[i] - s.x[j], s.y[i] - s.y[j], s.radius[i], s.radius[j], std::min(s.radius[i], s.radius[j]),
+                 s.tag[i],
+                 j < s.grainCount ? "another grain" : "a base particle");
+  }
+  if (hasIntruder_) {
+    if (!std::isfinite(clumpState_.y) || !std::isfinite(clumpState_.vy))
+      throw SimulationError(at + "the intruder's height or velocity is not finite" + cure);
+    for (std::uint32_t p = 0; p < intruderPairs_.size(); ++p) {
+      const std::uint32_t g = intruderPairs_.grain[p], a = intruderPairs_.atom[p];
+      checkOverlap(s.x[g] - (clumpState_.x + clump_.offsetX[a]), s.y[g] - (clumpState_.y + clump_.offsetY[a]),
+                   s.radius[g], clump_.atomRadius, s.radius[g], s.tag[g], "the intruder");
+    }
+  }
+  margins_.overlap = std::max(margins_.overlap, deepest);
+}
+
+// ---------------------------------------------------------------- observations
+
+double World::kineticEnergy() const {
+  // Serial on purpose: bed making compares it with a threshold, so its bits must not depend on
+  // the thread count.
+  const ParticleStore& s = store_;
+  double energy = 0.0;
+  for (std::uint32_t i = 0; i < s.grainCount; ++i) {
+    const double inertia = 1.0 / s.invInertia[i];
+    energy += 0.5 * s.mass[i] * (s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i]) + 0.5 * inertia * s.omega[i] * s.omega[i];
+  }
+  return energy;
+}
+
+namespace {
+template <class... Vectors>
+std::size_t arrayBytes(const Vectors&... v) {
+  return ((v.size() * sizeof(typename Vectors::value_type)) + ...);
+}
+}  // namespace
+
+std::size_t World::stateBytes() const {
+  const ParticleStore& s = store_;
+  const NeighbourList& l = list_;
+  const IntruderPairs& ip = intruderPairs_;
+  return arrayBytes(s.x, s.y, s.vx, s.vy, s.omega, s.fx, s.fy, s.torque, s.radius, s.invMass, s.invInertia, s.mass,
+                       s.tag, kinematics_, xAtBuild_, yAtBuild_, pendingNewToOld_) +
+         arrayBytes(l.rowStart, l.owner, l.partner, l.shearX, l.shearY, l.forceX, l.forceY, l.torqueArm,
+                       l.crossStart, l.crossPair) +
+         arrayBytes(ip.grain, ip.atom, ip.shearX, ip.shearY, ip.forceX, ip.forceY, ip.torqueArm, clump_.offsetX,
+                       clump_.offsetY);
+}
+
+std::string World::stateHash() const {
+  Hasher h;
+  const ParticleStore& s = store_;
+  h.addValue(step_);
+  h.add(s.tag);
+  for (const auto* v : {&s.x, &s.y, &s.vx, &s.vy, &s.omega, &s.fx, &s.fy, &s.torque, &s.radius}) h.add(*v);
+  h.add(list_.partner);
+  h.add(list_.shearX);
+  h.add(list_.shearY);
+  h.add(intruderPairs_.shearX);
+  h.add(intruderPairs_.shearY);
+  h.addValue(clumpState_);
+  return h.hex();
+}
+
+
+}  // namespace wiggle
