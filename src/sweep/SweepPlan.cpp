@@ -1,12 +1,16 @@
 #include "sweep/SweepPlan.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <map>
 #include <numbers>
+#include <sstream>
 #include <nlohmann/json.hpp>
 
 #include "core/Error.h"
+#include "core/Format.h"
 #include "io/AtomicFile.h"
 #include "io/Config.h"
 #include "scenario/BedMaker.h"
@@ -107,6 +111,50 @@ SweepPlan makeSweepPlan(SweepSpec spec, const std::string& outDir) {
   }
   plan.distinctBeds = keySeen.size();
   return plan;
+}
+
+std::string dryRunListing(const SweepPlan& plan, int jobs, int threads) {
+  const double ns = CostModel::nsPerParticleStep;
+  std::ostringstream out;
+  out << "sweep " << plan.spec.settings.name << " -> " << plan.outDir << "\n";
+  out << "  #  case                                       state     grains      steps   est. run\n";
+  double runSeconds = 0.0;
+  std::size_t toRun = 0, done = 0, failed = 0;
+  for (const PlannedCase& p : plan.cases) {
+    const SweepCase& c = plan.spec.cases[p.index];
+    std::string state = p.state == CaseState::Done ? "done" : p.state == CaseState::Failed ? "FAILED" : "to run";
+    if (p.state == CaseState::Pending && p.hasCheckpoint) state = "resume";
+    const double seconds = estimatedRunSeconds(c.config, ns);
+    char line[512];
+    std::snprintf(line, sizeof line, "%3zu  %-42s %-8s %7.0f %10llu %10s\n", p.index + 1, c.name.c_str(), state.c_str(),
+                  estimatedGrains(c.config), static_cast<unsigned long long>(p.steps), formatDuration(seconds).c_str());
+    out << line;
+    if (p.state == CaseState::Failed) out << "       " << p.error << "\n";
+    if (p.state == CaseState::Pending) {
+      ++toRun;
+      runSeconds += seconds;  // a resumed case is counted whole: an upper bound
+    }
+    done += p.state == CaseState::Done;
+    failed += p.state == CaseState::Failed;
+  }
+  double bedSeconds = 0.0, longestBed = 0.0;
+  for (const PlannedBed& b : plan.beds) {
+    bedSeconds += b.estimatedSeconds;
+    longestBed = std::max(longestBed, b.estimatedSeconds);
+    out << "  bed " << b.key << " (first needed by " << plan.spec.cases[b.firstCase].name << "): est. "
+        << formatDuration(b.estimatedSeconds) << "\n";
+  }
+  // Beds are made in parallel first, one per job; then the cases share the jobs.
+  const double bedPhase = plan.beds.empty() ? 0.0
+                                            : std::max(longestBed, bedSeconds / std::min<double>(jobs, plan.beds.size()));
+  const double total = (bedPhase + runSeconds / std::max(1, jobs)) / std::max(1, threads);
+  out << plan.cases.size() << " cases: " << toRun << " to run, " << done << " done, " << failed << " failed; "
+      << plan.beds.size() << " of " << plan.distinctBeds << " distinct beds to make\n";
+  out << "estimated cost: " << formatDuration(total) << " wall on " << jobs << " jobs x " << threads << " threads (runs "
+      << formatDuration(runSeconds) << " + beds " << formatDuration(bedSeconds) << " of single-core time at " << formatNumber(ns, 3)
+      << " ns per particle-step, CostModel in src/sweep/SweepPlan.h"
+      << (threads > 1 ? "; assumes threads scale perfectly" : "") << ")\n";
+  return out.str();
 }
 
 }  // namespace wiggle

@@ -78,4 +78,7 @@ struct SweepPlan {
 SweepPlan makeSweepPlan(SweepSpec spec, const std::string& outDir);
 
 
+// The dry-run listing of a plan for `jobs` cases at once with `threads` threads each.
+std::string dryRunListing(const SweepPlan& plan, int jobs, int threads);
+
 }  // namespace wiggle

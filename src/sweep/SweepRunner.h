@@ -50,19 +50,6 @@ struct SweepOutcome {
 // failed cases are not exceptions: they are counted in the outcome and recorded in results.csv.
 SweepOutcome runSweep(const std::string& sweepFile, const SweepOptions& options);
 
-// The dry-run listing of a plan for `jobs` cases at once with `threads` threads each.
-std::string dryRunListing(const SweepPlan& plan, int jobs, int threads);
-
-// The bed task of a sweep (`wiggle sweep --make-bed CONFIG.toml`): obtains (makes and caches) the
-// bed of that run config with `threads` OpenMP threads (0 = default).
-void makeSweepBed(const std::string& configPath, int threads);
-
-// The case task of a sweep (`wiggle sweep --run-case CONFIG.toml --out DIR`): runs that config in
-// DIR, continuing from DIR's checkpoint when there is one (a run stopped, killed or extended),
-// without a progress line or figures. A failure is a wiggle::Error, printed by the command as the
-// child's last error line, which the sweep records.
-void runSweepCase(const std::string& configPath, const std::string& runDir, int threads);
-
 // Cores this process may run on (its CPU affinity), at least 1.
 int availableCores();
 

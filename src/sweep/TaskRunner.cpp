@@ -6,6 +6,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <omp.h>
+
 #include <cerrno>
 #include <chrono>
 #include <csignal>
@@ -15,11 +17,14 @@
 #include <nlohmann/json.hpp>
 #include <thread>
 
+#include "core/Console.h"
 #include "core/Error.h"
+#include "core/StopSignal.h"
 #include "io/AtomicFile.h"
 #include "io/Config.h"
 #include "scenario/BedMaker.h"
 #include "scenario/Case.h"
+#include "scenario/Experiment.h"
 
 
 namespace wiggle {
@@ -242,6 +247,34 @@ TaskOutcome TaskRunner::finish(const Child& child, int waitStatus) {
     out.result.error = out.error;
   }
   return out;
+}
+
+// ---- the child side of the protocol: what `wiggle sweep --make-bed / --run-case` run
+
+void makeSweepBed(const std::string& configPath, int threads) {
+  if (threads > 0) omp_set_num_threads(threads);
+  const RunConfig config = parseRunConfig(readFile(configPath), configPath);
+  const ClumpDef clump = prepareCase(config).clump;
+  const StopSignalGuard stopOnSignal;  // the sweep's SIGTERM: save the bed in the making, then stop
+  // The bed task's log (beds/bed-KEY.log) gets the status every minute: a deep bed takes an hour.
+  ProgressLine progress(false, [](const std::string& text) { std::printf("%s\n", text.c_str()); std::fflush(stdout); }, 60.0);
+  const CachedBed bed = obtainBed(config, clump, [&](const BedStatus& s) { progress.update(bedStatusLine(s, config.box.bedHeight)); });
+  if (!bed.note.empty()) std::fprintf(stderr, "wiggle: warning: %s\n", bed.note.c_str());
+  std::printf("bed %s %s (%u grains)\n", bed.key.c_str(), bed.fromCache ? "was cached" : "made and cached",
+              static_cast<unsigned>(bed.world.grainCount()));
+}
+
+void runSweepCase(const std::string& configPath, const std::string& runDir, int threads) {
+  const RunConfig config = parseRunConfig(readFile(configPath), configPath);
+  RunOptions options;
+  options.outDir = runDir;
+  options.threads = threads;
+  options.resume = true;
+  options.progressLine = false;
+  const RunOutcome outcome = runExperiment(prepareCase(config), options);
+  std::printf("V_y = %.6g (least-squares slope %.6g); summary in %s\n", outcome.vy, outcome.vySlope,
+              outcome.summaryPath.c_str());
+  for (const std::string& w : outcome.warnings) std::fprintf(stderr, "wiggle: warning: %s\n", w.c_str());
 }
 
 }  // namespace wiggle

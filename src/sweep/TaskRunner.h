@@ -1,7 +1,7 @@
 #pragma once
 // Runs a sweep's tasks as child processes of the `wiggle` binary (docs/SWEEPS.md explains why
 // processes and not threads), through the sweep command's one internal entry (kCaseTaskFlag,
-// kBedTaskFlag; the command hands them to runSweepCase and makeSweepBed in sweep/SweepRunner.h):
+// kBedTaskFlag; the command hands them to runSweepCase and makeSweepBed below):
 //   a case:  wiggle sweep --run-case CASE_DIR/config.toml --out CASE_DIR --threads T
 //   a bed:   wiggle sweep --make-bed OUT/beds/bed-<key>.toml --threads T
 // Each child's stdout and stderr are appended to CASE_DIR/sweep-child.log (OUT/beds/bed-<key>.log);
@@ -89,5 +89,15 @@ std::string failureLine(const std::string& logTail);
 
 // Seconds on a monotonic clock (for wall times and the ETA).
 double monotonicSeconds();
+
+// The bed task of a sweep (`wiggle sweep --make-bed CONFIG.toml`): obtains (makes and caches) the
+// bed of that run config with `threads` OpenMP threads (0 = default).
+void makeSweepBed(const std::string& configPath, int threads);
+
+// The case task of a sweep (`wiggle sweep --run-case CONFIG.toml --out DIR`): runs that config in
+// DIR, continuing from DIR's checkpoint when there is one (a run stopped, killed or extended),
+// without a progress line or figures. A failure is a wiggle::Error, printed by the command as the
+// child's last error line, which the sweep records.
+void runSweepCase(const std::string& configPath, const std::string& runDir, int threads);
 
 }  // namespace wiggle
