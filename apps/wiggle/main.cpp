@@ -7,6 +7,7 @@
 
 #include "Commands.h"
 #include "core/Error.h"
+#include "core/Version.h"
 
 namespace {
 
@@ -57,7 +58,7 @@ int main(int argc, char** argv) {
   // sweep's children across exec.
   std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{"wiggle: a horizontally wiggling intruder in a 2D bed of frictional grains"};
-  app.set_version_flag("--version", std::string("wiggle ") + WIGGLE_VERSION);
+  app.set_version_flag("--version", "wiggle " + wiggle::versionText());
   app.require_subcommand(1);
   wiggle::cli::addRunCommand(app);
   wiggle::cli::addSweepCommand(app);

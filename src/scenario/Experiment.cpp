@@ -17,6 +17,7 @@
 #include "core/Error.h"
 #include "core/Format.h"
 #include "core/StopSignal.h"
+#include "core/Version.h"
 #include "io/AtomicFile.h"
 #include "io/Config.h"
 #include "io/LammpsDump.h"
@@ -257,7 +258,7 @@ RunSummary summarise(const Case& run, const World& world, const RunState& state,
   summary.period = config.drive.period;
   summary.mu = config.contact.mu;
   for (std::size_t p = 0; p < config.fields.phases.size(); ++p) summary.fieldFrames.push_back(fields.frames(p));
-  summary.version = WIGGLE_VERSION;
+  summary.version = versionText();
   return summary;
 }
 
@@ -271,7 +272,7 @@ RunOutcome runExperiment(const Case& run, const RunOptions& options) {
   const std::string configToml = toToml(config);
   prepareRunDirectory(dir, config, configToml, options.resume);
   LogFile log(dir + "/log.txt");
-  log.line(std::string("wiggle ") + WIGGLE_VERSION + (options.resume ? " run --resume" : " run") + " in " + dir +
+  log.line("wiggle " + versionText() + (options.resume ? " run --resume" : " run") + " in " + dir +
            " with " + std::to_string(omp_get_max_threads()) + " threads");
 
   RunState state;

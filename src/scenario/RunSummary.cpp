@@ -45,7 +45,7 @@ const std::vector<SummaryField>& summaryFields() {
       {"period", "sqrt(d/g)", "drive.period", &S::period},
       {"mu", "", "contact.mu", &S::mu},
       {"field_frames", "", "frames averaged per fields.phases entry", &S::fieldFrames},
-      {"version", "", "version of the wiggle that wrote the file", &S::version},
+      {"version", "", "version and git revision of the wiggle that wrote the file: 0.1.0 (git a1b2c3d4e5f6)", &S::version},
   };
   return fields;
 }

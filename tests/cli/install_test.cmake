@@ -1,0 +1,25 @@
+# ctest install_tree: installs the build into PREFIX and checks that the installed tree stands on
+# its own: the binary runs and names its version and revision, the plotting package, the configs
+# and the documents are where `wiggle plot` and a reader look for them.
+file(REMOVE_RECURSE "${PREFIX}")
+execute_process(COMMAND ${CMAKE_COMMAND} --install "${BUILD}" --prefix "${PREFIX}" RESULT_VARIABLE status
+                OUTPUT_QUIET)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "cmake --install failed (${status})")
+endif()
+execute_process(COMMAND "${PREFIX}/bin/wiggle" --version OUTPUT_VARIABLE version RESULT_VARIABLE status)
+if(NOT status EQUAL 0 OR NOT version MATCHES "^wiggle [0-9]+\\.[0-9]+\\.[0-9]+ \\(git [0-9a-z-]+\\)")
+  message(FATAL_ERROR "installed wiggle --version: status ${status}, printed '${version}'")
+endif()
+execute_process(COMMAND "${PREFIX}/bin/wiggle" model --shape disk OUTPUT_VARIABLE model RESULT_VARIABLE status)
+if(NOT status EQUAL 0 OR NOT model MATCHES "disk")
+  message(FATAL_ERROR "installed wiggle model --shape disk: status ${status}")
+endif()
+foreach(file share/wiggle/python/wiggleplot/__main__.py share/wiggle/configs/small.toml
+             share/wiggle/configs/paper.toml share/doc/wiggle/README.md share/doc/wiggle/CONFIG.md
+             share/bash-completion/completions/wiggle)
+  if(NOT EXISTS "${PREFIX}/${file}")
+    message(FATAL_ERROR "not installed: ${file}")
+  endif()
+endforeach()
+file(REMOVE_RECURSE "${PREFIX}")

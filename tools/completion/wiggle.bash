@@ -1,0 +1,37 @@
+# Bash completion for wiggle (installed as share/bash-completion/completions/wiggle):
+# subcommands, their options, config keys after --set, files and directories elsewhere.
+_wiggle() {
+  local cur prev words cword
+  _init_completion || return
+  local commands="run sweep model plot export-lammps"
+  if [[ $cword -eq 1 ]]; then
+    COMPREPLY=($(compgen -W "$commands --help --version" -- "$cur"))
+    return
+  fi
+  case "$prev" in
+    --set)
+      # section.key= for every key that `wiggle run --help` lists under its [section]
+      local keys
+      keys=$(wiggle run --help 2>/dev/null |
+             awk '/^\[[a-z]+\]/ {s = substr($1, 2, length($1) - 2)} /^  [a-z_]+ = / {print s "." $1 "="}')
+      COMPREPLY=($(compgen -W "$keys" -- "$cur"))
+      compopt -o nospace
+      return ;;
+    --out) _filedir -d; return ;;
+    --threads|--jobs) return ;;
+  esac
+  local options
+  case "${words[1]}" in
+    run) options="--set --out --threads --resume --no-plot --check --help" ;;
+    sweep) options="--out --jobs --threads --dry-run --local --help" ;;
+    model) options="--shape --vertices --angle --format --periods --amplitude --geometry --clump --help" ;;
+    plot) options="--format --movie --times --out --geometry --help" ;;
+    export-lammps) options="--set --out --threads --help" ;;
+  esac
+  if [[ "$cur" == -* ]]; then
+    COMPREPLY=($(compgen -W "$options" -- "$cur"))
+  else
+    _filedir
+  fi
+}
+complete -F _wiggle wiggle
