@@ -174,7 +174,9 @@ const std::vector<KeyInfo>& keyTable() {
              above(0), noBound, "s", "wall-clock time between checkpoints (of the run, and of a bed being made)"),
       number("run.dump_interval", [](C& c) -> double& { return c.run.dumpInterval; }, atLeast(0),
              noBound, "sqrt(d/g)",
-             "interval of LAMMPS text dump frames (0 = none); a whole number of run.dt steps"),
+             "interval of LAMMPS text dump frames (0 = none); a whole number of run.dt steps. The default 9.7 "
+             "is no whole number of any period from 0.25 to 8, so the frames catch the drive at different "
+             "phases (a multiple of T would show the intruder at the same place in every frame)"),
       boolean("run.plot", [](C& c) -> bool& { return c.run.plot; },
               "draw the run's figures at the end"),
       boolean("run.bed_history", [](C& c) -> bool& { return c.run.keepBedHistory; },

@@ -58,7 +58,7 @@ struct RunDef {
   double duration = 100.0;         // run.duration: t_total [sqrt(d/g)]
   double sampleInterval = 0.05;    // run.sample_interval: trajectory sampling [sqrt(d/g)]
   double checkpointInterval = 300; // run.checkpoint_interval: wall-clock seconds between checkpoints
-  double dumpInterval = 10.0;      // run.dump_interval: LAMMPS dump frames every ... (0 = none) [sqrt(d/g)]
+  double dumpInterval = 9.7;       // run.dump_interval: LAMMPS dump frames every ... (0 = none) [sqrt(d/g)]
   bool plot = true;                // run.plot: draw the run's figures at the end
   bool keepBedHistory = true;      // run.bed_history: start with the bed's tangential springs (false: unloaded)
 };
