@@ -8,7 +8,8 @@ cd "$(dirname "$0")/.."
 
 packages=(build-essential cmake libgtest-dev libgmock-dev libbenchmark-dev libtomlplusplus-dev libcli11-dev
           nlohmann-json3-dev libomp-dev libopenmpi-dev openmpi-bin python3 python3-matplotlib python3-numpy
-          clang-14 libclang-rt-14-dev)  # clang: the fuzz and tsan presets (docs/RELIABILITY.md)
+          clang-14 libclang-rt-14-dev   # clang: the fuzz and tsan presets (docs/RELIABILITY.md)
+          ffmpeg)                       # wiggle plot --movie
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

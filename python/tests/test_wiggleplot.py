@@ -286,11 +286,18 @@ class FigureFilesTest(DataDirs):
         synthetic.write_run(d, with_fields=False, with_dump=False, with_model=False)
         os.remove(os.path.join(d, "phase_rates.csv"))
         code, out, err = self.run_cli(d, "--format", "png", "--movie")
+        if runplots.find_ffmpeg() is None:  # --movie without ffmpeg: one line, status 3, nothing drawn
+            self.assertEqual(code, 3, err)
+            self.assertEqual(len(err.strip().splitlines()), 1)
+            self.assertIn("ffmpeg", err)
+            self.assertFalse(os.path.exists(os.path.join(d, "figures")))
+            code, out, err = self.run_cli(d, "--format", "png")
         self.assertEqual(code, 0, err)
         self.assert_files(os.path.join(d, "figures"), ["trajectory.png"])
-        for skipped in ("snapshots skipped", "phase-rate figure skipped", "field maps skipped",
-                        "movie skipped"):
+        for skipped in ("snapshots skipped", "phase-rate figure skipped", "field maps skipped"):
             self.assertIn(skipped, out)
+        if runplots.find_ffmpeg() is not None:
+            self.assertIn("movie skipped", out)  # no dump to make it from
 
     def test_bad_input_is_one_line_and_status_2(self):
         code, _, err = self.run_cli(os.path.join(self.tmp, "nowhere"))

@@ -78,6 +78,9 @@ def main(argv=None):
     from wiggleplot import geomplots, readers, runplots, sweepplots
     from wiggleplot.report import Report
 
+    if args.movie and runplots.find_ffmpeg() is None:  # asked for, so its absence is an error
+        return fail("--movie needs ffmpeg, which is not installed (Debian: apt-get install ffmpeg)", 3)
+
     formats = [f.strip().lower() for f in args.format.split(",") if f.strip()]
     bad = [f for f in formats if f not in KNOWN_FORMATS]
     if not formats or bad:

@@ -334,8 +334,13 @@ def plot_fields(run, out_dir, formats):
 
 # --- movie ------------------------------------------------------------------------------------------
 
+def find_ffmpeg():
+    """The ffmpeg executable the movie needs, or None."""
+    return shutil.which("ffmpeg") or ("/usr/bin/ffmpeg" if os.path.exists("/usr/bin/ffmpeg") else None)
+
+
 def write_movie(run, out_dir, fps=10):
-    ffmpeg = shutil.which("ffmpeg") or ("/usr/bin/ffmpeg" if os.path.exists("/usr/bin/ffmpeg") else None)
+    ffmpeg = find_ffmpeg()
     if ffmpeg is None:
         run.report.note("ffmpeg not found: movie skipped (apt-get install ffmpeg)")
         return
