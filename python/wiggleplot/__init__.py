@@ -10,6 +10,39 @@ and `wiggle model` write (docs/OUTPUT-FORMATS.md) and never re-derives physics. 
 - sweepplots: figures of a sweep directory (paper figs 2, 5, 6, 8, 14, Table 1)
 - geomplots: the intruder geometry figure (paper fig 13)
 - cli:       `python3 -m wiggleplot DIR` / `--geometry a.json ... --out DIR`
+- data:      runs and sweeps as pandas DataFrames, and `run()`, a thin driver of `wiggle run`
+
+For analysis (pandas from Debian: python3-pandas):
+
+    import wiggleplot as wp
+    sweep = wp.load_sweep("fig5")             # results.csv as a DataFrame
+    run = wp.load_case("fig5", "shape=disk_period=5")
+    run.trajectory.plot(x="t", y="y")
+    wp.plot_sweep("fig5", "fig5/figures")     # the paper's figures of a sweep
 """
 
+import os
+
+from wiggleplot.data import RunData, WiggleError, load_case, load_run, load_sweep, run  # noqa: F401
+
 __version__ = "0.1.0"
+
+
+def plot_sweep(sweep_dir, out_dir, formats=("png",)):
+    """Draws a sweep's figures (figs 5, 6, 14, Table 1, ...) into out_dir; returns the files written."""
+    from wiggleplot import sweepplots
+    from wiggleplot.report import Report
+    report = Report(quiet=True)
+    os.makedirs(out_dir, exist_ok=True)
+    sweepplots.plot_sweep(sweep_dir, out_dir, list(formats), report)
+    return list(report.written)
+
+
+def plot_run(run_dir, out_dir, formats=("png",)):
+    """Draws a run's figures (figs 2, 3-4, 8, 9-11) into out_dir; returns the files written."""
+    from wiggleplot import runplots
+    from wiggleplot.report import Report
+    report = Report(quiet=True)
+    os.makedirs(out_dir, exist_ok=True)
+    runplots.plot_run(run_dir, out_dir, list(formats), report)
+    return list(report.written)

@@ -1,0 +1,113 @@
+"""The pandas readers, the wiggle driver and the example notebook (examples/figures.ipynb)."""
+import os
+import shutil
+import stat
+import subprocess
+import sys
+import tempfile
+import unittest
+
+from tests import synthetic
+
+try:
+    import pandas  # noqa: F401
+    HAVE_PANDAS = True
+except ImportError:
+    HAVE_PANDAS = False
+
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+
+@unittest.skipUnless(HAVE_PANDAS, "pandas is not installed (tools/bootstrap.sh installs python3-pandas)")
+class DataTest(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.mkdtemp()
+
+    def tearDown(self):
+        shutil.rmtree(self.tmp)
+
+    def test_load_run_gives_frames_with_the_files_columns(self):
+        import wiggleplot as wp
+        d = os.path.join(self.tmp, "run")
+        synthetic.write_run(d)
+        run = wp.load_run(d)
+        self.assertEqual(list(run.trajectory.columns[:6]), ["t", "x", "y", "vx", "vy", "fy"])
+        self.assertEqual(len(run.phase_rates), 20)
+        self.assertIsNotNone(run.fields)
+        self.assertAlmostEqual(run.vy, run.summary["vy"])
+        bare = os.path.join(self.tmp, "bare")
+        synthetic.write_run(bare, with_fields=False, with_model=False)
+        self.assertIsNone(wp.load_run(bare).fields)
+        self.assertIsNone(wp.load_run(bare).model)
+        with self.assertRaises(FileNotFoundError):
+            wp.load_run(self.tmp)
+
+    def test_load_sweep_keeps_every_case_in_order(self):
+        import wiggleplot as wp
+        d = os.path.join(self.tmp, "sweep")
+        synthetic.write_sweep(d)
+        table = wp.load_sweep(d)
+        with open(os.path.join(d, "results.csv")) as f:
+            self.assertEqual(len(table), sum(1 for _ in f) - 1)
+        self.assertIn("drive.period", table.columns)
+        self.assertEqual(table["vy"].dtype.kind, "f")
+        first = wp.load_case(d, table.iloc[0])
+        self.assertEqual(first.dir, os.path.join(d, table.iloc[0]["run_dir"]))
+        self.assertEqual(wp.load_case(d, table.iloc[0]["case"]).dir, first.dir)
+        with self.assertRaises(KeyError):
+            wp.load_case(d, "no such case")
+
+    def _fake_wiggle(self, body):
+        path = os.path.join(self.tmp, "wiggle")
+        with open(path, "w") as f:
+            f.write("#!/bin/sh\n" + body)
+        os.chmod(path, os.stat(path).st_mode | stat.S_IEXEC)
+        return path
+
+    def test_run_passes_overrides_and_reads_the_result(self):
+        import wiggleplot as wp
+        out = os.path.join(self.tmp, "out")
+        log = os.path.join(self.tmp, "args")
+        # A stand-in for wiggle: records its arguments and writes a run directory.
+        script = (f'echo "$@" > {log}\n'
+                  f'{sys.executable} -c "import sys; sys.path.insert(0, {REPO!r} + \'/python\'); '
+                  f'from tests import synthetic; synthetic.write_run({out!r})"\n')
+        run = wp.run("case.toml", out, {"drive.period": 5, "intruder.shape": "triangle", "fields.phases": [0, 5]},
+                     wiggle=self._fake_wiggle(script), threads=1)
+        with open(log) as f:
+            args = f.read().split()
+        self.assertEqual(args[:5], ["run", "case.toml", "--out", out, "--no-plot"])
+        self.assertIn("drive.period=5", args)
+        self.assertIn('intruder.shape="triangle"', args)
+        self.assertIn("fields.phases=[0,", args)
+        self.assertEqual(args[-2:], ["--threads", "1"])
+        self.assertEqual(list(run.trajectory.columns[:3]), ["t", "x", "y"])
+
+    def test_run_raises_wiggles_own_message(self):
+        import wiggleplot as wp
+        fake = self._fake_wiggle('echo "wiggle: warning: a note" >&2\n'
+                                 'echo "wiggle: drive.period = 5.00005: must be a whole number of run.dt steps" >&2\n'
+                                 "exit 2\n")
+        with self.assertRaises(wp.WiggleError) as caught:
+            wp.run(None, os.path.join(self.tmp, "x"), wiggle=fake)
+        self.assertEqual(caught.exception.status, 2)
+        self.assertEqual(str(caught.exception), "drive.period = 5.00005: must be a whole number of run.dt steps")
+
+    @unittest.skipUnless(shutil.which("jupyter-nbconvert") or os.path.exists("/usr/bin/jupyter-nbconvert"),
+                         "jupyter-nbconvert is not installed (tools/bootstrap.sh installs it)")
+    def test_example_notebook_runs_on_a_sweep(self):
+        d = os.path.join(self.tmp, "sweep")
+        synthetic.write_sweep(d)
+        env = dict(os.environ, WIGGLE_SWEEP_DIR=d, MPLBACKEND="Agg",
+                   PYTHONPATH=os.path.join(REPO, "python") + os.pathsep + os.environ.get("PYTHONPATH", ""))
+        done = subprocess.run(["/usr/bin/python3", "-m", "nbconvert", "--to", "notebook", "--execute",
+                               "--output-dir", self.tmp, "--ExecutePreprocessor.timeout=120",
+                               os.path.join(REPO, "examples", "figures.ipynb")],
+                              env=env, capture_output=True, text=True)
+        self.assertEqual(done.returncode, 0, done.stderr[-2000:])
+        for name in ("rate_vs_period.png", "rate_map.png"):
+            self.assertTrue(os.path.exists(os.path.join(d, "figures", name)), name)
+
+
+if __name__ == "__main__":
+    unittest.main()

@@ -1,0 +1,127 @@
+"""Runs and sweeps as pandas DataFrames, for analysis in Python or Jupyter, and a thin driver of the
+`wiggle` command. Units follow docs/OUTPUT-FORMATS.md: lengths in d (mean grain diameter), times in
+sqrt(d/g), velocities in sqrt(g d), forces in rho d^3 g; summary.json's keys, types and units are
+listed in docs/summary-schema.json. Needs pandas (Debian: python3-pandas); the figure code does not."""
+import dataclasses
+import json
+import os
+import subprocess
+
+from wiggleplot import readers
+
+
+def _pandas():
+    try:
+        import pandas
+    except ImportError as e:  # only this module needs it
+        raise ImportError("wiggleplot.data needs pandas (Debian: apt-get install python3-pandas)") from e
+    return pandas
+
+
+def _frame(path):
+    """A CSV file as a DataFrame, or None when it does not exist."""
+    if not os.path.exists(path):
+        return None
+    return _pandas().read_csv(path)
+
+
+@dataclasses.dataclass
+class RunData:
+    """One run directory. `trajectory`: t, x, y, vx, vy, fy (the intruder centre [d, sqrt(g d)] and
+    its vertical contact force); `phase_rates`: bin, phase_center (10 phi / pi), vy_mean, samples;
+    `fields`: phase, x, y, phi, vx, vy, sxx, sxy, syy, pressure, frames (or None when fields were
+    off); `summary`: summary.json as a dict (None for an unfinished run); `model`: model.json (or
+    None); `config`: the run's configuration as a nested dict (config.toml)."""
+    dir: str
+    summary: dict
+    trajectory: object
+    phase_rates: object
+    fields: object
+    model: dict
+    config: dict
+
+    @property
+    def vy(self):
+        """The paper's rise rate [sqrt(g d)], or None for an unfinished run."""
+        return None if self.summary is None else self.summary.get("vy")
+
+
+def load_run(run_dir):
+    """Reads a run directory (`wiggle run --out DIR`, or a sweep's DIR/cases/NAME). Files that are
+    not there (a run still going, fields off) are None; a directory without a trajectory or a
+    summary is refused with FileNotFoundError."""
+    summary_path = os.path.join(run_dir, "summary.json")
+    trajectory_path = os.path.join(run_dir, "trajectory.csv")
+    if not os.path.exists(summary_path) and not os.path.exists(trajectory_path):
+        raise FileNotFoundError(f"{run_dir}: no summary.json or trajectory.csv: not a run directory")
+    summary = readers.read_json(summary_path) if os.path.exists(summary_path) else None
+    model_path = os.path.join(run_dir, "model.json")
+    config = readers.read_config(run_dir)
+    return RunData(dir=run_dir, summary=summary, trajectory=_frame(trajectory_path),
+                   phase_rates=_frame(os.path.join(run_dir, "phase_rates.csv")),
+                   fields=_frame(os.path.join(run_dir, "fields.csv")),
+                   model=readers.read_json(model_path) if os.path.exists(model_path) else None,
+                   config=config)
+
+
+def load_sweep(sweep_dir):
+    """results.csv of a sweep directory as a DataFrame, one row per case in case order, pending and
+    failed cases included (their numbers NaN): case, run_dir, status, vy, vy_slope, wall_s, one
+    column per parameter named by its config key (drive.period, intruder.shape, ...), n_grains,
+    steps, ns_per_particle_step, state_hash, error. `load_case(sweep_dir, row)` reads a case's run."""
+    path = os.path.join(sweep_dir, "results.csv")
+    if not os.path.exists(path):
+        raise FileNotFoundError(f"{sweep_dir}: no results.csv: not a sweep directory")
+    return _pandas().read_csv(path, keep_default_na=True)
+
+
+def load_case(sweep_dir, row):
+    """The run of one case of a sweep: `row` is a row of load_sweep's DataFrame or a case name."""
+    if isinstance(row, str):
+        table = load_sweep(sweep_dir)
+        match = table[table["case"] == row]
+        if match.empty:
+            raise KeyError(f"{sweep_dir}: no case named {row!r}")
+        row = match.iloc[0]
+    return load_run(os.path.join(sweep_dir, str(row["run_dir"])))
+
+
+class WiggleError(RuntimeError):
+    """`wiggle` exited with an error; the message is its one-line error."""
+
+    def __init__(self, message, status):
+        super().__init__(message)
+        self.status = status
+
+
+def run(config=None, out="wiggle-out", overrides=None, wiggle="wiggle", threads=None, resume=False):
+    """Runs `wiggle run [CONFIG] --out OUT --set key=value ... --no-plot` and returns load_run(OUT).
+    `overrides` maps config keys to values ({"drive.period": 5, "intruder.shape": "triangle"}); a
+    value is passed as TOML (strings quoted, lists as [a, b]). Raises WiggleError with wiggle's own
+    one-line message and exit status when the run fails or the input is refused."""
+    command = [wiggle, "run"]
+    if config is not None:
+        command.append(os.fspath(config))
+    command += ["--out", os.fspath(out), "--no-plot"]
+    for key, value in (overrides or {}).items():
+        command += ["--set", f"{key}={_toml(value)}"]
+    if threads is not None:
+        command += ["--threads", str(threads)]
+    if resume:
+        command.append("--resume")
+    done = subprocess.run(command, capture_output=True, text=True)
+    if done.returncode != 0:
+        lines = [l for l in done.stderr.splitlines() if l.strip() and not l.startswith("wiggle: warning:")]
+        message = lines[-1] if lines else f"wiggle exited with status {done.returncode}"
+        raise WiggleError(message.removeprefix("wiggle: "), done.returncode)
+    return load_run(os.fspath(out))
+
+
+def _toml(value):
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, str):
+        return json.dumps(value)  # a TOML basic string
+    if isinstance(value, (list, tuple)):
+        return "[" + ", ".join(_toml(v) for v in value) + "]"
+    return repr(value)
