@@ -111,3 +111,23 @@ class DataTest(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class SchemaTest(unittest.TestCase):
+    """The package reads summary.json by the names of docs/summary-schema.json, which a C++ test
+    keeps equal to the table that writes the file."""
+
+    def test_every_summary_key_the_package_reads_is_in_the_schema(self):
+        import json
+        import re
+        with open(os.path.join(REPO, "docs", "summary-schema.json")) as f:
+            names = {field["name"] for field in json.load(f)}
+        used = set()
+        package = os.path.join(REPO, "python", "wiggleplot")
+        for name in os.listdir(package):
+            if name.endswith(".py"):
+                with open(os.path.join(package, name)) as f:
+                    text = f.read()
+                used |= set(re.findall(r'summary(?:\.get\(|\[)"([a-z_]+)"', text))
+        self.assertTrue(used, "no summary key found: the pattern no longer matches the code")
+        self.assertEqual(used - names, set())

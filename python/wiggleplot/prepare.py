@@ -9,10 +9,10 @@ from matplotlib.path import Path
 # Column names of results.csv (config keys) that the sweep figures know by meaning.
 SHAPE, AMPLITUDE, PERIOD, MU, SEED = (
     "intruder.shape", "drive.amplitude", "drive.period", "contact.mu", "box.seed")
-# Columns of results.csv that are outcomes or bookkeeping, never parameters.
-NON_PARAMETERS = {"case", "run_dir", "status", "vy", "vy_slope", "wall_s", "t_i", "t_f",
-                  "y_initial", "y_final", "n_grains", "steps", "threads", "ns_per_particle_step",
-                  "state_hash", "error", "case_label"}
+# Columns of results.csv that are outcomes or bookkeeping, never parameters (src/sweep/ResultsTable.h;
+# case_label is a [[case]]'s name, which the figures label by already).
+NON_PARAMETERS = {"case", "run_dir", "status", "vy", "vy_slope", "wall_s", "n_grains", "steps",
+                  "ns_per_particle_step", "state_hash", "error", "case_label"}
 
 
 # --- one run ------------------------------------------------------------------------------------
@@ -62,7 +62,7 @@ def model_rate_at(model, period):
     t_rise = model.get("T_rise", model.get("T_rise_left"))
     if t_rise is not None and period <= t_rise:
         return None
-    run_period = model.get("period", model.get("drive_period"))
+    run_period = model.get("period")  # model.json files before 0.1.0 (git ...) lack it: trust vy_at_period
     if "vy_at_period" in model and (run_period is None or abs(run_period - period) < 1e-12):
         # The C++ side evaluated the model at the run's own period: exact, no interpolation.
         return float(model["vy_at_period"])

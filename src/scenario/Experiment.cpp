@@ -72,6 +72,7 @@ void writeModel(const std::string& path, const RunConfig& config, const Shape& s
   j["T_rise_left"] = g.left.tRise;
   j["T_rise_right"] = g.right.tRise;
   j["amplitude"] = config.drive.amplitude;
+  j["period"] = config.drive.period;  // the period vy_at_period is for
   nlohmann::json curve = nlohmann::json::array();
   for (int k = 1; k <= 120; ++k) {
     const double period = 0.1 * k;
