@@ -12,6 +12,7 @@ void addSweepCommand(CLI::App& app);
 void addModelCommand(CLI::App& app);
 void addPlotCommand(CLI::App& app);
 void addExportLammpsCommand(CLI::App& app);
+void addStatusCommand(CLI::App& app);
 
 // Runs the plotting package (`/usr/bin/python3 -m wiggleplot ARGS...`, PlotCommand.cpp) and returns
 // its exit status.

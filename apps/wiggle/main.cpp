@@ -65,6 +65,7 @@ int main(int argc, char** argv) {
   wiggle::cli::addModelCommand(app);
   wiggle::cli::addPlotCommand(app);
   wiggle::cli::addExportLammpsCommand(app);
+  wiggle::cli::addStatusCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -259,3 +259,39 @@ TEST_F(Cli, RunCheckPrintsWhatTheRunWouldBeAndWritesNothing) {
 }
 
 }  // namespace
+
+namespace wiggle {
+namespace {
+
+// `wiggle status DIR` on a sweep directory as a stopped sweep leaves it: every state counted, the
+// running case's progress from its log, the failure's error (a quoted CSV cell with a comma), the
+// estimate from the finished cases over the sweep's jobs, and no sweep holding the directory.
+TEST_F(Cli, StatusSummarisesASweepDirectory) {
+  const fs::path dir = root_ / "sweep";
+  fs::create_directories(dir / "cases" / "b");
+  std::ofstream(dir / "results.csv")
+      << "case,run_dir,status,vy,vy_slope,wall_s,drive.period,n_grains,steps,ns_per_particle_step,state_hash,error\n"
+      << "a,cases/a,ok,0.1,0.1,600,5,100,1000,50,abc,\n"
+      << "b,cases/b,running,,,,3,,,,,\n"
+      << "c,cases/c,failed,,,,1,,,,,\"box.width = 5 is too narrow, really\"\n"
+      << "d,cases/d,pending,,,,2,,,,,\n";
+  std::ofstream(dir / "cases" / "b" / "log.txt") << "2026-11-24 10:00:00  [run] 10%  t = 10 / 100\n"
+                                                  << "2026-11-24 10:00:30  [run] 25%  t = 25 / 100  ETA 1m\n";
+  std::ofstream(dir / "sweep.log") << "2026-11-24 09:00:00  wiggle sweep s: 4 cases; 2 jobs x 1 threads; host h\n";
+  const Result r = wiggle("status " + quoted(dir.string()));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("4 cases: 1 done, 1 running, 1 failed, 1 pending"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("no wiggle sweep is running"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("running  b (25 % of its run)  [stale: interrupted]"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("failed   c: box.width = 5 is too narrow, really"), std::string::npos) << r.out;
+  // 600 s per case x (0.75 + 1) cases left / 2 jobs = 525 s.
+  EXPECT_NE(r.out.find("about 8m45s"), std::string::npos) << r.out;
+
+  expectOneLineError(wiggle("status " + quoted(root_.string())), {"results.csv", "not a sweep directory"},
+                     "status of a non-sweep directory");
+  expectOneLineError(wiggle("status " + quoted((root_ / "nowhere").string())), {"nowhere", "not a directory"},
+                     "status of a missing directory");
+}
+
+}  // namespace
+}  // namespace wiggle

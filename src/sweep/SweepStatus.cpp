@@ -1,0 +1,189 @@
+#include "sweep/SweepStatus.h"
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+
+#include "core/Error.h"
+#include "core/Format.h"
+#include "io/AtomicFile.h"
+
+namespace wiggle {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// True when another process (a running sweep) holds the lock SweepRunner takes on the directory.
+bool lockHeld(const std::string& dir) {
+  const std::string path = dir + "/.sweep.lock";
+  if (!fs::exists(path)) return false;
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return false;
+  const bool held = ::flock(fd, LOCK_SH | LOCK_NB) != 0;
+  if (!held) ::flock(fd, LOCK_UN);
+  ::close(fd);
+  return held;
+}
+
+// "[run] 43.2%  t = 43.2 / 100 ..." -> 0.432 from the last such line of a case's log.txt.
+double runFraction(const std::string& logPath) {
+  if (!fs::exists(logPath)) return -1.0;
+  std::istringstream lines(readFile(logPath));
+  double fraction = -1.0;
+  for (std::string line; std::getline(lines, line);) {
+    const auto at = line.find("[run] ");
+    if (at == std::string::npos) continue;
+    double percent = 0.0;
+    if (std::sscanf(line.c_str() + at, "[run] %lf%%", &percent) == 1) fraction = percent / 100.0;
+  }
+  return fraction;
+}
+
+// "... 1 jobs x 1 threads ..." in sweep.log's last start line.
+int jobsFromLog(const std::string& logPath) {
+  if (!fs::exists(logPath)) return 0;
+  std::istringstream lines(readFile(logPath));
+  int jobs = 0;
+  for (std::string line; std::getline(lines, line);) {
+    const auto at = line.find(" jobs x ");
+    if (at == std::string::npos) continue;
+    const auto start = line.rfind(' ', at - 1);
+    jobs = std::atoi(line.substr(start + 1, at - start - 1).c_str());
+  }
+  return jobs;
+}
+
+double number(const std::string& cell) {
+  try {
+    return cell.empty() ? 0.0 : std::stod(cell);
+  } catch (const std::exception&) {
+    return 0.0;
+  }
+}
+
+}  // namespace
+
+std::vector<std::vector<std::string>> parseCsv(const std::string& text) {
+  std::vector<std::vector<std::string>> rows;
+  std::vector<std::string> row;
+  std::string cell;
+  bool quoted = false, any = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (quoted) {
+      if (c == '"' && i + 1 < text.size() && text[i + 1] == '"') {
+        cell += '"';
+        ++i;
+      } else if (c == '"') {
+        quoted = false;
+      } else {
+        cell += c;
+      }
+    } else if (c == '"') {
+      quoted = any = true;
+    } else if (c == ',') {
+      row.push_back(std::move(cell));
+      cell.clear();
+      any = true;
+    } else if (c == '\n') {
+      row.push_back(std::move(cell));
+      cell.clear();
+      rows.push_back(std::move(row));
+      row.clear();
+      any = false;
+    } else if (c != '\r') {
+      cell += c;
+      any = true;
+    }
+  }
+  if (any || !cell.empty()) {
+    row.push_back(std::move(cell));
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+SweepStatus readSweepStatus(const std::string& dir) {
+  const std::string resultsPath = dir + "/results.csv";
+  if (!fs::is_directory(dir)) throw Error(dir + ": not a directory");
+  if (!fs::exists(resultsPath)) throw Error(dir + ": no results.csv: not a sweep directory");
+  const auto rows = parseCsv(readFile(resultsPath));
+  if (rows.empty()) throw Error(resultsPath + ": empty");
+  const std::vector<std::string>& header = rows.front();
+  auto column = [&](const char* name) {
+    const auto it = std::find(header.begin(), header.end(), name);
+    if (it == header.end()) throw Error(resultsPath + ": no column '" + name + "'");
+    return static_cast<std::size_t>(it - header.begin());
+  };
+  const std::size_t nameAt = column("case"), dirAt = column("run_dir"), statusAt = column("status"),
+                    vyAt = column("vy"), wallAt = column("wall_s"), errorAt = column("error");
+  SweepStatus s;
+  s.dir = dir;
+  s.sweepRunning = lockHeld(dir);
+  s.jobs = jobsFromLog(dir + "/sweep.log");
+  double finishedWall = 0.0, casesLeft = 0.0;
+  int finished = 0;
+  for (std::size_t r = 1; r < rows.size(); ++r) {
+    const auto& row = rows[r];
+    if (row.size() < header.size()) throw Error(resultsPath + ": row " + std::to_string(r + 1) + " is short");
+    CaseStatus c;
+    c.name = row[nameAt];
+    c.status = row[statusAt];
+    c.error = row[errorAt];
+    if (c.status == "ok") {
+      c.vy = number(row[vyAt]);
+      c.wallSeconds = number(row[wallAt]);
+      finishedWall += c.wallSeconds;
+      ++finished;
+    } else if (c.status == "running") {
+      c.fraction = runFraction(dir + "/" + row[dirAt] + "/log.txt");
+      casesLeft += 1.0 - std::max(0.0, c.fraction);
+    } else if (c.status == "pending") {
+      casesLeft += 1.0;
+    }
+    s.cases.push_back(std::move(c));
+  }
+  if (finished > 0) s.etaSeconds = finishedWall / finished * casesLeft / std::max(1, s.jobs);
+  return s;
+}
+
+std::string formatSweepStatus(const SweepStatus& s) {
+  int ok = 0, failed = 0, running = 0, pending = 0;
+  for (const CaseStatus& c : s.cases) {
+    ok += c.status == "ok";
+    failed += c.status == "failed";
+    running += c.status == "running";
+    pending += c.status == "pending";
+  }
+  std::ostringstream out;
+  out << "sweep " << s.dir << ": " << s.cases.size() << " cases: " << ok << " done, " << running << " running, "
+      << failed << " failed, " << pending << " pending; "
+      << (s.sweepRunning ? "a wiggle sweep is running in it"
+                         : "no wiggle sweep is running in it (run the same `wiggle sweep` command to continue)")
+      << "\n";
+  for (const CaseStatus& c : s.cases) {
+    if (c.status == "running")
+      out << "  running  " << c.name
+          << (c.fraction >= 0 ? " (" + formatNumber(100.0 * c.fraction, 3) + " % of its run)" : std::string(" (making its bed or starting)"))
+          << (s.sweepRunning ? "" : "  [stale: interrupted]") << "\n";
+    else if (c.status == "failed")
+      out << "  failed   " << c.name << ": " << c.error << "\n";
+  }
+  if (running + pending == 0)
+    out << "nothing left to run\n";
+  else if (s.etaSeconds < 0)
+    out << "time to go: unknown until a case has finished\n";
+  else
+    out << "time to go: about " << formatDuration(s.etaSeconds) << " (estimate: the finished cases' mean wall time x "
+        << "the cases left, over " << std::max(1, s.jobs) << " job" << (std::max(1, s.jobs) > 1 ? "s" : "")
+        << "; beds still to make are not counted)\n";
+  return out.str();
+}
+
+}  // namespace wiggle

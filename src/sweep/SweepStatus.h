@@ -1,0 +1,37 @@
+#pragma once
+// `wiggle status DIR`: a sweep directory at a glance, from what the sweep leaves on disk (results.csv,
+// each case's log.txt, sweep.log, the directory's lock), without touching it: per case done,
+// running (with how far it got), failed (with its error) or pending, and an estimated time to go.
+#include <string>
+#include <vector>
+
+namespace wiggle {
+
+struct CaseStatus {
+  std::string name;
+  std::string status;   // ok | failed | running | pending, as results.csv says
+  std::string error;    // failed: the recorded error
+  double vy = 0.0;      // ok: the rise rate
+  double wallSeconds = 0.0;  // ok: the case's wall time
+  double fraction = -1.0;    // running: the fraction of run.duration done (its log's last progress line), else -1
+};
+
+struct SweepStatus {
+  std::string dir;
+  std::vector<CaseStatus> cases;
+  bool sweepRunning = false;  // a wiggle sweep holds the directory's lock now
+  int jobs = 0;               // cases at once, from sweep.log's last start line (0 = unknown)
+  // Seconds to go: the finished cases' mean wall time, times the cases left (a running case counts
+  // for what it has left), over the jobs; negative when nothing has finished yet.
+  double etaSeconds = -1.0;
+};
+
+// Throws wiggle::Error when `dir` is not a sweep directory (no results.csv) or results.csv is unreadable.
+SweepStatus readSweepStatus(const std::string& dir);
+
+std::string formatSweepStatus(const SweepStatus& status);
+
+// The rows of a CSV text (RFC 4180: quoted cells may hold commas, quotes and newlines).
+std::vector<std::vector<std::string>> parseCsv(const std::string& text);
+
+}  // namespace wiggle
