@@ -16,6 +16,7 @@
 #include "core/Error.h"
 #include "core/StopSignal.h"
 #include "io/Config.h"
+#include "io/SweepSpec.h"
 #include "scenario/BedMaker.h"
 #include "scenario/Experiment.h"
 
@@ -271,6 +272,28 @@ TEST(BedMaker, DampedRelaxationRestsSoonerAndContinuesToTheSameBits) {
   ASSERT_TRUE(fs::exists(bedPartialPath(damped, bedKey(damped, clump))));
   EXPECT_EQ(obtainBed(damped, clump).world.stateHash(), bed.stateHash());
   fs::remove_all(scratch(""));
+}
+
+TEST(BedMaker, PaperDepthSweepsRunOnThePresetsBeds) {
+  // The study's results under results/paper_depth/ stand for configs/paper_depth.toml only if its
+  // sweeps pour the preset's beds: the same bed key once the preset takes the case's shape, seed and
+  // width (the keys the box and seed studies vary on purpose).
+  const std::string root = std::string(WIGGLE_SOURCE_DIR) + "/configs/";
+  const RunConfig preset = loadRunConfig(root + "paper_depth.toml", {});
+  EXPECT_EQ(preset.box.bedHeight - preset.intruder.y0, 105.0);  // the paper's depth
+  int compared = 0;
+  for (const char* file : {"paper_depth_box.toml", "paper_depth_seeds.toml", "paper_depth_table1.toml"}) {
+    for (const SweepCase& c : loadSweepSpec(root + "sweeps/" + file).cases) {
+      RunConfig expected = preset;
+      expected.box.width = c.config.box.width;
+      expected.box.seed = c.config.box.seed;
+      expected.intruder.shape = c.config.intruder.shape;
+      EXPECT_EQ(bedKey(c.config, prepareCase(c.config).clump), bedKey(expected, prepareCase(expected).clump))
+          << file << ", case " << c.name;
+      ++compared;
+    }
+  }
+  EXPECT_GE(compared, 30);
 }
 
 }  // namespace
