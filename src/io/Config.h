@@ -1,7 +1,7 @@
 #pragma once
 // Reading, checking and writing a run's configuration (docs/CONFIG.md; the struct is io/RunConfig.h).
 //
-// One table of key descriptors (Config.cpp, `keyTable()`) drives everything: for each TOML key it
+// One table of key descriptors (ConfigKeys.cpp, `keyTable()`) drives everything: for each TOML key it
 // holds the field it maps to, the value's kind, the allowed range, the unit and a one-line meaning.
 // The file reader, `--set`, validation, `configHelp()` and `toToml()` all walk that table, so a new
 // key is one new row and cannot be parsed by one path and forgotten by another.

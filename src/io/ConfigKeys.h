@@ -6,7 +6,10 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <limits>
 #include <vector>
+
+#include <toml++/toml.h>
 
 #include "io/RunConfig.h"
 
@@ -63,5 +66,21 @@ const std::vector<KeyInfo>& keyTable();
 const KeyInfo* findKey(std::string_view key);  // nullptr when there is no such key
 std::vector<std::string_view> sectionNames();
 bool isSection(std::string_view name);
+
+// TOML integers are signed 64-bit, so a seed above this could not be written back.
+constexpr std::uint64_t maxTomlInteger = static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max());
+
+// The text of values (io/ConfigText.cpp).
+// Shortest text that reads back to the same double; tomlStyle marks whole numbers as floats ("5.0").
+std::string roundTripText(double v, bool tomlStyle);
+std::string quoteToml(const std::string& s);
+// A key's value in `config`: TOML text (tomlStyle) or short display text.
+std::string valueText(const KeyInfo& k, const RunConfig& config, bool tomlStyle);
+// Any TOML value as text; strings are quoted when `quote` (always inside arrays and tables).
+std::string nodeText(const toml::node& n, bool quote);
+std::string typeName(const toml::node& n);  // "string", "array", ...
+std::string boundText(const Bound& lo, const Bound& hi);  // "> 0 and <= 1"
+// "" when v is finite and within the bounds, else what is wrong ("must be > 0").
+std::string rangeProblem(double v, const Bound& lo, const Bound& hi);
 
 }  // namespace wiggle::config_keys

@@ -1,0 +1,150 @@
+// validateRunConfig: the checks a whole config must pass before anything runs (each key's own range,
+// the rules between keys that need no intruder outline, the schedule on whole steps, and bounded
+// sizes), and wholeStepsIn, the one whole-steps rule.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <string>
+
+#include "core/Error.h"
+#include "io/Config.h"
+#include "io/ConfigKeys.h"
+
+namespace wiggle {
+
+using namespace config_keys;
+
+std::uint64_t wholeStepsIn(double interval, double dt) {
+  const double steps = interval / dt;
+  const double n = std::round(steps);
+  return n >= 1 && std::fabs(steps - n) <= 1e-9 * steps ? static_cast<std::uint64_t>(n) : 0;
+}
+
+namespace {
+
+// Each key's own range, from the table (the same check applySetting makes).
+void checkKeyRanges(const RunConfig& c) {
+  for (const KeyInfo& k : keyTable()) {
+    auto fail = [&](const std::string& problem) {
+      throw Error(std::string(k.name) + " = " + valueText(k, c, true) + ": " + problem);
+    };
+    RunConfig& m = mut(c);
+    switch (k.kind) {
+      case Kind::Number:
+        if (const std::string p = rangeProblem(k.number(m), k.lower, k.upper); !p.empty()) fail(p);
+        break;
+      case Kind::Integer: {
+        const std::uint64_t v = k.integer(m);
+        if (v > maxTomlInteger) fail("must be <= " + std::to_string(maxTomlInteger));
+        if (const std::string p = rangeProblem(static_cast<double>(v), k.lower, k.upper); !p.empty()) fail(p);
+        break;
+      }
+      case Kind::Choice: {
+        const std::string v = chosen(k, c);
+        if (std::find(k.choices.begin(), k.choices.end(), v) == k.choices.end()) {
+          std::string options;
+          for (const std::string_view o : k.choices) options += (options.empty() ? "" : ", ") + std::string(o);
+          fail("must be one of " + options);
+        }
+        break;
+      }
+      case Kind::NumberList: {
+        const auto& v = k.numberList(m);
+        for (std::size_t i = 0; i < v.size(); ++i) {
+          if (const std::string p = rangeProblem(v[i], k.lower, k.upper); !p.empty()) {
+            fail("element " + std::to_string(i + 1) + " " + p);
+          }
+        }
+        break;
+      }
+      case Kind::PointList:
+        for (const auto& p : k.pointList(m)) {
+          if (!std::isfinite(p[0]) || !std::isfinite(p[1])) fail("every coordinate must be finite");
+        }
+        break;
+      case Kind::Boolean:
+      case Kind::Text: break;
+    }
+  }
+
+}
+
+std::string num(double v) { return roundTripText(v, false); }
+
+// The rules between the box, the grains and the intruder that need no outline (scenario/Case
+// checks those that do).
+void checkShapeKeys(const RunConfig& c) {
+  if (c.box.width != std::floor(c.box.width)) {
+    throw Error("box.width = " + num(c.box.width) + ": must be a whole number (the base is a row of "
+                "unit spheres spaced 1 apart)");
+  }
+  if (c.grains.dMax < c.grains.dMin) {
+    throw Error("grains.d_max = " + num(c.grains.dMax) + ": must be >= grains.d_min (" +
+                num(c.grains.dMin) + ")");
+  }
+  const bool polygon = c.intruder.shape == "polygon";
+  if (polygon && c.intruder.vertices.size() < 3) {
+    throw Error("intruder.vertices: shape = \"polygon\" needs at least 3 [x, y] pairs, got " +
+                std::to_string(c.intruder.vertices.size()));
+  }
+  if (!polygon && !c.intruder.vertices.empty()) {
+    throw Error("intruder.vertices: only used with shape = \"polygon\", but shape = \"" +
+                c.intruder.shape + "\" (remove the vertices or set the shape to \"polygon\")");
+  }
+  if (c.intruder.y0 >= c.box.bedHeight) {
+    throw Error("intruder.y0 = " + num(c.intruder.y0) + ": must be < box.bed_height (" +
+                num(c.box.bedHeight) + ")");
+  }
+}
+
+void requireWholeSteps(const char* key, double interval, double dt, const char* must) {
+  if (!wholeStepsIn(interval, dt))
+    throw Error(std::string(key) + " = " + num(interval) + ": must be " + must + " run.dt steps (" + num(interval) +
+                " / " + num(dt) + " = " + num(interval / dt) + ")");
+}
+
+// Every interval falls on a step.
+void checkSchedule(const RunConfig& c) {
+  requireWholeSteps("drive.period", c.drive.period, c.run.dt, "a whole number of");
+  if (c.run.duration < c.run.dt) {
+    throw Error("run.duration = " + num(c.run.duration) + ": must be >= run.dt (" + num(c.run.dt) + ")");
+  }
+  requireWholeSteps("run.duration", c.run.duration, c.run.dt, "a whole number of");
+  requireWholeSteps("run.sample_interval", c.run.sampleInterval, c.run.dt, "a whole number of");
+  if (c.run.dumpInterval > 0) requireWholeSteps("run.dump_interval", c.run.dumpInterval, c.run.dt, "0 or a whole number of");
+}
+
+// Absurd sizes are refused here, before anything is allocated or run: the step counter, the
+// trajectory kept in memory and the field sums (one grid of 7 doubles per phase) stay bounded.
+void checkSizes(const RunConfig& c) {
+  constexpr double kMaxSteps = 1e12, kMaxSamples = 1e8, kMaxFieldBytes = 4e9;
+  if (c.run.duration / c.run.dt > kMaxSteps) {
+    throw Error("run.duration = " + num(c.run.duration) + ": " + num(c.run.duration / c.run.dt) +
+                " time steps of run.dt = " + num(c.run.dt) + ", more than the 1e12 wiggle accepts");
+  }
+  if (c.run.duration / c.run.sampleInterval > kMaxSamples) {
+    throw Error("run.sample_interval = " + num(c.run.sampleInterval) + ": " +
+                num(c.run.duration / c.run.sampleInterval) +
+                " trajectory samples over run.duration, more than the 1e8 wiggle keeps");
+  }
+  if (c.fields.enabled) {
+    const double side = std::floor(2.0 * c.fields.radius / c.fields.spacing + 1e-9) + 1.0;
+    const double bytes = 7.0 * 8.0 * side * side * static_cast<double>(c.fields.phases.size());
+    if (bytes > kMaxFieldBytes) {
+      throw Error("fields: " + std::to_string(c.fields.phases.size()) + " fields.phases on a grid of " + num(side) +
+                  " x " + num(side) + " points (fields.radius / fields.spacing) need " + num(bytes / 1e9) +
+                  " GB, more than the 4 GB wiggle accepts");
+    }
+  }
+}
+
+}  // namespace
+
+void validateRunConfig(const RunConfig& c) {
+  checkKeyRanges(c);
+  checkShapeKeys(c);
+  checkSchedule(c);
+  checkSizes(c);
+}
+
+}  // namespace wiggle
