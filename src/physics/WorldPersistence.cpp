@@ -85,7 +85,12 @@ void World::save(BinaryWriter& out) const {
   out.value(margins_.speed);
 }
 
-World World::load(BinaryReader& in) {
+namespace {
+
+// World::load's parts, in file order. Each reads its fields and checks them against what is
+// already read, so a damaged file is refused with what is wrong rather than loaded.
+
+WorldDef readDef(BinaryReader& in) {
   WorldDef def;
   def.boxWidth = in.value<double>();
   def.dt = in.value<double>();
@@ -107,9 +112,10 @@ World World::load(BinaryReader& in) {
   def.referenceImpactSpeed = in.value<double>();
   def.maxSpeedFactor = in.value<double>();
   def.minStepsPerContact = in.value<double>();
-  World w(def);
+  return def;
+}
 
-  ParticleStore& s = w.store_;
+void readParticles(BinaryReader& in, ParticleStore& s) {
   s.grainCount = in.value<std::uint32_t>();
   for (auto* v : {&s.x, &s.y, &s.vx, &s.vy, &s.omega, &s.fx, &s.fy, &s.torque, &s.radius, &s.invMass,
                   &s.invInertia, &s.mass})
@@ -120,22 +126,24 @@ World World::load(BinaryReader& in) {
                         &s.invInertia, &s.mass})
     if (v->size() != n) throw Error(in.what() + " is corrupt: particle arrays differ in length");
   if (s.tag.size() != n || s.grainCount > n) throw Error(in.what() + " is corrupt: particle counts disagree");
+}
 
-  NeighbourList& list = w.list_;
+// `particles`: the number of particles the partners must index.
+void readNeighbourList(BinaryReader& in, NeighbourList& list, std::size_t particles, double boxWidth) {
   list.rowStart = in.array<std::uint32_t>();
   list.partner = in.array<std::uint32_t>();
   list.shearX = in.array<double>();
   list.shearY = in.array<double>();
   const std::size_t pairs = list.partner.size();
-  // The stale flag is read further down; a list saved stale (grains added or removed since its
-  // build) may not match the grain count, and is rebuilt before use anyway.
+  // The stale flag is read later (World::load); a list saved stale (grains added or removed since
+  // its build) may not match the grain count, and is rebuilt before use anyway.
   const bool neverBuilt = list.rowStart.empty() && pairs == 0;
   bool listOk = neverBuilt || (!list.rowStart.empty() && list.shearX.size() == pairs &&
                                list.shearY.size() == pairs && list.rowStart.front() == 0 &&
                                list.rowStart.back() == pairs);
   for (std::size_t i = 0; listOk && i + 1 < list.rowStart.size(); ++i)
     listOk = list.rowStart[i] <= list.rowStart[i + 1];
-  for (std::size_t k = 0; listOk && k < pairs; ++k) listOk = list.partner[k] < n;
+  for (std::size_t k = 0; listOk && k < pairs; ++k) listOk = list.partner[k] < particles;
   // Row i holds partners above i in ascending order: the force blocks rely on it (a pair only ever
   // adds to its own block's grains or, later, to a cross partner).
   for (std::size_t i = 0; listOk && i + 1 < list.rowStart.size(); ++i)
@@ -145,9 +153,13 @@ World World::load(BinaryReader& in) {
   list.forceX.assign(pairs, 0.0);
   list.forceY.assign(pairs, 0.0);
   list.torqueArm.assign(pairs, 0.0);
-  if (!neverBuilt) list.deriveIndex(forceBlockRows(def.boxWidth));
+  if (!neverBuilt) list.deriveIndex(forceBlockRows(boxWidth));
+}
 
-  IntruderPairs& ip = w.intruderPairs_;
+// The intruder's pairs, its clump, its state and its motion (pairs first, as saved; checked once the
+// clump they index is read).
+void readIntruder(BinaryReader& in, std::size_t particles, IntruderPairs& ip, bool& hasIntruder,
+                  ClumpDef& clump, ClumpState& state, ClumpMotion& motion) {
   ip.grain = in.array<std::uint32_t>();
   ip.atom = in.array<std::uint32_t>();
   ip.shearX = in.array<double>();
@@ -156,36 +168,46 @@ World World::load(BinaryReader& in) {
   ip.forceY.assign(ip.grain.size(), 0.0);
   ip.torqueArm.assign(ip.grain.size(), 0.0);
 
-  w.hasIntruder_ = in.value<std::uint8_t>() != 0;
-  w.clump_.offsetX = in.array<double>();
-  w.clump_.offsetY = in.array<double>();
-  w.clump_.atomRadius = in.value<double>();
-  w.clump_.mass = in.value<double>();
+  hasIntruder = in.value<std::uint8_t>() != 0;
+  clump.offsetX = in.array<double>();
+  clump.offsetY = in.array<double>();
+  clump.atomRadius = in.value<double>();
+  clump.mass = in.value<double>();
   if (ip.atom.size() != ip.grain.size() || ip.shearX.size() != ip.grain.size() ||
-      ip.shearY.size() != ip.grain.size() || w.clump_.offsetX.size() != w.clump_.offsetY.size())
+      ip.shearY.size() != ip.grain.size() || clump.offsetX.size() != clump.offsetY.size())
     throw Error(in.what() + " is corrupt: intruder arrays differ in length");
   for (std::size_t p = 0; p < ip.grain.size(); ++p)
-    if (ip.grain[p] >= n || ip.atom[p] >= w.clump_.offsetX.size())
+    if (ip.grain[p] >= particles || ip.atom[p] >= clump.offsetX.size())
       throw Error(in.what() + " is corrupt: an intruder pair points outside the arrays");
-  w.clumpState_.x = in.value<double>();
-  w.clumpState_.y = in.value<double>();
-  w.clumpState_.vx = in.value<double>();
-  w.clumpState_.vy = in.value<double>();
-  w.clumpState_.contactFx = in.value<double>();
-  w.clumpState_.contactFy = in.value<double>();
+  state.x = in.value<double>();
+  state.y = in.value<double>();
+  state.vx = in.value<double>();
+  state.vy = in.value<double>();
+  state.contactFx = in.value<double>();
+  state.contactFy = in.value<double>();
   const auto kind = in.value<std::uint8_t>();
   if (kind > 3) throw Error(in.what() + " is corrupt: unknown intruder motion");
-  w.motion_.kind = static_cast<HorizontalMotion>(kind);
-  w.motion_.x0 = in.value<double>();
-  w.motion_.amplitude = in.value<double>();
-  w.motion_.period = in.value<double>();
-  w.motion_.velocity = in.value<double>();
-  w.motion_.verticalFree = in.value<std::uint8_t>() != 0;
-  if (w.motion_.kind == HorizontalMotion::RampedSinusoid) {
-    w.motion_.rampTime = in.value<double>();
-    if (!(w.motion_.rampTime > 0 && std::isfinite(w.motion_.rampTime)))
+  motion.kind = static_cast<HorizontalMotion>(kind);
+  motion.x0 = in.value<double>();
+  motion.amplitude = in.value<double>();
+  motion.period = in.value<double>();
+  motion.velocity = in.value<double>();
+  motion.verticalFree = in.value<std::uint8_t>() != 0;
+  if (motion.kind == HorizontalMotion::RampedSinusoid) {
+    motion.rampTime = in.value<double>();
+    if (!(motion.rampTime > 0 && std::isfinite(motion.rampTime)))
       throw Error(in.what() + " is corrupt: a ramped drive without a ramp time");
   }
+}
+
+}  // namespace
+
+World World::load(BinaryReader& in) {
+  World w(readDef(in));
+  ParticleStore& s = w.store_;
+  readParticles(in, s);
+  readNeighbourList(in, w.list_, s.x.size(), w.def_.boxWidth);
+  readIntruder(in, s.x.size(), w.intruderPairs_, w.hasIntruder_, w.clump_, w.clumpState_, w.motion_);
 
   w.step_ = in.value<std::uint64_t>();
   w.rebuilds_ = in.value<std::uint64_t>();
@@ -193,7 +215,7 @@ World World::load(BinaryReader& in) {
   w.nextTag_ = in.value<std::uint32_t>();
   w.prepared_ = in.value<std::uint8_t>() != 0;
   w.listsStale_ = in.value<std::uint8_t>() != 0;
-  if (!w.listsStale_ && list.rowStart.size() != s.grainCount + 1)
+  if (!w.listsStale_ && w.list_.rowStart.size() != s.grainCount + 1)
     throw Error(in.what() + " is corrupt: the neighbour list does not match the grains");
   w.xAtBuild_ = in.array<double>();
   w.yAtBuild_ = in.array<double>();
