@@ -263,12 +263,95 @@ RunSummary summarise(const Case& run, const World& world, const RunState& state,
   return summary;
 }
 
+// Steps `world` to the end of the run, feeding the observers, with the progress line, periodic
+// checkpoints and the stop on a signal (a checkpoint, then an Error saying how to continue).
+// Returns false when options.stopAfterSteps stopped it first.
+bool stepToTheEnd(const Case& run, const RunOptions& options, const std::string& configToml, World& world,
+                  RunState& state, FieldObserver& fields, RunObservers& observers, ProgressLine& progress,
+                  LogFile& log) {
+  const RunSchedule& steps = run.steps;
+  const std::string& dir = options.outDir;
+  const double particles = static_cast<double>(world.particles().size());
+  auto lastCheckpoint = Clock::now();
+  auto chunkStart = Clock::now();
+  const std::uint64_t startStep = world.stepCount();
+  while (world.stepCount() < steps.total) {
+    world.step();
+    observers.afterStep(world);
+    const std::uint64_t step = world.stepCount();
+    if (step % 200 == 0 || step == steps.total) {
+      state.runWallSeconds += secondsSince(chunkStart);
+      chunkStart = Clock::now();
+      const double done = static_cast<double>(step - startStep);
+      const double nsPerParticleStep = state.runWallSeconds > 0 && step > 0
+                                           ? 1e9 * state.runWallSeconds / (particles * static_cast<double>(step))
+                                           : 0.0;
+      const double eta = done > 0 ? state.runWallSeconds / static_cast<double>(step) *
+                                        static_cast<double>(steps.total - step)
+                                  : -1.0;
+      progress.update("[run] " + formatNumber(100.0 * static_cast<double>(step) / static_cast<double>(steps.total)) +
+                      "%  t = " + formatNumber(world.time()) + " / " + formatNumber(run.config.run.duration) +
+                      "  ETA " + formatDuration(eta) + "  " + formatNumber(nsPerParticleStep) +
+                      " ns/particle-step  y = " + formatNumber(world.intruder().y));
+      if (const int signal = stopSignalReceived(); signal != 0) {
+        writeCheckpoint(dir, configToml, world, state, fields);
+        progress.clear();
+        log.line("interrupted by signal " + std::to_string(signal) + " at step " + std::to_string(step) +
+                 "; checkpoint written");
+        throw Error("interrupted at t = " + formatNumber(world.time()) + "; continue with: wiggle run --out " + dir +
+                    " --resume");
+      }
+      if (secondsSince(lastCheckpoint) >= run.config.run.checkpointInterval) {
+        writeCheckpoint(dir, configToml, world, state, fields);
+        lastCheckpoint = Clock::now();
+        log.line("checkpoint at step " + std::to_string(step));
+      }
+    }
+    if (options.stopAfterSteps && step - startStep >= options.stopAfterSteps) {
+      if (options.checkpointAtStop) writeCheckpoint(dir, configToml, world, state, fields);
+      return false;
+    }
+  }
+  state.runWallSeconds += secondsSince(chunkStart);
+  return true;
+}
+
+// The finished run's files: trajectory, phase rates, fields, model and the summary, written last.
+RunOutcome writeRunOutputs(const Case& run, const std::string& dir, const World& world, const RunState& state,
+                        const FieldObserver& fields, LogFile& log) {
+  const RunConfig& config = run.config;
+  const RiseRate rate = measureRiseRate(state.samples, config.run.duration, config.drive.period, run.surfacedHeight);
+  writeTrajectory(dir + "/trajectory.csv", state.samples);
+  writePhaseRates(dir + "/phase_rates.csv", state);
+  if (config.fields.enabled) fields.writeCsv(dir + "/fields.csv");
+  writeModel(dir + "/model.json", config, run.shape);
+
+  // Phase rates and field frames accumulate one step per step from 0.1 t_total on; a run extended
+  // (resumed with a longer run.duration) began at 0.1 of its first duration. Where that window
+  // began follows from the count of accumulated steps.
+  std::uint64_t accumulated = 0;
+  for (const std::uint64_t n : state.phaseCount) accumulated += n;
+  const double averagedFrom = static_cast<double>(world.stepCount() - accumulated) * config.run.dt;
+  const RunSummary summary = summarise(run, world, state, fields, rate, averagedFrom);
+  writeFileAtomically(dir + "/summary.json", toJson(summary).dump(2) + "\n");
+  log.line("done: vy = " + formatNumber(rate.vy) + ", slope = " + formatNumber(rate.slope) + ", " +
+           formatNumber(summary.nsPerParticleStep) + " ns/particle-step, state " + world.stateHash());
+  for (const std::string& w : summary.warnings) log.line("warning: " + w);
+  RunOutcome outcome;
+  outcome.status = "ok";
+  outcome.vy = rate.vy;
+  outcome.vySlope = rate.slope;
+  outcome.warnings = summary.warnings;
+  outcome.stateHash = world.stateHash();
+  outcome.summaryPath = dir + "/summary.json";
+  return outcome;
+}
+
 }  // namespace
 
 RunOutcome runExperiment(const Case& run, const RunOptions& options) {
   if (options.threads > 0) omp_set_num_threads(options.threads);
   const RunConfig& config = run.config;
-  const RunSchedule& steps = run.steps;
   const std::string dir = options.outDir;
   const std::string configToml = toToml(config);
   prepareRunDirectory(dir, config, configToml, options.resume);
@@ -308,87 +391,25 @@ RunOutcome runExperiment(const Case& run, const RunOptions& options) {
   RunObservers observers(run, state, fields, dumpPath);
   if (world.stepCount() == 0 && state.samples.empty()) {
     observers.sample(world);
-    if (steps.dumpEvery) observers.dumpFrame(world);
+    if (run.steps.dumpEvery) observers.dumpFrame(world);
   }
 
-  const double particles = static_cast<double>(world.particles().size());
-  auto lastCheckpoint = Clock::now();
-  auto chunkStart = Clock::now();
-  const std::uint64_t startStep = world.stepCount();
-  RunOutcome outcome;
+  bool finished = false;
   try {
-    while (world.stepCount() < steps.total) {
-      world.step();
-      observers.afterStep(world);
-      const std::uint64_t step = world.stepCount();
-      if (step % 200 == 0 || step == steps.total) {
-        state.runWallSeconds += secondsSince(chunkStart);
-        chunkStart = Clock::now();
-        const double done = static_cast<double>(step - startStep);
-        const double nsPerParticleStep = state.runWallSeconds > 0 && step > 0
-                                             ? 1e9 * state.runWallSeconds / (particles * static_cast<double>(step))
-                                             : 0.0;
-        const double eta = done > 0 ? state.runWallSeconds / static_cast<double>(step) *
-                                          static_cast<double>(steps.total - step)
-                                    : -1.0;
-        progress.update("[run] " + formatNumber(100.0 * static_cast<double>(step) / static_cast<double>(steps.total)) +
-                        "%  t = " + formatNumber(world.time()) + " / " + formatNumber(config.run.duration) + "  ETA " +
-                        formatDuration(eta) + "  " + formatNumber(nsPerParticleStep) + " ns/particle-step  y = " +
-                        formatNumber(world.intruder().y));
-        if (const int signal = stopSignalReceived(); signal != 0) {
-          writeCheckpoint(dir, configToml, world, state, fields);
-          progress.clear();
-          log.line("interrupted by signal " + std::to_string(signal) + " at step " + std::to_string(step) +
-                   "; checkpoint written");
-          throw Error("interrupted at t = " + formatNumber(world.time()) + "; continue with: wiggle run --out " + dir +
-                      " --resume");
-        }
-        if (secondsSince(lastCheckpoint) >= config.run.checkpointInterval) {
-          writeCheckpoint(dir, configToml, world, state, fields);
-          lastCheckpoint = Clock::now();
-          log.line("checkpoint at step " + std::to_string(step));
-        }
-      }
-      if (options.stopAfterSteps && step - startStep >= options.stopAfterSteps) {
-        if (options.checkpointAtStop) writeCheckpoint(dir, configToml, world, state, fields);
-        progress.clear();
-        outcome.status = "stopped";
-        return outcome;
-      }
-    }
+    finished = stepToTheEnd(run, options, configToml, world, state, fields, observers, progress, log);
   } catch (...) {
     progress.clear();
     throw;
   }
   progress.clear();
-  state.runWallSeconds += secondsSince(chunkStart);
+  if (!finished) {
+    RunOutcome stopped;
+    stopped.status = "stopped";
+    return stopped;
+  }
   writeCheckpoint(dir, configToml, world, state, fields);
   stopOnSignal.reset();
-
-  const RiseRate rate = measureRiseRate(state.samples, config.run.duration, config.drive.period, run.surfacedHeight);
-  writeTrajectory(dir + "/trajectory.csv", state.samples);
-  writePhaseRates(dir + "/phase_rates.csv", state);
-  if (config.fields.enabled) fields.writeCsv(dir + "/fields.csv");
-  writeModel(dir + "/model.json", config, run.shape);
-
-  // Phase rates and field frames accumulate one step per step from 0.1 t_total on; a run extended
-  // (resumed with a longer run.duration) began at 0.1 of its first duration. Where that window
-  // began follows from the count of accumulated steps.
-  std::uint64_t accumulated = 0;
-  for (const std::uint64_t n : state.phaseCount) accumulated += n;
-  const double averagedFrom = static_cast<double>(world.stepCount() - accumulated) * config.run.dt;
-  const RunSummary summary = summarise(run, world, state, fields, rate, averagedFrom);
-  writeFileAtomically(dir + "/summary.json", toJson(summary).dump(2) + "\n");
-  log.line("done: vy = " + formatNumber(rate.vy) + ", slope = " + formatNumber(rate.slope) + ", " +
-           formatNumber(summary.nsPerParticleStep) + " ns/particle-step, state " + world.stateHash());
-  for (const std::string& w : summary.warnings) log.line("warning: " + w);
-  outcome.status = "ok";
-  outcome.vy = rate.vy;
-  outcome.vySlope = rate.slope;
-  outcome.warnings = summary.warnings;
-  outcome.stateHash = world.stateHash();
-  outcome.summaryPath = dir + "/summary.json";
-  return outcome;
+  return writeRunOutputs(run, dir, world, state, fields, log);
 }
 
 }  // namespace wiggle
