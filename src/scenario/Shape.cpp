@@ -352,22 +352,18 @@ ClumpAtoms placeAtoms(const Shape& shape, const ClumpOptions& o) {
   return atoms;
 }
 
-ClumpQuality measureClump(const Shape& shape, const ClumpAtoms& atoms, const ClumpOptions& o) {
-  ClumpQuality q;
+namespace {
+
+// measureClump's parts: each measures one way the atoms may fail the outline (ClumpQuality).
+using DepthFunction = std::function<double(OutlinePoint)>;
+
+// Outline -> envelope: the largest distance from a point of the outline (sampled every <= 0.005 d)
+// to the surface atoms' circles.
+double largestOutlineGap(const Shape& shape, const ClumpAtoms& atoms) {
   const double r = atoms.atomRadius;
-  const auto depth = depthFunction(shape);
-  q.surfaceAtoms = atoms.surface.size();
-  q.guardAtoms = atoms.guard.size();
-
-  q.maxOvershoot = -std::numeric_limits<double>::infinity();
-  for (const auto* list : {&atoms.surface, &atoms.guard})
-    for (const OutlinePoint& c : *list) q.maxOvershoot = std::max(q.maxOvershoot, r - depth(c));
-
-  // Outline -> envelope: sample the outline every <= 0.005 d.
   const std::vector<OutlinePoint> none;
-  auto gapAt = [&](OutlinePoint p) {
-    q.maxOutlineGap = std::max(q.maxOutlineGap, minDistanceToAtoms(atoms.surface, none, p) - r);
-  };
+  double gap = 0.0;
+  auto gapAt = [&](OutlinePoint p) { gap = std::max(gap, minDistanceToAtoms(atoms.surface, none, p) - r); };
   if (shape.isDisk) {
     const int samples = static_cast<int>(std::ceil(2.0 * kPi * shape.diskRadius / 0.005));
     for (int k = 0; k < samples; ++k) {
@@ -382,10 +378,15 @@ ClumpQuality measureClump(const Shape& shape, const ClumpAtoms& atoms, const Clu
       for (int k = 0; k < m; ++k) gapAt(toPoint(a + (static_cast<double>(k) / m) * (b - a)));
     }
   }
+  return gap;
+}
 
-  // Envelope -> outline: points of each surface atom's circle that no other surface atom covers
-  // and that face outward (depth below r; the shell's inner side lies deeper than 2r - 0.1).
+// Envelope -> outline: the deepest point of a surface atom's circle that no other surface atom
+// covers and that faces outward (depth below r; the shell's inner side lies deeper than 2r - 0.1).
+double deepestEnvelopePoint(const ClumpAtoms& atoms, const DepthFunction& depth) {
+  const double r = atoms.atomRadius;
   const std::size_t ns = atoms.surface.size();
+  double deepest = 0.0;
   for (std::size_t i = 0; i < ns; ++i) {
     const OutlinePoint c = atoms.surface[i];
     std::vector<std::size_t> near;  // only atoms closer than 2r can cover a point of this circle
@@ -403,14 +404,18 @@ ClumpQuality measureClump(const Shape& shape, const ClumpAtoms& atoms, const Clu
           covered = true;
           break;
         }
-      if (!covered) q.maxEnvelopeDepth = std::max(q.maxEnvelopeDepth, dp);
+      if (!covered) deepest = std::max(deepest, dp);
     }
   }
+  return deepest;
+}
 
-  // Neighbouring surface atoms: a grain of radius R resting on two atoms a distance s apart sits
-  // with its centre sqrt((r+R)^2 - s^2/4) above their centre line, so it sinks
-  // (r+R) - sqrt((r+R)^2 - s^2/4) below their common tangent; if s/2 >= r+R it falls through.
-  const double rr = r + o.minGrainRadius;
+// Neighbouring surface atoms: a grain of radius R resting on two atoms a distance s apart sits
+// with its centre sqrt((r+R)^2 - s^2/4) above their centre line, so it sinks
+// (r+R) - sqrt((r+R)^2 - s^2/4) below their common tangent; if s/2 >= r+R it falls through.
+void measureSurfaceSpacing(const ClumpAtoms& atoms, const ClumpOptions& o, ClumpQuality& q) {
+  const double rr = atoms.atomRadius + o.minGrainRadius;
+  const std::size_t ns = atoms.surface.size();
   for (std::size_t i = 0; i < ns; ++i) {
     const OutlinePoint a = atoms.surface[i], b = atoms.surface[(i + 1) % ns];
     const double s = std::hypot(b[0] - a[0], b[1] - a[1]);
@@ -419,7 +424,40 @@ ClumpQuality measureClump(const Shape& shape, const ClumpAtoms& atoms, const Clu
                                          : rr - std::sqrt(rr * rr - 0.25 * s * s);
     q.maxLodgeDepth = std::max(q.maxLodgeDepth, lodge);
   }
+}
 
+// Interior coverage on a grid offset from the one placeAtoms used: how far a point inside the
+// outline lies beyond the reach of the smallest grain touching an atom.
+double largestUncoveredInterior(const Shape& shape, const ClumpAtoms& atoms, const ClumpOptions& o,
+                                const DepthFunction& depth) {
+  const double rr = atoms.atomRadius + o.minGrainRadius;
+  const OutlineBox box = boundingBox(shape.outline);
+  AtomCells cells(rr, atoms.surface);
+  for (const OutlinePoint& g : atoms.guard) cells.add(g);
+  const double step = 0.05;
+  double largest = 0.0;
+  for (double y = box.yMin + 0.013; y < box.yMax; y += step)
+    for (double x = box.xMin + 0.029; x < box.xMax; x += step) {
+      if (depth({x, y}) <= 0.0 || cells.anyWithin({x, y}, rr)) continue;
+      largest = std::max(largest, minDistanceToAtoms(atoms.surface, atoms.guard, {x, y}) - rr);
+    }
+  return largest;
+}
+
+}  // namespace
+
+ClumpQuality measureClump(const Shape& shape, const ClumpAtoms& atoms, const ClumpOptions& o) {
+  ClumpQuality q;
+  const double r = atoms.atomRadius;
+  const auto depth = depthFunction(shape);
+  q.surfaceAtoms = atoms.surface.size();
+  q.guardAtoms = atoms.guard.size();
+  q.maxOvershoot = -std::numeric_limits<double>::infinity();
+  for (const auto* list : {&atoms.surface, &atoms.guard})
+    for (const OutlinePoint& c : *list) q.maxOvershoot = std::max(q.maxOvershoot, r - depth(c));
+  q.maxOutlineGap = largestOutlineGap(shape, atoms);
+  q.maxEnvelopeDepth = deepestEnvelopePoint(atoms, depth);
+  measureSurfaceSpacing(atoms, o, q);
   q.minInteriorAngle = 180.0;
   if (!shape.isDisk) {
     for (std::size_t i = 0; i < shape.outline.size(); ++i) {
@@ -430,18 +468,7 @@ ClumpQuality measureClump(const Shape& shape, const ClumpAtoms& atoms, const Clu
       }
     }
   }
-
-  // Interior coverage on a grid offset from the one placeAtoms used.
-  const OutlineBox box = boundingBox(shape.outline);
-  AtomCells cells(rr, atoms.surface);
-  for (const OutlinePoint& g : atoms.guard) cells.add(g);
-  const double step = 0.05;
-  for (double y = box.yMin + 0.013; y < box.yMax; y += step)
-    for (double x = box.xMin + 0.029; x < box.xMax; x += step) {
-      if (depth({x, y}) <= 0.0 || cells.anyWithin({x, y}, rr)) continue;
-      const double excess = minDistanceToAtoms(atoms.surface, atoms.guard, {x, y}) - rr;
-      q.maxUncoveredInterior = std::max(q.maxUncoveredInterior, excess);
-    }
+  q.maxUncoveredInterior = largestUncoveredInterior(shape, atoms, o, depth);
   return q;
 }
 
