@@ -95,6 +95,9 @@ FieldObserver::FieldObserver(const FieldsDef& def, double boxWidth) : def_(def),
   // placed symmetrically about the centre.
   n_ = static_cast<std::size_t>(std::floor(steps + 1e-9)) + 1;
   cut_ = 3.0 * def.width;
+  reach_ = gridCoordinate(n_ - 1) + cut_;
+  invWidthSq_ = 1.0 / (def.width * def.width);
+  pointNorm_ = 1.0 / (std::numbers::pi * def.width * def.width);
   frames_.assign(def.phases.size(), 0);
   sums_.resize(def.phases.size());
   for (auto& g : sums_) g.resize(n_ * n_);
@@ -207,9 +210,7 @@ void FieldObserver::depositGrains(const World& world, double cx, double cy, Rows
                                   std::vector<double>& ex, std::vector<double>& ey) {
   const ParticleStore& s = world.particles();
   const double spacing = def_.spacing, cut = cut_, cutSq = cut * cut;
-  const double invWSq = 1.0 / (def_.width * def_.width);
-  const double norm = 1.0 / (std::numbers::pi * def_.width * def_.width);
-  const double reach = gridCoordinate(n_ - 1) + cut;
+  const double invWSq = invWidthSq_, norm = pointNorm_, reach = reach_;
   const std::size_t n = n_;
   forEachGrainImage(s, boxWidth_, cx, cy, reach, [&](std::uint32_t i, double gx, double gy) {
     const IndexRange rx = indexRange(gx - cut, gx + cut, spacing, n);
@@ -246,8 +247,7 @@ void FieldObserver::depositGrains(const World& world, double cx, double cy, Rows
 
 void FieldObserver::depositSegment(double px, double py, double bx, double by, double fx, double fy,
                                    Rows rows) {
-  const double spacing = def_.spacing, cut = cut_, cutSq = cut * cut;
-  const double reach = gridCoordinate(n_ - 1) + cut;
+  const double spacing = def_.spacing, cut = cut_, cutSq = cut * cut, reach = reach_;
   const double ymin = std::min(py, py + by), ymax = std::max(py, py + by);
   if (ymax < -reach || ymin > reach) return;
   const IndexRange ry = rowRange(ymin - cut, ymax + cut, spacing, n_, rows.begin, rows.end);
@@ -292,7 +292,7 @@ void FieldObserver::depositSegment(double px, double py, double bx, double by, d
 void FieldObserver::depositContacts(const World& world, double cx, double cy, Rows rows) {
   const ParticleStore& s = world.particles();
   const double width = boxWidth_;
-  const double reach = gridCoordinate(n_ - 1) + cut_;
+  const double reach = reach_;
 
   // Grain-grain and grain-base: force on the owner i from the partner j, branch i -> j.
   const NeighbourList& list = world.neighbours();
@@ -327,9 +327,7 @@ void FieldObserver::depositKinetic(const World& world, double cx, double cy, Row
   // Needs this frame's velocity field v(p) = momentum / Phi: depositGrains has run.
   const ParticleStore& s = world.particles();
   const double spacing = def_.spacing, cut = cut_, cutSq = cut * cut;
-  const double invWSq = 1.0 / (def_.width * def_.width);
-  const double norm = 1.0 / (std::numbers::pi * def_.width * def_.width);
-  const double reach = gridCoordinate(n_ - 1) + cut;
+  const double invWSq = invWidthSq_, norm = pointNorm_, reach = reach_;
   const std::size_t n = n_;
   forEachGrainImage(s, boxWidth_, cx, cy, reach, [&](std::uint32_t i, double gx, double gy) {
     const IndexRange rx = indexRange(gx - cut, gx + cut, spacing, n);

@@ -101,6 +101,9 @@ class FieldObserver {
   double boxWidth_;          // [d]
   std::size_t n_ = 0;        // grid points per side
   double cut_ = 0.0;         // 3w [d]
+  double reach_ = 0.0;       // a grain farther than this from the centre (in x or y) adds nothing [d]
+  double invWidthSq_ = 0.0;  // 1 / w^2
+  double pointNorm_ = 0.0;   // 1 / (pi w^2): the Gaussian's normalisation in 2D
   std::vector<std::uint64_t> frames_;
   std::vector<Grid> sums_;   // per phase: sums over frames
   Grid frame_;               // the current frame (scratch)
