@@ -1,6 +1,7 @@
 # ctest install_tree: installs the build into PREFIX and checks that the installed tree stands on
 # its own: the binary runs and names its version and revision, the plotting package, the configs
-# and the documents are where `wiggle plot` and a reader look for them.
+# and the documents are where `wiggle plot` and a reader look for them, and the man page covers
+# every subcommand.
 file(REMOVE_RECURSE "${PREFIX}")
 execute_process(COMMAND ${CMAKE_COMMAND} --install "${BUILD}" --prefix "${PREFIX}" RESULT_VARIABLE status
                 OUTPUT_QUIET)
@@ -17,9 +18,25 @@ if(NOT status EQUAL 0 OR NOT model MATCHES "disk")
 endif()
 foreach(file share/wiggle/python/wiggleplot/__main__.py share/wiggle/configs/small.toml
              share/wiggle/configs/paper.toml share/doc/wiggle/README.md share/doc/wiggle/CONFIG.md
-             share/bash-completion/completions/wiggle)
+             share/bash-completion/completions/wiggle share/man/man1/wiggle.1)
   if(NOT EXISTS "${PREFIX}/${file}")
     message(FATAL_ERROR "not installed: ${file}")
+  endif()
+endforeach()
+# The man page has a section for every subcommand the installed binary lists.
+file(READ "${PREFIX}/share/man/man1/wiggle.1" man)
+execute_process(COMMAND "${PREFIX}/bin/wiggle" --help OUTPUT_VARIABLE help)
+string(REGEX REPLACE ".*\nSubcommands:\n" "" listing "${help}")
+string(REGEX MATCHALL "(^|\n)  [a-z][a-z-]*" commands "${listing}")
+list(LENGTH commands count)
+if(count LESS 6)
+  message(FATAL_ERROR "wiggle --help lists ${count} subcommands")
+endif()
+foreach(command IN LISTS commands)
+  string(STRIP "${command}" command)
+  string(FIND "${man}" ".SS wiggle ${command}\n" at)
+  if(at LESS 0)
+    message(FATAL_ERROR "the man page has no section for wiggle ${command}")
   endif()
 endforeach()
 file(REMOVE_RECURSE "${PREFIX}")
