@@ -244,6 +244,14 @@ class FigureFilesTest(DataDirs):
         self.assert_files(figures, [f"{n}.{e}" for n in ("trajectory", "snapshots", "phase_rates", "fields")
                                     for e in ("png", "pdf")])
 
+    def test_movie_trail_is_the_path_so_far(self):
+        traj = {"t": np.array([0.0, 0.5, 1.0, 1.5]), "x": np.array([30.0, 31.0, 30.0, 29.0]),
+                "y": np.array([25.0, 25.5, 26.0, 26.5])}
+        x, y = runplots.path_until(traj, 1.0)
+        self.assertEqual(list(x), [30.0, 31.0, 30.0])
+        self.assertEqual(list(y), [25.0, 25.5, 26.0])
+        self.assertEqual(len(runplots.path_until(traj, -1.0)[0]), 0)
+
     def test_movie(self):
         if not (shutil.which("ffmpeg") or os.path.exists("/usr/bin/ffmpeg")):
             self.skipTest("no ffmpeg")

@@ -339,6 +339,13 @@ def find_ffmpeg():
     return shutil.which("ffmpeg") or ("/usr/bin/ffmpeg" if os.path.exists("/usr/bin/ffmpeg") else None)
 
 
+def path_until(trajectory, t):
+    """The intruder's centre (x, y) from the start of the run to time t: the trail a movie frame
+    at t draws."""
+    shown = np.asarray(trajectory["t"]) <= t + 1e-9
+    return np.asarray(trajectory["x"])[shown], np.asarray(trajectory["y"])[shown]
+
+
 def write_movie(run, out_dir, fps=10):
     ffmpeg = find_ffmpeg()
     if ffmpeg is None:
@@ -365,6 +372,8 @@ def write_movie(run, out_dir, fps=10):
     ax.set_xlabel(style.X_LABEL)
     ax.set_ylabel(style.Y_LABEL)
     coll = _discs(ax, first["x"], first["y"], first["radius"], _colours(first, bands), rasterize=False)
+    # The intruder's path so far, over the grains: where the drive has taken it, up or down.
+    trail, = ax.plot([], [], color="black", lw=0.8, zorder=5)
     title = ax.set_title("")
     os.makedirs(out_dir, exist_ok=True)
     path = os.path.join(out_dir, "movie.mp4")
@@ -378,6 +387,8 @@ def write_movie(run, out_dir, fps=10):
                               rasterize=False)
             else:
                 coll.set_offsets(np.column_stack([frame["x"], frame["y"]]))
+            if run.trajectory is not None:
+                trail.set_data(*path_until(run.trajectory, ftimes[i]))
             title.set_text(f"{run.label()}   $t$ = {ftimes[i]:g}")
             writer.grab_frame()
     plt.close(fig)
