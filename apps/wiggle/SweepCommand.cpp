@@ -1,4 +1,4 @@
-// `wiggle sweep SWEEP.toml [--out DIR] [--jobs N] [--threads T] [--dry-run]`, also under
+// `wiggle sweep SWEEP.toml [--out DIR] [--jobs N] [--threads T] [--dry-run] [--case K]`, also under
 // `mpirun -np N wiggle sweep ...` (docs/SWEEPS.md). The hidden `--run-case CONFIG.toml --out DIR`
 // and `--make-bed CONFIG.toml` are the tasks the sweep runs in child processes.
 #include <cstdio>
@@ -22,6 +22,7 @@ struct SweepArgs {
   int threads = 0;
   bool dryRun = false;
   bool local = false;
+  std::string onlyCase;
   std::string makeBed;
   std::string runCase;
 };
@@ -42,6 +43,9 @@ void addSweepCommand(CLI::App& app) {
       ->check(CLI::Range(1, 1024));
   cmd->add_flag("--dry-run", args->dryRun, "List the cases and the estimated cost; run nothing");
   cmd->add_flag("--local", args->local, "Ignore an MPI launcher: run every case from this process");
+  cmd->add_option("--case", args->onlyCase,
+                  "Run only this case (its number from 1, or its name, as --dry-run lists them), its bed first if "
+                  "need be: one Slurm array task (--array=1-N, --case $SLURM_ARRAY_TASK_ID); results.csv merges all cases");
   // The one entry through which a sweep runs its tasks in child processes (sweep/TaskRunner.h).
   cmd->add_option(kBedTaskFlag, args->makeBed, "(internal) make and cache the bed of a run config")->group("");
   cmd->add_option(kCaseTaskFlag, args->runCase, "(internal) run a case's config into --out, resuming")->group("");
@@ -71,6 +75,7 @@ void addSweepCommand(CLI::App& app) {
     options.threads = args->threads;
     options.dryRun = args->dryRun;
     options.allowMpi = !args->local;
+    options.onlyCase = args->onlyCase;
     const SweepOutcome outcome = runSweep(args->file, options);
     if (outcome.worker || args->dryRun) return;
     if (outcome.failed || outcome.pending) {

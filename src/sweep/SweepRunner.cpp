@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
@@ -60,20 +61,24 @@ struct Settings {
   std::string executable;
 };
 
-// Holds OUT/.sweep.lock for the sweep's lifetime: two coordinators in one directory would run the
-// same cases into the same run directories.
-class DirectoryLock {
+// Holds a lock file for its lifetime. OUT/.sweep.lock: two coordinators in one directory would run
+// the same cases into the same run directories, so a whole sweep holds it alone; one-case runs
+// (--case, array tasks) share it with each other, never with a whole sweep. `wait`: block until
+// the lock is free instead of failing (for the short lock around rewriting results.csv).
+class FileLock {
  public:
-  explicit DirectoryLock(const std::string& dir) {
-    const std::string path = dir + "/.sweep.lock";
+  FileLock(const std::string& path, bool shared, bool wait) {
     fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
     if (fd_ < 0) throw Error("cannot open " + path + ": " + std::strerror(errno));
-    if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+    if (::flock(fd_, (shared ? LOCK_SH : LOCK_EX) | (wait ? 0 : LOCK_NB)) != 0) {
       ::close(fd_);
-      throw Error("another wiggle sweep is running in " + dir + " (" + path + " is locked)");
+      throw Error("another wiggle sweep is running in " + fs::path(path).parent_path().string() + " (" + path +
+                  " is locked)");
     }
   }
-  ~DirectoryLock() { ::close(fd_); }
+  FileLock(const FileLock&) = delete;
+  FileLock& operator=(const FileLock&) = delete;
+  ~FileLock() { ::close(fd_); }
 
  private:
   int fd_ = -1;
@@ -114,8 +119,11 @@ enum class BedState { Waiting, Running, Done, Failed };
 // Rank 0 (or the only process): hands tasks to local children and to MPI worker ranks.
 class Coordinator {
  public:
-  Coordinator(SweepPlan& plan, const Settings& settings, const SweepOptions& options, MpiQueue* mpi)
-      : plan_(plan),
+  // `only`: the one case to run (--case), or nullopt for all of them.
+  Coordinator(SweepPlan& plan, const Settings& settings, const SweepOptions& options, MpiQueue* mpi,
+              std::optional<std::size_t> only)
+      : only_(only),
+        plan_(plan),
         settings_(settings),
         options_(options),
         mpi_(mpi),
@@ -143,9 +151,14 @@ class Coordinator {
         started_[c] = true;
       }
     }
+    if (only_) {  // the other cases are someone else's: only read, never run
+      for (std::size_t c = 0; c < n; ++c) started_[c] = started_[c] || c != *only_;
+    }
     const int workers = mpi_ ? mpi_->size() - 1 : 0;
     const int localSlots = mpi_ ? 0 : settings_.jobs;
-    monitor_.event("wiggle sweep " + plan_.spec.settings.name + ": " + std::to_string(n) + " cases, " +
+    if (only_) monitor_.event("wiggle sweep " + plan_.spec.settings.name + " --case " + std::to_string(*only_ + 1) + ": " +
+                              plan_.spec.cases[*only_].name + " (pid " + std::to_string(::getpid()) + ")");
+    else monitor_.event("wiggle sweep " + plan_.spec.settings.name + ": " + std::to_string(n) + " cases, " +
                    std::to_string(countStatus("ok")) + " done before, " + std::to_string(plan_.beds.size()) +
                    " beds to make; " +
                    (mpi_ ? std::to_string(workers) + " MPI worker ranks x " + std::to_string(settings_.jobs) + " jobs"
@@ -153,7 +166,7 @@ class Coordinator {
                    " x " + std::to_string(settings_.threads) + " threads; host " + hostName() + " pid " +
                    std::to_string(::getpid()));
     for (std::size_t c = 0; c < n; ++c)
-      if (results_[c].status == "failed") monitor_.event("failed " + plan_.spec.cases[c].name + ": " + results_[c].error);
+      if (counts(c) && results_[c].status == "failed") monitor_.event("failed " + plan_.spec.cases[c].name + ": " + results_[c].error);
     writeResults();
     concurrency_ = mpi_ ? std::max(1, workers * settings_.jobs) : std::max(1, settings_.jobs);
 
@@ -247,23 +260,29 @@ class Coordinator {
 
     SweepOutcome out;
     out.outDir = plan_.outDir;
-    out.cases = n;
+    out.cases = only_ ? 1 : n;
     out.ok = countStatus("ok");
     out.failed = countStatus("failed");
-    out.pending = n - out.ok - out.failed;
+    out.pending = out.cases - out.ok - out.failed;
     out.interrupted = stopping_;
     writeResults();
-    out.summary = "sweep " + plan_.outDir + ": " + std::to_string(out.ok) + " of " + std::to_string(n) + " cases ok";
-    if (out.failed) out.summary += ", " + std::to_string(out.failed) + " failed (error column of results.csv)";
-    if (out.pending) out.summary += ", " + std::to_string(out.pending) + " not finished (rerun the same command to resume)";
+    out.summary = "sweep " + plan_.outDir + ": " +
+                  (only_ ? "case " + plan_.spec.cases[*only_].name + (out.ok ? " ok" : "")
+                         : std::to_string(out.ok) + " of " + std::to_string(n) + " cases ok");
+    if (only_ && !out.ok) out.summary += out.failed ? " failed (error column of results.csv)" : " not finished (rerun the same command to resume)";
+    if (!only_ && out.failed) out.summary += ", " + std::to_string(out.failed) + " failed (error column of results.csv)";
+    if (!only_ && out.pending) out.summary += ", " + std::to_string(out.pending) + " not finished (rerun the same command to resume)";
     monitor_.event(out.summary);
     return out;
   }
 
  private:
+  // Whether case c is this run's to count: every case, or with --case the one.
+  bool counts(std::size_t c) const { return !only_ || c == *only_; }
+
   std::size_t countStatus(const std::string& s) const {
     std::size_t k = 0;
-    for (const CaseResult& r : results_) k += r.status == s;
+    for (std::size_t c = 0; c < results_.size(); ++c) k += counts(c) && results_[c].status == s;
     return k;
   }
 
@@ -360,7 +379,25 @@ class Coordinator {
   }
 
   void writeResults() {
-    writeFileAtomically(plan_.outDir + "/results.csv", resultsCsv(plan_.spec, runDirs_, results_));
+    if (!only_) {
+      writeFileAtomically(plan_.outDir + "/results.csv", resultsCsv(plan_.spec, runDirs_, results_));
+      resultsDirty_ = false;
+      return;
+    }
+    // One case of several processes': the table is rebuilt from every case directory, under a lock,
+    // so that the last process to write has seen every case that finished before it (each writes
+    // its summary.json before it takes the lock).
+    FileLock lock(plan_.outDir + "/.results.lock", false, true);
+    std::vector<CaseResult> table = results_;
+    for (std::size_t c = 0; c < table.size(); ++c) {
+      if (c == *only_ || !fs::exists(plan_.cases[c].dir + "/summary.json")) continue;
+      try {
+        table[c] = readCaseSummary(plan_.cases[c].dir);
+      } catch (const Error&) {
+        // Being written by its own process, or torn: it shows as before.
+      }
+    }
+    writeFileAtomically(plan_.outDir + "/results.csv", resultsCsv(plan_.spec, runDirs_, table));
     resultsDirty_ = false;
   }
 
@@ -406,6 +443,7 @@ class Coordinator {
     return line;
   }
 
+  std::optional<std::size_t> only_;
   SweepPlan& plan_;
   const Settings& settings_;
   const SweepOptions& options_;
@@ -470,6 +508,19 @@ SweepOutcome workerLoop(const SweepPlan& plan, const Settings& settings, MpiQueu
   return out;
 }
 
+// The case `key` names (wiggle sweep --case): its number in the --dry-run listing (from 1) or its name.
+std::size_t findCase(const SweepSpec& spec, const std::string& key) {
+  for (std::size_t c = 0; c < spec.cases.size(); ++c)
+    if (spec.cases[c].name == key) return c;
+  std::size_t number = 0;
+  const auto [end, ec] = std::from_chars(key.data(), key.data() + key.size(), number);
+  if (ec == std::errc() && end == key.data() + key.size() && number >= 1 && number <= spec.cases.size())
+    return number - 1;
+  throw Error("--case " + key + ": no such case in " + spec.settings.name + " (" + std::to_string(spec.cases.size()) +
+              " cases: a number from 1 to " + std::to_string(spec.cases.size()) +
+              " or a name, as --dry-run lists them)");
+}
+
 int envInt(const char* name) {
   const char* v = std::getenv(name);
   return v ? std::atoi(v) : 0;
@@ -486,9 +537,11 @@ int availableCores() {
 SweepOutcome runSweep(const std::string& sweepFile, const SweepOptions& options) {
   SweepSpec spec = loadSweepSpec(sweepFile);
   const std::string outDir = options.outDir.empty() ? "sweep-" + spec.settings.name : options.outDir;
+  std::optional<std::size_t> only;
+  if (!options.onlyCase.empty()) only = findCase(spec, options.onlyCase);
 
   std::unique_ptr<MpiQueue> mpi;
-  if (options.allowMpi && !options.dryRun && MpiQueue::launchedAsMultipleProcesses()) {
+  if (!only && options.allowMpi && !options.dryRun && MpiQueue::launchedAsMultipleProcesses()) {
     mpi = std::make_unique<MpiQueue>();  // throws when built without MPI
     if (mpi->size() < 2) mpi.reset();
   }
@@ -521,12 +574,14 @@ SweepOutcome runSweep(const std::string& sweepFile, const SweepOptions& options)
     fs::create_directories(outDir + "/cases", ec);
     if (ec) throw Error("cannot create sweep directory " + outDir + ": " + ec.message());
   }
-  std::optional<DirectoryLock> lock;
+  std::optional<FileLock> lock;
   if (!options.dryRun) {
-    lock.emplace(outDir);
+    lock.emplace(outDir + "/.sweep.lock", only.has_value(), false);
     // Only this coordinator writes here (the lock says so): files a killed one was writing go.
-    removeLeftoverTemporaries(outDir);
-    removeLeftoverTemporaries(outDir + "/beds");
+    if (!only) {
+      removeLeftoverTemporaries(outDir);
+      removeLeftoverTemporaries(outDir + "/beds");
+    }
   }
   SweepPlan plan = makeSweepPlan(std::move(spec), outDir);
 
@@ -536,7 +591,8 @@ SweepOutcome runSweep(const std::string& sweepFile, const SweepOptions& options)
     std::size_t tasks = plan.beds.size();
     for (const PlannedCase& p : plan.cases) tasks += p.state == CaseState::Pending;
     const int cores = availableCores();
-    if (options.jobs <= 0 && plan.spec.settings.jobs <= 0 && tasks > 0)
+    if (only) settings.jobs = 1;  // its bed, then the case
+    else if (options.jobs <= 0 && plan.spec.settings.jobs <= 0 && tasks > 0)
       settings.jobs = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(settings.jobs), tasks));
     if (settings.threads <= 0) settings.threads = std::max(1, cores / std::max(1, settings.jobs));
   }
@@ -555,7 +611,7 @@ SweepOutcome runSweep(const std::string& sweepFile, const SweepOptions& options)
   if (options.handleSignals) stopOnSignal.emplace();
   SweepOutcome out;
   {
-    Coordinator coordinator(plan, settings, options, mpi.get());
+    Coordinator coordinator(plan, settings, options, mpi.get(), only);
     out = coordinator.run();
   }
   return out;

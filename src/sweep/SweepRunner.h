@@ -28,6 +28,11 @@ struct SweepOptions {
   // SLURM_CPUS_PER_TASK / jobs or 1).
   int threads = 0;
   bool dryRun = false;       // list the cases and the estimated cost; run nothing
+  // `--case`: run only this case (its number from 1 or its name, as --dry-run lists them), making
+  // its bed first if need be, for Slurm job arrays without MPI. Several such processes may work in
+  // one sweep directory at once (not beside a whole-sweep run); each rebuilds results.csv from
+  // every case directory when its case ends, so the table merges them all.
+  std::string onlyCase;
   std::string executable;    // the wiggle binary the children run ("" = this process's binary)
   bool allowMpi = true;      // use MPI when launched by mpirun/srun with more than one process
   bool progress = true;      // live status line on stderr when it is a terminal

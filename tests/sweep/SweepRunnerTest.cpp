@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -330,6 +331,44 @@ TEST_F(SweepRunnerTest, DryRunListsCasesAndCostWithoutRunning) {
   // Two seeds: two distinct beds, neither cached.
   EXPECT_NE(text.find("2 of 2 distinct beds to make"), std::string::npos) << text;
   EXPECT_NE(text.find("estimated cost"), std::string::npos);
+}
+
+TEST_F(SweepRunnerTest, ArrayTasksRunOneCaseEachAndTheTableMergesThem) {
+  const std::string file = sweepFile("array", "[grid.drive]\nperiod = [1.0, 2.0, 0.5]\n");
+  const std::string out = *root_ + "/array";
+  // One task by its number in the --dry-run listing (from 1): only that case runs; the table lists
+  // the others as pending.
+  SweepOptions one = quietOptions(out);
+  one.onlyCase = "2";
+  const SweepOutcome o = runSweep(file, one);
+  EXPECT_EQ(o.cases, 1u);
+  EXPECT_EQ(o.ok, 1u);
+  EXPECT_EQ(o.pending, 0u);
+  auto results = readResults(out);
+  EXPECT_EQ(results["period=2"]["status"], "ok");
+  EXPECT_EQ(results["period=1"]["status"], "pending");
+  EXPECT_FALSE(fs::exists(out + "/cases/period=1"));
+  // Two tasks at once, as array tasks start, one by name: the table ends with all three.
+  const std::string task = std::string(WIGGLE_BINARY) + " sweep " + file + " --out " + out + " --threads 1 --case ";
+  ASSERT_EQ(std::system(("(" + task + "1 & " + task + "period=0.5 & wait) > /dev/null 2>&1").c_str()), 0);
+  results = readResults(out);
+  for (const char* name : {"period=1", "period=2", "period=0.5"}) EXPECT_EQ(results[name]["status"], "ok") << name;
+  // A whole sweep afterwards finds every case done and runs nothing.
+  const SweepOutcome all = runSweep(file, quietOptions(out));
+  EXPECT_EQ(all.ok, 3u);
+  EXPECT_EQ(readResults(out)["period=1"]["state_hash"], results["period=1"]["state_hash"]);
+  // A case that is not there: the error says what there is.
+  for (const char* bad : {"4", "0", "period=7", "-1"}) {
+    SweepOptions wrong = quietOptions(out);
+    wrong.onlyCase = bad;
+    try {
+      runSweep(file, wrong);
+      ADD_FAILURE() << "--case " << bad << " accepted";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("no such case"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("from 1 to 3"), std::string::npos) << e.what();
+    }
+  }
 }
 
 }  // namespace

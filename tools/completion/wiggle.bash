@@ -3,7 +3,7 @@
 _wiggle() {
   local cur prev words cword
   _init_completion || return
-  local commands="run sweep model plot export-lammps"
+  local commands="run sweep model plot export-lammps status"
   if [[ $cword -eq 1 ]]; then
     COMPREPLY=($(compgen -W "$commands --help --version" -- "$cur"))
     return
@@ -18,15 +18,16 @@ _wiggle() {
       compopt -o nospace
       return ;;
     --out) _filedir -d; return ;;
-    --threads|--jobs) return ;;
+    --threads|--jobs|--case) return ;;
   esac
   local options
   case "${words[1]}" in
     run) options="--set --out --threads --resume --no-plot --check --help" ;;
-    sweep) options="--out --jobs --threads --dry-run --local --help" ;;
+    sweep) options="--out --jobs --threads --dry-run --local --case --help" ;;
     model) options="--shape --vertices --angle --format --periods --amplitude --geometry --clump --help" ;;
     plot) options="--format --movie --times --out --geometry --help" ;;
     export-lammps) options="--set --out --threads --help" ;;
+    status) options="--help" ;;
   esac
   if [[ "$cur" == -* ]]; then
     COMPREPLY=($(compgen -W "$options" -- "$cur"))
