@@ -1,0 +1,27 @@
+#include "io/FileLock.h"
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+
+#include "core/Error.h"
+
+namespace wiggle {
+
+FileLock::FileLock(const std::string& path, bool shared, bool wait) {
+  fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (fd_ < 0) throw Error("cannot open " + path + ": " + std::strerror(errno));
+  if (::flock(fd_, (shared ? LOCK_SH : LOCK_EX) | (wait ? 0 : LOCK_NB)) != 0) {
+    ::close(fd_);
+    throw Error("another wiggle sweep is running in " + std::filesystem::path(path).parent_path().string() + " (" +
+                path + " is locked)");
+  }
+}
+
+FileLock::~FileLock() { ::close(fd_); }
+
+}  // namespace wiggle
