@@ -6,7 +6,7 @@
 
 #include "FuzzInput.h"
 #include "core/Error.h"
-#include "io/BinaryStream.h"
+#include "core/BinaryStream.h"
 #include "io/StateFile.h"
 #include "scenario/BedMaker.h"
 

@@ -7,7 +7,7 @@
 
 #include "FuzzInput.h"
 #include "core/Error.h"
-#include "io/BinaryStream.h"
+#include "core/BinaryStream.h"
 #include "io/Config.h"
 #include "io/StateFile.h"
 #include "scenario/Checkpoint.h"

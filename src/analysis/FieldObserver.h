@@ -30,7 +30,7 @@
 #include <string>
 #include <vector>
 
-#include "io/BinaryStream.h"
+#include "core/BinaryStream.h"
 #include "io/RunConfig.h"
 
 namespace wiggle {

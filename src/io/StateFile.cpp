@@ -5,7 +5,7 @@
 #include "core/Error.h"
 #include "core/Hash.h"
 #include "io/AtomicFile.h"
-#include "io/BinaryStream.h"
+#include "core/BinaryStream.h"
 
 namespace wiggle {
 

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "io/BinaryStream.h"
+#include "core/BinaryStream.h"
 #include "physics/ContactLaw.h"
 #include "physics/Intruder.h"
 #include "physics/NeighbourList.h"

@@ -7,7 +7,7 @@
 #include <cstdint>
 
 #include "core/Error.h"
-#include "io/BinaryStream.h"
+#include "core/BinaryStream.h"
 #include "physics/World.h"
 
 namespace wiggle {

@@ -9,7 +9,7 @@
 
 #include "analysis/FieldObserver.h"
 #include "analysis/RiseRate.h"
-#include "io/BinaryStream.h"
+#include "core/BinaryStream.h"
 #include "io/RunConfig.h"
 #include "physics/World.h"
 

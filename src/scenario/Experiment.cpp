@@ -20,7 +20,7 @@
 #include "core/Version.h"
 #include "io/AtomicFile.h"
 #include "io/Config.h"
-#include "io/LammpsDump.h"
+#include "analysis/LammpsDump.h"
 #include "model/CavityModel.h"
 #include "scenario/BedMaker.h"
 #include "scenario/Checkpoint.h"

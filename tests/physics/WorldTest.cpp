@@ -11,7 +11,7 @@
 #include <utility>
 
 #include "core/Rng.h"
-#include "io/LammpsDump.h"
+#include "analysis/LammpsDump.h"
 #include "physics/World.h"
 
 namespace wiggle {

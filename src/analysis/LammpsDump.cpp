@@ -1,4 +1,4 @@
-#include "io/LammpsDump.h"
+#include "analysis/LammpsDump.h"
 
 #include <algorithm>
 #include <cstdio>
