@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <vector>
 
 namespace wiggle {
 
@@ -19,28 +18,20 @@ std::string lammpsDumpFrame(const World& world) {
   char line[256];
   std::snprintf(line, sizeof line,
                 "ITEM: TIMESTEP\n%llu\nITEM: NUMBER OF ATOMS\n%zu\nITEM: BOX BOUNDS pp ff pp\n"
-                "0 %.17g\n%.17g %.17g\n-0.5 0.5\nITEM: ATOMS id type x y z radius vx vy fx fy\n",
+                "0 %.17g\n%.17g %.17g\n-0.5 0.5\nITEM: ATOMS id type x y z radius vx vy\n",
                 static_cast<unsigned long long>(world.stepCount()), s.size() + atoms, world.def().boxWidth, yLo, yHi);
   out += line;
   std::uint32_t maxTag = 0;
   for (std::uint32_t i = 0; i < s.size(); ++i) {
     maxTag = std::max(maxTag, s.tag[i]);
-    std::snprintf(line, sizeof line, "%u %d %.9g %.9g 0 %.9g %.6g %.6g %.6g %.6g\n", s.tag[i] + 1,
-                  i < s.grainCount ? 1 : 2, s.x[i], s.y[i], s.radius[i], s.vx[i], s.vy[i], s.fx[i], s.fy[i]);
+    std::snprintf(line, sizeof line, "%u %d %.9g %.9g 0 %.9g %.6g %.6g\n", s.tag[i] + 1, i < s.grainCount ? 1 : 2,
+                  s.x[i], s.y[i], s.radius[i], s.vx[i], s.vy[i]);
     out += line;
-  }
-  // An intruder atom's force: the sum of its contacts (each pair keeps the force on its grain).
-  const IntruderPairs& pairs = world.intruderPairs();
-  std::vector<double> atomFx(atoms, 0.0), atomFy(atoms, 0.0);
-  for (std::uint32_t p = 0; p < pairs.size() && atoms > 0; ++p) {
-    atomFx[pairs.atom[p]] -= pairs.forceX[p];
-    atomFy[pairs.atom[p]] -= pairs.forceY[p];
   }
   const ClumpState& c = world.intruder();
   for (std::size_t a = 0; a < atoms; ++a) {
-    std::snprintf(line, sizeof line, "%zu 3 %.9g %.9g 0 %.9g %.6g %.6g %.6g %.6g\n", maxTag + 2 + a,
-                  c.x + world.clump().offsetX[a], c.y + world.clump().offsetY[a], world.clump().atomRadius, c.vx, c.vy,
-                  atomFx[a], atomFy[a]);
+    std::snprintf(line, sizeof line, "%zu 3 %.9g %.9g 0 %.9g %.6g %.6g\n", maxTag + 2 + a,
+                  c.x + world.clump().offsetX[a], c.y + world.clump().offsetY[a], world.clump().atomRadius, c.vx, c.vy);
     out += line;
   }
   return out;

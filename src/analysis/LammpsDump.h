@@ -1,8 +1,6 @@
 #pragma once
 // LAMMPS text dump frames (what OVITO opens): grains type 1, frozen base type 2, intruder atoms
-// type 3 (ids after the particles'). Columns: id type x y z radius vx vy fx fy. fx fy [m g]: a
-// particle's total force of the step (contacts, and gravity for grains); an intruder atom's, the
-// sum of its contact forces (gravity and the drive act on the clump as a whole).
+// type 3 (ids after the particles'). Columns: id type x y z radius vx vy.
 #include <string>
 
 #include "physics/World.h"

@@ -6,12 +6,9 @@
 #include <cmath>
 #include <numbers>
 #include <set>
-#include <sstream>
-#include <string>
 #include <utility>
 
 #include "core/Rng.h"
-#include "analysis/LammpsDump.h"
 #include "physics/World.h"
 
 namespace wiggle {
@@ -378,45 +375,6 @@ TEST(World, RejectsBadParticles) {
   EXPECT_THROW(w.addGrain(5.0, 1.0, 0.0), Error);
   EXPECT_THROW(w.addGrain(5.0, 1.0, -0.5), Error);
   EXPECT_THROW(w.setIntruder(ClumpDef{{0.0}, {0.0}, 0.25, -1.0}, 5, 5), Error);
-}
-
-TEST(World, DumpFrameForcesAreTheParticlesAndAddUpToTheIntrudersContactForce) {
-  World w = makePile(16, 12, 7, 9.6, 8.0, 2.5);
-  w.setIntruder(ClumpDef{{-1.0, 0.0, 1.0, 0.0, 0.0}, {0.0, 0.0, 0.0, -1.0, 1.0}, 0.5, 5.0}, 9.6, 8.0);
-  // Free to fall, not driven: it comes to rest on the grains below, which then carry its weight.
-  w.setIntruderMotion({HorizontalMotion::Sinusoid, 9.6, 0.0, 4.0, 0.0, true});
-  w.run(30000);
-  ASSERT_GT(w.intruderPairs().size(), 0u);
-  std::istringstream frame(lammpsDumpFrame(w));
-  std::string line;
-  while (std::getline(frame, line) && line.rfind("ITEM: ATOMS", 0) != 0) {}
-  ASSERT_EQ(line, "ITEM: ATOMS id type x y z radius vx vy fx fy");
-  const ParticleStore& s = w.particles();
-  double atomsFx = 0.0, atomsFy = 0.0, largest = 0.0;
-  int grainsChecked = 0;
-  while (std::getline(frame, line)) {
-    std::istringstream in(line);
-    std::uint32_t id = 0;
-    int type = 0;
-    double x, y, z, r, vx, vy, fx, fy;
-    in >> id >> type >> x >> y >> z >> r >> vx >> vy >> fx >> fy;
-    ASSERT_TRUE(in) << line;
-    if (type == 3) {
-      atomsFx += fx;
-      atomsFy += fy;
-      largest = std::max({largest, std::fabs(fx), std::fabs(fy)});
-    } else if (type == 1) {
-      const std::uint32_t i = indexOfTag(s, id - 1);
-      EXPECT_NEAR(fx, s.fx[i], 1e-5 * std::fabs(s.fx[i]) + 1e-12) << line;
-      EXPECT_NEAR(fy, s.fy[i], 1e-5 * std::fabs(s.fy[i]) + 1e-12) << line;
-      ++grainsChecked;
-    }
-  }
-  EXPECT_EQ(grainsChecked, static_cast<int>(s.grainCount));
-  EXPECT_GT(w.intruder().contactFy, 1.0);  // it rests on grains: a sum worth comparing
-  // Six printed digits per atom, five atoms.
-  EXPECT_NEAR(atomsFx, w.intruder().contactFx, 5e-6 * largest + 1e-9);
-  EXPECT_NEAR(atomsFy, w.intruder().contactFy, 5e-6 * largest + 1e-9);
 }
 
 TEST(World, ClumpAloneFallsFreelyAndHeldClumpStays) {
