@@ -17,7 +17,9 @@ using namespace config_keys;
 std::uint64_t wholeStepsIn(double interval, double dt) {
   const double steps = interval / dt;
   const double n = std::round(steps);
-  return n >= 1 && std::fabs(steps - n) <= 1e-9 * steps ? static_cast<std::uint64_t>(n) : 0;
+  // Past 2^63 steps no count fits (and converting would be undefined): not a usable interval.
+  if (!(n >= 1 && n < 9.2e18)) return 0;
+  return std::fabs(steps - n) <= 1e-9 * steps ? static_cast<std::uint64_t>(n) : 0;
 }
 
 namespace {
@@ -143,8 +145,8 @@ void checkSizes(const RunConfig& c) {
 void validateRunConfig(const RunConfig& c) {
   checkKeyRanges(c);
   checkShapeKeys(c);
+  checkSizes(c);  // first: a run too long for any step count gets its own message
   checkSchedule(c);
-  checkSizes(c);
 }
 
 }  // namespace wiggle
