@@ -33,6 +33,9 @@ struct ContactParams {
   double mu = 0.1;        // Coulomb friction coefficient
 };
 
+// The law's functions are compiled once per instruction set (core/Simd.h: the inline namespace).
+inline namespace WIGGLE_ISA_NAMESPACE {
+
 template <class V>  // double, or lanes of doubles (core/Simd.h)
 struct ContactForceOf {
   V fx, fy;          // force on i
@@ -165,4 +168,5 @@ inline ContactForceOf<V> hertzHistoryContact(const ContactParams& p, double dt, 
   return contactForce(p, dx, dy, radI, radJ, g, t);
 }
 
+}  // inline namespace WIGGLE_ISA_NAMESPACE
 }  // namespace wiggle

@@ -21,6 +21,13 @@ struct alignas(32) Kinematics {
   double x, y, vx, vy;
 };
 
+// Where pairs' results go: history (read and written), force on i and torque arm, indexed by pair.
+struct PairSlots {
+  double *shearX, *shearY, *forceX, *forceY, *torqueArm;
+};
+
+inline namespace WIGGLE_ISA_NAMESPACE {
+
 // A pair's inputs to the contact law, for one pair (V = double) or for lanes of pairs.
 template <class V>
 struct PairInputs {
@@ -37,10 +44,6 @@ inline V minimumImage(V dx, double width) {
   return select(dx > V(halfWidth), dx - V(width), select(dx < V(-halfWidth), dx + V(width), dx));
 }
 
-// Where pairs' results go: history (read and written), force on i and torque arm, indexed by pair.
-struct PairSlots {
-  double *shearX, *shearY, *forceX, *forceY, *torqueArm;
-};
 
 // The contact law for the pairs in `in` (one, or lanes of four), whose slots start at k: history
 // read from and written to shearX/Y[k..], force and torque arm written to forceX/Y and torqueArm.
@@ -65,28 +68,44 @@ inline V evaluatePairs(const PairInputs<V>& in, std::uint32_t k, PairSlots slots
   return closest * closest - (in.dx * in.dx + in.dy * in.dy);
 }
 
-// Calls evaluate(m, V{}) for m = 0, 4, 8, ... < n in lanes of four where the CPU has them, then one
-// by one with V = double, and returns the largest value it returned over every lane.
+// Runs evaluate(m, V{}) over [m, n) in lanes of V while whole lanes fit, advancing m, and returns
+// the largest value it returned over every lane. The new value first: max returns its second
+// argument for a NaN, so a NaN lane (a blow-up, which the health check reports) never displaces an
+// excess already seen.
+template <class V, class Evaluate>
+inline double maxOverLanesOf(std::uint32_t& m, std::uint32_t n, Evaluate& evaluate) {
+  if constexpr (std::is_same_v<V, double>) {
+    double excess = -std::numeric_limits<double>::infinity();
+    for (; m < n; ++m) excess = simd::max(evaluate(m, 0.0), excess);
+    return excess;
+  } else {
+    V excess(-std::numeric_limits<double>::infinity());
+    for (; m + V::kLanes <= n; m += V::kLanes) excess = max(evaluate(m, V{}), excess);
+    return horizontalMax(excess);  // found by argument-dependent lookup in simd
+  }
+}
+
+// Calls evaluate(m, V{}) for every pair m in [0, n): in the widest lanes the instruction set has
+// while they fit, then in four lanes, then one by one with V = double. Returns the largest value
+// it returned over every lane.
 template <class Evaluate>
 inline double maxOverLanes(std::uint32_t n, Evaluate&& evaluate) {
-  double excess = -std::numeric_limits<double>::infinity();
   std::uint32_t m = 0;
-#if WIGGLE_SIMD_DOUBLE4
-  simd::Double4 excess4(excess);
-  // The new value first: max returns its second argument for a NaN, so a NaN lane (a blow-up, which
-  // the health check reports) never displaces an excess already seen.
-  for (; m + simd::Double4::kLanes <= n; m += simd::Double4::kLanes) excess4 = max(evaluate(m, simd::Double4{}), excess4);
-  excess = simd::horizontalMax(excess4);
+  double excess = -std::numeric_limits<double>::infinity();
+#if WIGGLE_SIMD_DOUBLE8
+  excess = simd::max(maxOverLanesOf<simd::Double8>(m, n, evaluate), excess);
 #endif
-  for (; m < n; ++m) excess = simd::max(evaluate(m, 0.0), excess);
-  return excess;
+#if WIGGLE_SIMD_DOUBLE4
+  excess = simd::max(maxOverLanesOf<simd::Double4>(m, n, evaluate), excess);
+#endif
+  return simd::max(maxOverLanesOf<double>(m, n, evaluate), excess);
 }
 
 // Inputs of up to kChunk pairs gathered one by one (the intruder's contacts, the benchmarks), to be
 // read back as lanes.
 constexpr std::uint32_t kChunk = 64;
 struct PairChunk {
-  alignas(32) double dx[kChunk], dy[kChunk], dvx[kChunk], dvy[kChunk], radI[kChunk], radJ[kChunk], omegaI[kChunk],
+  alignas(64) double dx[kChunk], dy[kChunk], dvx[kChunk], dvy[kChunk], radI[kChunk], radJ[kChunk], omegaI[kChunk],
       omegaJ[kChunk], invMassSum[kChunk], alarmRadius[kChunk];
 
   void set(std::uint32_t m, const PairInputs<double>& in) {
@@ -129,11 +148,18 @@ inline PairInputs<double> grainPairInputs(const Kinematics* kin, const ParticleS
           s.omega[i], s.omega[j], s.invMass[i] + s.invMass[j], simd::min(s.radius[i], s.radius[j])};
 }
 
+// The same for the lanes of V (owner[0..lanes) with partner[0..lanes)), with the same operations.
+template <class V>
+inline PairInputs<V> grainPairInputs(const Kinematics* kin, const ParticleStore& s, const std::uint32_t* owner,
+                                     const std::uint32_t* partner, double width);
+
 #if WIGGLE_SIMD_DOUBLE4
-// The same for four pairs at once, with the same operations: one subtraction of two records gives
-// a pair's (dx, dy, dvx, dvy) as a row, and a 4 x 4 transpose turns four pairs' rows into lanes.
-inline PairInputs<simd::Double4> grainPairInputs(const Kinematics* kin, const ParticleStore& s, const std::uint32_t* owner,
-                                          const std::uint32_t* partner, double width) {
+// Four pairs: one subtraction of two records gives a pair's (dx, dy, dvx, dvy) as a row, and a
+// 4 x 4 transpose turns four pairs' rows into lanes.
+template <>
+inline PairInputs<simd::Double4> grainPairInputs(const Kinematics* kin, const ParticleStore& s,
+                                                 const std::uint32_t* owner, const std::uint32_t* partner,
+                                                 double width) {
   __m256d d[4];
   for (int m = 0; m < 4; ++m)
     d[m] = _mm256_sub_pd(_mm256_load_pd(&kin[owner[m]].x), _mm256_load_pd(&kin[partner[m]].x));
@@ -151,4 +177,20 @@ inline PairInputs<simd::Double4> grainPairInputs(const Kinematics* kin, const Pa
 }
 #endif
 
+#if WIGGLE_SIMD_DOUBLE8
+// Eight pairs: the four-pair gather twice, its lanes joined (the same values, so the same bits).
+template <>
+inline PairInputs<simd::Double8> grainPairInputs(const Kinematics* kin, const ParticleStore& s,
+                                                 const std::uint32_t* owner, const std::uint32_t* partner,
+                                                 double width) {
+  const auto a = grainPairInputs<simd::Double4>(kin, s, owner, partner, width);
+  const auto b = grainPairInputs<simd::Double4>(kin, s, owner + 4, partner + 4, width);
+  using V = simd::Double8;
+  return {V(a.dx, b.dx),         V(a.dy, b.dy),         V(a.dvx, b.dvx),         V(a.dvy, b.dvy),
+          V(a.radI, b.radI),     V(a.radJ, b.radJ),     V(a.omegaI, b.omegaI),   V(a.omegaJ, b.omegaJ),
+          V(a.invMassSum, b.invMassSum), V(a.alarmRadius, b.alarmRadius)};
+}
+#endif
+
+}  // inline namespace WIGGLE_ISA_NAMESPACE
 }  // namespace wiggle

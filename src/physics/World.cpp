@@ -21,75 +21,10 @@ void requireFinite(double v, const char* what) {
   if (!std::isfinite(v)) throw Error(std::string(what) + " is not a finite number");
 }
 
-// Force block b of the grain list (NeighbourList.h): every pair of its rows is evaluated, and its
-// force added to the owner and, if the partner is a grain of this block, to the partner, in pair
-// order. The block's grains start from zero: they get no other contribution before this. Pairs go
-// in chunks of kChunk: evaluated (PairKernel.h), then added while their slots are in L1.
-// Returns the block's largest overlap excess (see evaluatePairs).
-double accumulateBlock(std::uint32_t b, ParticleStore& s, const Kinematics* kin, NeighbourList& list,
-                       const ContactParams params, double dt, double width, bool updateShear, double overlapRatio) {
-  const std::uint32_t r0 = b * list.blockRows;
-  const std::uint32_t r1 = std::min(r0 + list.blockRows, list.rowCount());
-  std::fill(s.fx.begin() + r0, s.fx.begin() + r1, 0.0);
-  std::fill(s.fy.begin() + r0, s.fy.begin() + r1, 0.0);
-  std::fill(s.torque.begin() + r0, s.torque.begin() + r1, 0.0);
-  const PairSlots slots{list.shearX.data(), list.shearY.data(), list.forceX.data(), list.forceY.data(),
-                        list.torqueArm.data()};
-  const std::uint32_t* owner = list.owner.data();
-  const std::uint32_t* partner = list.partner.data();
-  double excess = -std::numeric_limits<double>::infinity();
-  // The owner's sums stay in registers along its row: its partner contributions all come from
-  // earlier rows, so loading them at the row's start adds the same terms in the same order.
-  std::uint32_t current = r0;
-  double ownFx = 0.0, ownFy = 0.0, ownTorque = 0.0;
-  const std::uint32_t end = list.rowStart[r1];
-  for (std::uint32_t first = list.rowStart[r0]; first < end; first += kChunk) {
-    const std::uint32_t last = std::min(first + kChunk, end);
-    // Gathered straight into registers, four pairs at a time.
-    excess = std::max(excess, maxOverLanes(last - first, [&](std::uint32_t m, [[maybe_unused]] auto lane) {
-      const std::uint32_t k = first + m;
-#if WIGGLE_SIMD_DOUBLE4
-      if constexpr (!std::is_same_v<decltype(lane), double>)  // four pairs: the vector gather
-        return evaluatePairs(grainPairInputs(kin, s, owner + k, partner + k, width), k, slots, params, dt,
-                             updateShear, overlapRatio);
-      else
-#endif
-        return evaluatePairs(grainPairInputs(kin, s, owner[k], partner[k], width), k, slots, params, dt, updateShear,
-                             overlapRatio);
-    }));
-    for (std::uint32_t k = first; k < last; ++k) {
-      const std::uint32_t i = owner[k], j = partner[k];
-      if (i != current) {
-        s.fx[current] = ownFx;
-        s.fy[current] = ownFy;
-        s.torque[current] = ownTorque;
-        current = i;
-        ownFx = s.fx[i];
-        ownFy = s.fy[i];
-        ownTorque = s.torque[i];
-      }
-      ownFx += slots.forceX[k];
-      ownFy += slots.forceY[k];
-      ownTorque -= s.radius[i] * slots.torqueArm[k];
-      if (j < r1) {  // a grain of this block (j > i >= r0); frozen and later-block partners are not
-        s.fx[j] -= slots.forceX[k];
-        s.fy[j] -= slots.forceY[k];
-        s.torque[j] -= s.radius[j] * slots.torqueArm[k];
-      }
-    }
-  }
-  if (end > list.rowStart[r0]) {
-    s.fx[current] = ownFx;
-    s.fy[current] = ownFy;
-    s.torque[current] = ownTorque;
-  }
-  return excess;
-}
-
 }  // namespace
 
 
-World::World(const WorldDef& def) : def_(def) {
+World::World(const WorldDef& def) : def_(def), kernels_(&forceKernels(defaultSimdLevel())) {
   requireFinite(def.boxWidth, "box width");
   if (def.boxWidth <= 0) throw Error("box width must be > 0, got " + formatNumber(def.boxWidth));
   if (!(def.dt > 0) || !std::isfinite(def.dt)) throw Error("time step must be > 0, got " + formatNumber(def.dt));
@@ -110,48 +45,11 @@ World::World(const WorldDef& def) : def_(def) {
     throw Error("blow-up bounds must be finite, > 0 (the speed factor > 1)");
 }
 
-double addIntruderContactForces(ParticleStore& s, const ClumpDef& clump, ClumpState& state, IntruderPairs& ip,
+double addIntruderContactForces(ParticleStore& s, const ClumpDef& clump, ClumpState& state, IntruderPairs& pairs,
                                 const ContactParams params, double dt, double width, bool updateShear,
                                 double overlapRatio) {
-  double worstExcess = -std::numeric_limits<double>::infinity();
-  const double invClumpMass = 1.0 / clump.mass;
-  const std::uint32_t n = s.grainCount;
-  double clumpFx = 0.0, clumpFy = 0.0;
-  const PairSlots slots{ip.shearX.data(), ip.shearY.data(), ip.forceX.data(), ip.forceY.data(),
-                        ip.torqueArm.data()};
-  auto inputs = [&](std::uint32_t p) {
-    const std::uint32_t g = ip.grain[p], a = ip.atom[p];
-    return PairInputs<double>{minimumImage(s.x[g] - (state.x + clump.offsetX[a]), width),
-                              s.y[g] - (state.y + clump.offsetY[a]),
-                              s.vx[g] - state.vx,
-                              s.vy[g] - state.vy,
-                              s.radius[g],
-                              clump.atomRadius,
-                              s.omega[g],
-                              0.0,
-                              s.invMass[g] + invClumpMass,
-                              s.radius[g]};
-  };
-  PairChunk chunk;
-  for (std::uint32_t first = 0; first < ip.size(); first += kChunk) {
-    const std::uint32_t count = std::min(kChunk, ip.size() - first);
-    for (std::uint32_t m = 0; m < count; ++m) chunk.set(m, inputs(first + m));
-    worstExcess = std::max(worstExcess, evaluateChunk(chunk, count, first, slots, params, dt, updateShear, overlapRatio));
-  }
-  // The sums in list order, serially: the clump's total does not depend on the thread count.
-  for (std::uint32_t p = 0; p < ip.size(); ++p) {
-    const std::uint32_t g = ip.grain[p];
-    if (g < n) {
-      s.fx[g] += ip.forceX[p];
-      s.fy[g] += ip.forceY[p];
-      s.torque[g] -= s.radius[g] * ip.torqueArm[p];
-    }
-    clumpFx -= ip.forceX[p];
-    clumpFy -= ip.forceY[p];
-  }
-  state.contactFx = clumpFx;
-  state.contactFy = clumpFy;
-  return worstExcess;
+  return forceKernels(defaultSimdLevel())
+      .intruderContacts(s, clump, state, pairs, params, dt, width, updateShear, overlapRatio);
 }
 
 // ---------------------------------------------------------------- set-up
@@ -497,13 +395,13 @@ void World::computeContactForces(bool updateShear) {
   const auto blocks = static_cast<std::int64_t>(list.blockCount());
 #pragma omp parallel for schedule(dynamic, 1) reduction(max : worstExcess)
   for (std::int64_t b = 0; b < blocks; ++b)
-    worstExcess = std::max(worstExcess, accumulateBlock(static_cast<std::uint32_t>(b), s, kinematics_.data(), list,
-                                                        params, dt, width, updateShear, overlapRatio));
+    worstExcess = std::max(worstExcess, kernels_->forceBlock(static_cast<std::uint32_t>(b), s, kinematics_.data(), list,
+                                                             params, dt, width, updateShear, overlapRatio));
 
   // 2. Intruder contacts (a few hundred pairs).
   if (hasIntruder_)
-    worstExcess = std::max(worstExcess, addIntruderContactForces(s, clump_, clumpState_, intruderPairs_, params, dt,
-                                                                 width, updateShear, overlapRatio));
+    worstExcess = std::max(worstExcess, kernels_->intruderContacts(s, clump_, clumpState_, intruderPairs_, params, dt,
+                                                                   width, updateShear, overlapRatio));
   overlapAlarm_ = worstExcess > 0.0;
 }
 

@@ -12,6 +12,7 @@
 
 #include "core/BinaryStream.h"
 #include "physics/ContactLaw.h"
+#include "physics/ForceKernels.h"
 #include "physics/Intruder.h"
 #include "physics/NeighbourList.h"
 #include "physics/PairKernel.h"
@@ -59,10 +60,8 @@ class SimulationError : public Error {
 // delta_max = (5 meff v^2 / (4 kn sqrt(Reff)))^(2/5), meff = m/2, Reff = r/2.
 double hertzContactTime(double kn, double radius, double mass, double speed);
 
-// Stage 5c of the step (ARCHITECTURE.md): the contacts between grains and the clump's atoms, in list
-// order. Adds each force to its grain (base particles get none), sets the clump's contact force
-// (the sum, serially in list order) and returns the largest overlap excess (PairKernel.h).
-// The clump's total mass enters meff, as LAMMPS does for rigid bodies.
+// Stage 5c of the step (ARCHITECTURE.md) alone, in the default force kernels (ForceKernels.h,
+// intruderContacts), for the micro-benchmarks.
 double addIntruderContactForces(ParticleStore& s, const ClumpDef& clump, ClumpState& state, IntruderPairs& pairs,
                                 ContactParams params, double dt, double width, bool updateShear,
                                 double overlapRatio);
@@ -90,6 +89,9 @@ class World {
   // Every grain's velocity and spin multiplied by `factor` (bed making's damped relaxation); the
   // forces are evaluated afresh before the next step, as after any change of the state.
   void scaleGrainVelocities(double factor);
+  // The force kernels' instruction set (ForceKernels.h; default: the widest the CPU runs). Every
+  // level gives the same bits; only the speed differs. Throws if the CPU lacks it.
+  void useSimdLevel(SimdLevel level) { kernels_ = &forceKernels(level); }
 
   // --- stepping ---
   void step();
@@ -108,6 +110,7 @@ class World {
   std::uint64_t rebuildCount() const { return rebuilds_; }
   const NeighbourList& neighbours() const { return list_; }
   const IntruderPairs& intruderPairs() const { return intruderPairs_; }
+  const ForceKernels& kernels() const { return *kernels_; }
   double kineticEnergy() const;   // translational + rotational, grains only
   const HealthMargins& healthMargins() const { return margins_; }
   double peakDriveSpeed() const;  // largest |vx| the intruder's prescribed motion reaches [sqrt(g d)]
@@ -136,6 +139,7 @@ class World {
   void invalidate();              // structure changed: rebuild and re-prepare before the next step
 
   WorldDef def_;
+  const ForceKernels* kernels_;
   ParticleStore store_;
   std::vector<Kinematics> kinematics_;  // mirror of the store's x, y, vx, vy
   NeighbourList list_;

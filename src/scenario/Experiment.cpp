@@ -240,6 +240,7 @@ RunSummary summarise(const Case& run, const World& world, const RunState& state,
   summary.particles = world.particles().size();
   summary.steps = world.stepCount();
   summary.threads = static_cast<std::uint64_t>(omp_get_max_threads());
+  summary.simd = simdLevelName(world.kernels().level);
   summary.wallSeconds = state.runWallSeconds + state.bedWallSeconds;
   summary.runWallSeconds = state.runWallSeconds;
   summary.bedWallSeconds = state.bedWallSeconds;
@@ -357,7 +358,8 @@ RunOutcome runExperiment(const Case& run, const RunOptions& options) {
   prepareRunDirectory(dir, config, configToml, options.resume);
   LogFile log(dir + "/log.txt");
   log.line("wiggle " + versionText() + (options.resume ? " run --resume" : " run") + " in " + dir +
-           " with " + std::to_string(omp_get_max_threads()) + " threads");
+           " with " + std::to_string(omp_get_max_threads()) + " threads, " +
+           simdLevelName(defaultSimdLevel()) + " force kernels");
 
   RunState state;
   FieldObserver fields(config.fields, config.box.width);

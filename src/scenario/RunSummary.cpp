@@ -29,6 +29,7 @@ const std::vector<SummaryField>& summaryFields() {
       {"n_particles", "", "grains and frozen base particles", &S::particles},
       {"steps", "", "time steps of the run", &S::steps},
       {"threads", "", "OpenMP threads of the last stretch run", &S::threads},
+      {"simd", "", "instruction set of the force kernels of the last stretch run: scalar, avx2 or avx512 (the same bits; only the speed differs)", &S::simd},
       {"wall_s", "s", "wall time: run and bed", &S::wallSeconds},
       {"run_wall_s", "s", "wall time of the run phase", &S::runWallSeconds},
       {"bed_wall_s", "s", "wall time spent obtaining the bed (made or loaded)", &S::bedWallSeconds},

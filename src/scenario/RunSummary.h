@@ -25,6 +25,7 @@ struct RunSummary {
   std::string status;  // "ok"
   // size and cost
   std::uint64_t grains = 0, particles = 0, steps = 0, threads = 0;
+  std::string simd;  // the force kernels' instruction set (physics/ForceKernels.h)
   double wallSeconds = 0.0, runWallSeconds = 0.0, bedWallSeconds = 0.0;
   bool bedFromCache = false;
   std::string bedKey;

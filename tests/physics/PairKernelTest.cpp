@@ -40,7 +40,7 @@ std::vector<Case> adversarialPairs() {
   };
   std::mt19937_64 rng(2026);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  while (cases.size() % 4 != 0 || cases.size() < 64) {
+  while (cases.size() % 8 != 0 || cases.size() < 64) {
     const double angle = 3.14159265358979 * u(rng), r = 0.9 + 0.08 * u(rng);
     cases.push_back(pair(r * std::cos(angle), r * std::sin(angle), 3 * u(rng), 3 * u(rng), 5 * u(rng), 5 * u(rng),
                          0.02 * u(rng), 0.02 * u(rng), u(rng) > 0 ? both : frozen));
@@ -80,19 +80,27 @@ TEST(PairKernel, LanesGiveTheScalarLawsBitsOnAdversarialPairs) {
     for (const double mu : {0.0, 0.1, 0.5}) {
       ContactParams params;
       params.mu = mu;
-      Slots scalar(cases), lanes(cases);
+      Slots scalar(cases);
       for (std::uint32_t k = 0; k < n; ++k)
         scalar.excess[k] = evaluatePairs(cases[k].in, k, scalar.view(), params, 1e-4, updateShear, 1.0);
-      for (std::uint32_t m = 0; m < n; m += simd::Double4::kLanes)
-        simd::store(lanes.excess.data() + m, evaluatePairs(chunk.inputs<simd::Double4>(m), m, lanes.view(), params,
-                                                           1e-4, updateShear, 1.0));
-      SCOPED_TRACE(testing::Message() << "updateShear " << updateShear << ", mu " << mu);
-      expectSameBits(scalar.forceX, lanes.forceX, "forceX");
-      expectSameBits(scalar.forceY, lanes.forceY, "forceY");
-      expectSameBits(scalar.torqueArm, lanes.torqueArm, "torqueArm");
-      expectSameBits(scalar.shearX, lanes.shearX, "shearX");
-      expectSameBits(scalar.shearY, lanes.shearY, "shearY");
-      expectSameBits(scalar.excess, lanes.excess, "overlap excess");
+      auto compareLanes = [&](auto lane) {
+        using V = decltype(lane);
+        Slots lanes(cases);
+        for (std::uint32_t m = 0; m < n; m += V::kLanes)
+          simd::store(lanes.excess.data() + m,
+                      evaluatePairs(chunk.inputs<V>(m), m, lanes.view(), params, 1e-4, updateShear, 1.0));
+        SCOPED_TRACE(testing::Message() << V::kLanes << " lanes, updateShear " << updateShear << ", mu " << mu);
+        expectSameBits(scalar.forceX, lanes.forceX, "forceX");
+        expectSameBits(scalar.forceY, lanes.forceY, "forceY");
+        expectSameBits(scalar.torqueArm, lanes.torqueArm, "torqueArm");
+        expectSameBits(scalar.shearX, lanes.shearX, "shearX");
+        expectSameBits(scalar.shearY, lanes.shearY, "shearY");
+        expectSameBits(scalar.excess, lanes.excess, "overlap excess");
+      };
+      compareLanes(simd::Double4{});
+#if WIGGLE_SIMD_DOUBLE8
+      compareLanes(simd::Double8{});
+#endif
     }
   // The cases do take the branches they are named for (the law is not trivially equal).
   Slots s(cases);
