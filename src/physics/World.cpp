@@ -190,21 +190,33 @@ void World::scaleGrainVelocities(double factor) {
 // ---------------------------------------------------------------- the step
 
 void World::run(std::uint64_t steps) {
-  for (std::uint64_t s = 0; s < steps; ++s) step();
+  for (std::uint64_t s = 0; s < steps; ++s) advance(s + 1 < steps);
 }
 
-void World::step() {
+void World::step() { advance(false); }
+
+// One velocity-Verlet step. Within run(), nothing looks at the grains between two steps, so the
+// pass that ends a step (cross pairs, gravity, second half kick) also starts the next one (first
+// half kick, drift): one pass over the grains instead of two, with the same operations on the same
+// values, so the same bits. The step after such a pass starts with its grains already moved
+// (grainsStarted_); the last step of run() ends whole, as step() always does.
+void World::advance(bool startNextStep) {
   if (!prepared_) prepare();
-  initialIntegrate();
+  if (!grainsStarted_) startGrains();
+  grainsStarted_ = false;
+  startIntruder();
   ++step_;
   placeIntruder();
   if (listsStale_ || maxDisplacementSq_ > 0.25 * def_.skin * def_.skin) rebuildNeighbours();
   else if (hasIntruder_ && intruderPairsStale()) rebuildIntruderPairs({});
   computeContactForces(true);
-  completeForces(true);  // with the second half kick
   // The full check is a scan of every particle: every healthInterval steps, and at once when the
   // force loop saw an overlap beyond the bound (a blow-up can open and close between two scans).
-  if (overlapAlarm_ || step_ % def_.healthInterval == 0) checkHealth();
+  // It needs the step's end, so a step it follows ends whole.
+  const bool scan = overlapAlarm_ || step_ % def_.healthInterval == 0;
+  grainsStarted_ = startNextStep && !scan;
+  completeForces(true, grainsStarted_);
+  if (scan) checkHealth();
 }
 
 void World::prepare() {
@@ -223,38 +235,46 @@ void World::placeIntruder() {
   clumpState_.vx = p.vx;
 }
 
-void World::initialIntegrate() {
+// Grain i's first half kick and drift, with the force, torque it has; records the new kinematics
+// and returns the squared displacement since the last list build when `track` (else 0).
+inline double World::kickAndDrift(std::uint32_t i, double fx, double fy, double torque, bool track) {
+  ParticleStore& s = store_;
   const double dt = def_.dt;
   const double halfDt = 0.5 * dt;
+  const double kick = halfDt * s.invMass[i];
+  const double vx = s.vx[i] + kick * fx;
+  const double vy = s.vy[i] + kick * fy;
+  const double x = s.x[i] + dt * vx;
+  const double y = s.y[i] + dt * vy;
+  const double omega = s.omega[i] + halfDt * s.invInertia[i] * torque;
+  s.vx[i] = vx;
+  s.vy[i] = vy;
+  s.x[i] = x;
+  s.y[i] = y;
+  s.omega[i] = omega;
+  // With the structure changed (grains added or removed), indices moved: the rebuild that follows
+  // in this step refreshes the displacement base and the kinematics records instead.
+  if (!track) return 0.0;
+  kinematics_[i] = Kinematics{x, y, vx, vy};
+  const double dx = x - xAtBuild_[i];
+  const double dy = y - yAtBuild_[i];
+  return dx * dx + dy * dy;
+}
+
+void World::startGrains() {
   ParticleStore& s = store_;
   const std::uint32_t n = s.grainCount;
   const bool track = !listsStale_;
   double maxSq = 0.0;
 #pragma omp parallel for schedule(static) reduction(max : maxSq)
-  for (std::uint32_t i = 0; i < n; ++i) {
-    const double kick = halfDt * s.invMass[i];
-    const double vx = s.vx[i] + kick * s.fx[i];
-    const double vy = s.vy[i] + kick * s.fy[i];
-    const double x = s.x[i] + dt * vx;
-    const double y = s.y[i] + dt * vy;
-    const double omega = s.omega[i] + halfDt * s.invInertia[i] * s.torque[i];
-    s.vx[i] = vx;
-    s.vy[i] = vy;
-    s.x[i] = x;
-    s.y[i] = y;
-    s.omega[i] = omega;
-    // With the structure changed (grains added or removed), indices moved: the rebuild that follows
-    // in this step refreshes the displacement base and the kinematics records instead.
-    if (track) {
-      kinematics_[i] = Kinematics{x, y, vx, vy};
-      const double dx = x - xAtBuild_[i];
-      const double dy = y - yAtBuild_[i];
-      maxSq = std::max(maxSq, dx * dx + dy * dy);
-    }
-  }
+  for (std::uint32_t i = 0; i < n; ++i) maxSq = std::max(maxSq, kickAndDrift(i, s.fx[i], s.fy[i], s.torque[i], track));
   maxDisplacementSq_ = maxSq;
+}
+
+void World::startIntruder() {
   if (hasIntruder_ && motion_.verticalFree) {
-    clumpState_.vy += halfDt * (clumpState_.contactFy - clump_.mass * def_.gravity) / clump_.mass;
+    const double dt = def_.dt;
+    clumpState_.vy += 0.5 * dt * (clumpState_.contactFy - clump_.mass * def_.gravity) / clump_.mass;
     clumpState_.y += dt * clumpState_.vy;
   }
 }
@@ -405,15 +425,18 @@ void World::computeContactForces(bool updateShear) {
   overlapAlarm_ = worstExcess > 0.0;
 }
 
-void World::completeForces(bool kick) {
+void World::completeForces(bool kick, bool startNextStep) {
   // 3. Cross pairs reach their partner grain, in pair order; then gravity; then, in a step, the
-  //    second half kick (fused here: one pass over the grains instead of two).
+  //    second half kick (fused here: one pass over the grains instead of two), and when asked the
+  //    next step's first half kick and drift (World::advance).
   const double halfDt = 0.5 * def_.dt;
   const double gravity = def_.gravity;
   ParticleStore& s = store_;
   const NeighbourList& list = list_;
   const std::uint32_t n = s.grainCount;
-#pragma omp parallel for schedule(static)
+  const bool track = !listsStale_;
+  double maxSq = 0.0;
+#pragma omp parallel for schedule(static) reduction(max : maxSq)
   for (std::uint32_t i = 0; i < n; ++i) {
     double fx = s.fx[i], fy = s.fy[i], torque = s.torque[i];
     for (std::uint32_t c = list.crossStart[i]; c < list.crossStart[i + 1]; ++c) {
@@ -432,7 +455,9 @@ void World::completeForces(bool kick) {
       s.vy[i] += kickScale * fy;
       s.omega[i] += halfDt * s.invInertia[i] * torque;
     }
+    if (startNextStep) maxSq = std::max(maxSq, kickAndDrift(i, fx, fy, torque, track));
   }
+  if (startNextStep) maxDisplacementSq_ = maxSq;
   if (kick && hasIntruder_ && motion_.verticalFree)
     clumpState_.vy += halfDt * (clumpState_.contactFy - clump_.mass * def_.gravity) / clump_.mass;
 }

@@ -126,13 +126,18 @@ class World {
 
  private:
   void prepare();                 // first force evaluation (history not advanced), as LAMMPS's setup
-  void initialIntegrate();        // half kick + drift of grains and intruder; tracks max displacement
+  void advance(bool startNextStep);  // one step; see World.cpp
+  void startGrains();             // every grain's first half kick and drift; tracks max displacement
+  double kickAndDrift(std::uint32_t i, double fx, double fy, double torque, bool track);
+  void startIntruder();           // the intruder's first half kick and drift in y, when it is free
   void placeIntruder();           // prescribed x, vx at the current time
   void rebuildNeighbours();       // wrap, maybe re-sort, rebuild both lists carrying history
   void rebuildIntruderPairs(const std::vector<std::uint32_t>& newToOld);
   bool intruderPairsStale() const;
   void computeContactForces(bool updateShear);  // contacts only: grains' sums are completed by...
-  void completeForces(bool kick);                // ...cross pairs and gravity, then the half kick
+  // ...cross pairs and gravity, then the second half kick; with startNextStep also the next step's
+  // first half kick and drift of the grains.
+  void completeForces(bool kick, bool startNextStep = false);
   void refreshKinematics();       // every particle's Kinematics record from the store
   void checkHealth();
   void checkTimeStep() const;
@@ -155,6 +160,7 @@ class World {
   std::uint32_t nextTag_ = 0;
   bool prepared_ = false;
   bool listsStale_ = true;
+  bool grainsStarted_ = false;  // inside run(): this step's first half kick and drift are done already
   bool overlapAlarm_ = false;  // the last force evaluation saw an overlap beyond the detector's bound
   HealthMargins margins_;
   // Neighbour-list validity: positions at the last build, the largest squared displacement since.
