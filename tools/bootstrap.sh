@@ -10,7 +10,8 @@ packages=(build-essential cmake libgtest-dev libgmock-dev libbenchmark-dev libto
           nlohmann-json3-dev libomp-dev libopenmpi-dev openmpi-bin python3 python3-matplotlib python3-numpy
           python3-pandas jupyter-nbconvert python3-ipykernel python3-nbformat   # the analysis API and its notebook
           clang-14 libclang-rt-14-dev   # clang: the fuzz and tsan presets (docs/RELIABILITY.md)
-          ffmpeg)                       # wiggle plot --movie
+          ffmpeg                        # wiggle plot --movie
+          chromium)                     # wiggle report's test opens the page in a headless browser
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

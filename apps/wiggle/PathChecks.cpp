@@ -1,5 +1,9 @@
 #include "PathChecks.h"
 
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <system_error>
 
@@ -39,6 +43,17 @@ void requireOutputDirectory(const std::string& flag, const std::string& path) {
     throw Error(name + ": parent directory " + parent.string() + " does not exist");
   if (ec) throw Error(name + ": parent directory " + parent.string() + ": " + ec.message());
   throw Error(name + ": parent " + parent.string() + " is not a directory");
+}
+
+void requireOutputFile(const std::string& name, const std::string& path) {
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) throw Error(name + ": is a directory, not a file");
+  const fs::path parent = fs::path(path).has_parent_path() ? fs::path(path).parent_path() : fs::path(".");
+  const fs::file_status st = fs::status(parent, ec);
+  if (st.type() == fs::file_type::not_found) throw Error(name + ": directory " + parent.string() + " does not exist");
+  if (st.type() != fs::file_type::directory) throw Error(name + ": " + parent.string() + " is not a directory");
+  if (::access(parent.c_str(), W_OK) != 0)
+    throw Error(name + ": directory " + parent.string() + " is not writable (" + std::strerror(errno) + ")");
 }
 
 }  // namespace wiggle::cli

@@ -17,4 +17,9 @@ void requireInputFile(const std::string& path, const std::string& what);
 // (the command's default) is not checked.
 void requireOutputDirectory(const std::string& flag, const std::string& path);
 
+// An output file (`name`: "--out report.html", or the default path the command names): not a
+// directory, and its directory exists and is writable (the file is written to a temporary name
+// there and renamed), e.g. "--out /nonexistent/r.html: directory /nonexistent does not exist".
+void requireOutputFile(const std::string& name, const std::string& path);
+
 }  // namespace wiggle::cli

@@ -66,6 +66,7 @@ int main(int argc, char** argv) {
   wiggle::cli::addPlotCommand(app);
   wiggle::cli::addExportLammpsCommand(app);
   wiggle::cli::addStatusCommand(app);
+  wiggle::cli::addReportCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -9,7 +9,8 @@ and `wiggle model` write (docs/OUTPUT-FORMATS.md) and never re-derives physics. 
 - runplots:  figures of one run directory (paper figs 2, 3-4, 8, 9-11, movie)
 - sweepplots: figures of a sweep directory (paper figs 2, 5, 6, 8, 14, Table 1)
 - geomplots: the intruder geometry figure (paper fig 13)
-- cli:       `python3 -m wiggleplot DIR` / `--geometry a.json ... --out DIR`
+- htmlreport: a sweep's self-contained HTML page (`wiggle report DIR`)
+- cli:       `python3 -m wiggleplot DIR` / `--geometry a.json ... --out DIR` / `DIR --html FILE --status S.json`
 - data:      runs and sweeps as pandas DataFrames, and `run()`, a thin driver of `wiggle run`
 
 For analysis (pandas from Debian: python3-pandas):

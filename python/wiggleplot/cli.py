@@ -1,6 +1,8 @@
 """Command line: `python3 -m wiggleplot DIR [--format png,pdf] [--movie] [--times t1,t2,...]
 [--out OUT]` draws a run or sweep directory (detected from its files) into DIR/figures (or OUT);
-`python3 -m wiggleplot --geometry a.json b.json ... --out OUT` draws intruder geometries.
+`python3 -m wiggleplot --geometry a.json b.json ... --out OUT` draws intruder geometries;
+`python3 -m wiggleplot DIR --html FILE --status STATUS.json` writes a sweep's HTML page (what
+`wiggle report` runs, with the status it computed: wiggleplot.htmlreport).
 Exit status: 0 done, 2 bad input (one line on stderr), 3 matplotlib or numpy missing."""
 import argparse
 import os
@@ -31,6 +33,8 @@ def parse_args(argv):
                    "frames spread over the run)")
     p.add_argument("--geometry", nargs="+", metavar="FILE.json",
                    help="draw intruder geometries written by `wiggle model --geometry`")
+    p.add_argument("--html", metavar="FILE", help="write the sweep's HTML report to FILE (with --status)")
+    p.add_argument("--status", metavar="STATUS.json", help="the sweep's status as `wiggle report` hands it over")
     p.add_argument("--quiet", action="store_true", help="do not list the files written")
     return p.parse_args(argv)
 
@@ -111,6 +115,14 @@ def main(argv=None):
         if not os.path.isdir(args.dir):
             return fail(f"not a directory: {args.dir}")
         kind = directory_kind(args.dir)
+        if args.html:
+            if kind != "sweep":
+                return fail(f"{args.dir}: no results.csv: not a sweep directory")
+            if not args.status:
+                return fail("--html needs --status STATUS.json (run `wiggle report DIR`)")
+            from wiggleplot import htmlreport
+            htmlreport.write_report(args.dir, args.html, args.status, report)
+            return 0
         out = args.out or os.path.join(args.dir, "figures")
         if kind is not None:
             problem = make_out_dir(out, bool(args.out))

@@ -439,6 +439,18 @@ def plot_sweep_phase_rates(sweep, out_dir, formats):
     sweep.report.wrote(style.save(fig, out_dir, "phase_rates", formats))
 
 
+# The figures plot_sweep may write (file name without extension, what it shows), in its order;
+# which of them appear depends on what varies in the sweep (docs/OUTPUT-FORMATS.md).
+SWEEP_FIGURES = (
+    ("rate_vs_period", "V_y against T per amplitude (paper fig. 5)"),
+    ("rate_vs_period_mu", "V_y against T per friction (paper fig. 6)"),
+    ("rate_map", "V_y over (T, A) (paper fig. 14)"),
+    ("table1", "T_rising observed and predicted (paper Table 1)"),
+    ("trajectories", "y(t) - y(0) per T (paper fig. 2)"),
+    ("phase_rates", "mean v_y per phase bin per T (paper fig. 8)"),
+)
+
+
 def plot_sweep(sweep_dir, out_dir, formats, report):
     style.apply()
     sweep = Sweep(sweep_dir, report)

@@ -96,6 +96,14 @@ class World {
   // --- stepping ---
   void step();
   void run(std::uint64_t steps);
+  // The forces of the current state, evaluated now if a change since the last step left them stale
+  // (set-up, resetClock, setParameters, ...), exactly as the next step would first do itself: so
+  // calling it changes no result. For observers that read forces before the first step (the dump's
+  // frame at step 0). Pair forces are not saved (World::save): after load they are zero until the
+  // next step, while the grains' totals (fx, fy, torque) are the saved step's.
+  void evaluateForces() {
+    if (!prepared_) prepare();
+  }
 
   // --- state (read-only) ---
   const WorldDef& def() const { return def_; }

@@ -392,6 +392,11 @@ RunOutcome runExperiment(const Case& run, const RunOptions& options) {
   World& world = *loaded;
   RunObservers observers(run, state, fields, dumpPath);
   if (world.stepCount() == 0 && state.samples.empty()) {
+    // The forces of the start (drive on, bed history as configured), which the first step would
+    // evaluate anyway: the first sample's fy and the first dump frame are then those of step 0, not
+    // the bed's last, and the same whether the bed was just made or loaded from the cache (a
+    // loaded bed's pair forces are zero: World::save does not hold them).
+    world.evaluateForces();
     observers.sample(world);
     if (run.steps.dumpEvery) observers.dumpFrame(world);
   }

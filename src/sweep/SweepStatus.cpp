@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <sstream>
+#include <string_view>
 
 #include "core/Error.h"
 #include "core/Format.h"
@@ -45,18 +47,30 @@ double runFraction(const std::string& logPath) {
   return fraction;
 }
 
-// "... 1 jobs x 1 threads ..." in sweep.log's last start line.
-int jobsFromLog(const std::string& logPath) {
-  if (!fs::exists(logPath)) return 0;
-  std::istringstream lines(readFile(logPath));
+// From sweep.log's start lines, the last of each: the jobs ("... 1 jobs x 1 threads ...") and the
+// sweep's name ("wiggle sweep NAME: 10 cases, ..." or, from an array task, "wiggle sweep NAME --case 3: ...").
+struct SweepLogFacts {
   int jobs = 0;
+  std::string name;
+};
+
+SweepLogFacts readSweepLog(const std::string& logPath) {
+  SweepLogFacts facts;
+  if (!fs::exists(logPath)) return facts;
+  std::istringstream lines(readFile(logPath));
   for (std::string line; std::getline(lines, line);) {
-    const auto at = line.find(" jobs x ");
-    if (at == std::string::npos) continue;
-    const auto start = line.rfind(' ', at - 1);
-    jobs = std::atoi(line.substr(start + 1, at - start - 1).c_str());
+    if (const auto at = line.find(" jobs x "); at != std::string::npos) {
+      const auto start = line.rfind(' ', at - 1);
+      facts.jobs = std::atoi(line.substr(start + 1, at - start - 1).c_str());
+    }
+    constexpr std::string_view kStart = "wiggle sweep ";
+    if (const auto at = line.find(kStart); at != std::string::npos) {
+      const std::string rest = line.substr(at + kStart.size());
+      const auto end = std::min(rest.find(": "), rest.find(" --case "));
+      if (end != std::string::npos && end > 0) facts.name = rest.substr(0, end);
+    }
   }
-  return jobs;
+  return facts;
 }
 
 double number(const std::string& cell) {
@@ -126,7 +140,9 @@ SweepStatus readSweepStatus(const std::string& dir) {
   SweepStatus s;
   s.dir = dir;
   s.sweepRunning = lockHeld(dir);
-  s.jobs = jobsFromLog(dir + "/sweep.log");
+  const SweepLogFacts log = readSweepLog(dir + "/sweep.log");
+  s.jobs = log.jobs;
+  s.name = log.name;
   double finishedWall = 0.0, casesLeft = 0.0;
   int finished = 0;
   for (std::size_t r = 1; r < rows.size(); ++r) {
@@ -184,6 +200,28 @@ std::string formatSweepStatus(const SweepStatus& s) {
         << "the cases left, over " << std::max(1, s.jobs) << " job" << (std::max(1, s.jobs) > 1 ? "s" : "")
         << "; beds still to make are not counted)\n";
   return out.str();
+}
+
+std::string sweepStatusJson(const SweepStatus& s) {
+  using nlohmann::json;
+  json cases = json::array();
+  for (const CaseStatus& c : s.cases) {
+    const bool ok = c.status == "ok";
+    cases.push_back({{"name", c.name},
+                     {"status", c.status},
+                     {"error", c.error},
+                     {"vy", ok ? json(c.vy) : json(nullptr)},
+                     {"wall_s", ok ? json(c.wallSeconds) : json(nullptr)},
+                     {"fraction", c.fraction >= 0 ? json(c.fraction) : json(nullptr)}});
+  }
+  const json out = {{"dir", s.dir},
+                    {"name", s.name},
+                    {"sweep_running", s.sweepRunning},
+                    {"jobs", s.jobs},
+                    {"eta_s", s.etaSeconds >= 0 ? json(s.etaSeconds) : json(nullptr)},
+                    {"text", formatSweepStatus(s)},
+                    {"cases", cases}};
+  return out.dump(1, ' ', false, json::error_handler_t::replace) + "\n";  // errors may hold any bytes
 }
 
 }  // namespace wiggle

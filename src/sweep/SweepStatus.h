@@ -18,6 +18,7 @@ struct CaseStatus {
 
 struct SweepStatus {
   std::string dir;
+  std::string name;           // the sweep's name, from sweep.log's last start line (empty when unknown)
   std::vector<CaseStatus> cases;
   bool sweepRunning = false;  // a wiggle sweep holds the directory's lock now
   int jobs = 0;               // cases at once, from sweep.log's last start line (0 = unknown)
@@ -30,6 +31,12 @@ struct SweepStatus {
 SweepStatus readSweepStatus(const std::string& dir);
 
 std::string formatSweepStatus(const SweepStatus& status);
+
+// The status as JSON, for `wiggle report` to hand to the plotting package: {"dir", "name",
+// "sweep_running", "jobs", "eta_s" (null when unknown), "text" (what `wiggle status` prints),
+// "cases": [{"name", "status", "error", "vy", "wall_s", "fraction"}]} (vy and wall_s null unless ok,
+// fraction null unless a running case's log says how far it got).
+std::string sweepStatusJson(const SweepStatus& status);
 
 // The rows of a CSV text (RFC 4180: quoted cells may hold commas, quotes and newlines).
 std::vector<std::vector<std::string>> parseCsv(const std::string& text);

@@ -117,7 +117,7 @@ TEST_F(Cli, HelpAndVersionExitZero) {
   // The release and the git revision the binary was built from (unknown outside a checkout).
   EXPECT_EQ(r.out.rfind(std::string("wiggle ") + WIGGLE_VERSION + " (git ", 0), 0u) << r.out;
   EXPECT_EQ(r.out.substr(r.out.size() - 2), ")\n") << r.out;
-  for (const char* sub : {"run", "sweep", "model", "plot", "export-lammps"}) {
+  for (const char* sub : {"run", "sweep", "model", "plot", "export-lammps", "status", "report"}) {
     r = wiggle(std::string(sub) + " --help");
     EXPECT_EQ(r.status, 0) << sub << ": " << r.err;
     EXPECT_NE(r.out.find(std::string("wiggle ") + sub), std::string::npos) << r.out;
@@ -145,6 +145,8 @@ TEST_F(Cli, ParseErrorsAreOneLineNamingTheArgumentWithStatus2) {
       {"model --angle x", {"model: ", "--angle", "x"}},
       {"plot --format", {"plot: ", "--format"}},
       {"export-lammps", {"export-lammps: ", "--out", "required"}},
+      {"report", {"report: ", "dir", "required"}},
+      {"report . --out", {"report: ", "--out", "missing"}},
   };
   for (const Case& c : cases) {
     const Result r = wiggle(c.args);

@@ -2,12 +2,16 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <random>
+#include <sstream>
 #include <nlohmann/json.hpp>
 
+#include "analysis/LammpsDump.h"
 #include "core/Error.h"
 #include "core/StopSignal.h"
 #include "io/AtomicFile.h"
@@ -50,10 +54,16 @@ RunOptions quiet(const std::string& dir) {
 }
 
 TEST(Experiment, ResumedRunIsBitwiseIdenticalToAnUninterruptedOne) {
-  const RunConfig config = tinyConfig(scratch(""));
+  // Its own empty bed cache: the uninterrupted run makes the bed and runs on it as made, the
+  // interrupted one loads it from the cache (where the pairs' forces are not held), so the dump
+  // frames' forces are compared across both ways of starting as well as across the resume.
+  RunConfig config = tinyConfig(scratch(""));
+  config.bed.cacheDir = scratch("resume-cache");
+  fs::remove_all(config.bed.cacheDir);
   const std::string straight = scratch("straight"), interrupted = scratch("interrupted");
   const RunOutcome reference = runExperiment(prepareCase(config), quiet(straight));
   ASSERT_EQ(reference.status, "ok");
+  ASSERT_NE(readFile(straight + "/log.txt").find("bed made"), std::string::npos);
 
   RunOptions stop = quiet(interrupted);
   stop.stopAfterSteps = 1700;  // mid-period, between samples and dump frames
@@ -64,8 +74,15 @@ TEST(Experiment, ResumedRunIsBitwiseIdenticalToAnUninterruptedOne) {
   resume.resume = true;
   const RunOutcome resumed = runExperiment(prepareCase(config), resume);
   EXPECT_EQ(resumed.stateHash, reference.stateHash);
+  ASSERT_NE(readFile(interrupted + "/log.txt").find("bed loaded"), std::string::npos);
   for (const char* file : {"trajectory.csv", "phase_rates.csv", "fields.csv", "dumps/dump.lammpstrj", "model.json"})
     EXPECT_EQ(readFile(interrupted + "/" + file), readFile(straight + "/" + file)) << file;
+  const std::string dump = readFile(straight + "/dumps/dump.lammpstrj");
+  // Five frames (t = 0, 0.1, ..., 0.4), each with the force and torque columns.
+  std::size_t frames = 0;
+  for (std::size_t at = 0; (at = dump.find("ITEM: ATOMS id type x y z radius vx vy fx fy tqz\n", at)) != std::string::npos; ++at)
+    ++frames;
+  EXPECT_EQ(frames, 5u);
   const auto summary = nlohmann::json::parse(readFile(straight + "/summary.json"));
   EXPECT_EQ(summary["status"], "ok");
   EXPECT_EQ(summary["steps"], 4000);
@@ -376,9 +393,13 @@ TEST(Experiment, PinnedBedServesAnotherFrictionAndRefusesAnotherGeometry) {
   EXPECT_FALSE(fs::exists(root + "/empty-cache"));  // no bed was made
   const auto summary = nlohmann::json::parse(readFile(root + "/pinned/summary.json"));
   EXPECT_EQ(summary["bed_key"], made.key);
-  const std::string ownStart = readFile(root + "/own/trajectory.csv"), pinnedStart = readFile(root + "/pinned/trajectory.csv");
-  EXPECT_EQ(ownStart.substr(0, ownStart.find('\n', ownStart.find('\n') + 1)),
-            pinnedStart.substr(0, pinnedStart.find('\n', pinnedStart.find('\n') + 1)));  // the same t = 0 row
+  // The same t = 0 row up to its last cell, fy: the start's contact force, evaluated with each
+  // run's own friction.
+  auto startWithoutFy = [](const std::string& csv) {
+    const std::string rows = csv.substr(0, csv.find('\n', csv.find('\n') + 1));
+    return rows.substr(0, rows.rfind(','));
+  };
+  EXPECT_EQ(startWithoutFy(readFile(root + "/own/trajectory.csv")), startWithoutFy(readFile(root + "/pinned/trajectory.csv")));
 
   auto refusal = [&](const std::vector<std::string>& sets) {
     RunConfig bad = loadRunConfig(std::nullopt, sets);
@@ -407,6 +428,78 @@ TEST(Experiment, PinnedBedServesAnotherFrictionAndRefusesAnotherGeometry) {
   missing.bed.file = root + "/nope.bin";
   EXPECT_THROW(obtainBed(missing, prepareCase(missing).clump), Error);
   fs::remove_all(root);
+}
+
+// One dump frame's rows: type and the force columns, in the frame's order (the store's, then the
+// intruder's atoms).
+struct DumpRow {
+  int type = 0;
+  double vx = 0, vy = 0, fx = 0, fy = 0, tqz = 0;
+};
+
+std::vector<DumpRow> dumpRows(const std::string& frame) {
+  std::istringstream in(frame);
+  std::string line;
+  while (std::getline(in, line) && line.rfind("ITEM: ATOMS", 0) != 0) {
+  }
+  EXPECT_EQ(line, "ITEM: ATOMS id type x y z radius vx vy fx fy tqz");
+  std::vector<DumpRow> rows;
+  while (std::getline(in, line)) {
+    std::istringstream cells(line);
+    DumpRow r;
+    double id, x, y, z, radius;
+    cells >> id >> r.type >> x >> y >> z >> radius >> r.vx >> r.vy >> r.fx >> r.fy >> r.tqz;
+    EXPECT_TRUE(cells) << line;
+    rows.push_back(r);
+  }
+  return rows;
+}
+
+TEST(Experiment, DumpedForcesOfASettledBedBalanceItsWeight) {
+  // The tiny bed (made to bed.rest_energy = 1e-4) with the intruder held in it, left to settle for
+  // t = 5 more (its grains still ring a little as made); the frame is written after a step, so every
+  // pair's force is that step's (a bed loaded from the cache holds only the grains' totals).
+  const RunConfig config = tinyConfig(scratch(""));
+  World world = obtainBed(config, prepareCase(config).clump).world;
+  world.run(50000);
+  const std::vector<DumpRow> rows = dumpRows(lammpsDumpFrame(world));
+  const ParticleStore& s = world.particles();
+  ASSERT_EQ(rows.size(), s.size() + world.clump().offsetX.size());
+  const double g = world.def().gravity;
+  // Each grain at rest carries its weight on its contacts: its dumped total force (contacts plus
+  // gravity) is within 5 % of m g, and within 1 % for the median grain, where a dump that left out
+  // gravity or a contact would be off by m g or by a contact's share of it. (Measured here: 3 %
+  // at most, 0.5 % median; the rest is the bed's ringing.)
+  double grainWeight = 0.0;
+  std::vector<double> imbalance;
+  for (std::uint32_t i = 0; i < s.grainCount; ++i) {
+    ASSERT_EQ(rows[i].type, 1);
+    const double weight = s.mass[i] * g;
+    grainWeight += weight;
+    if (std::hypot(rows[i].vx, rows[i].vy) > 1e-3) continue;  // not at rest
+    imbalance.push_back(std::hypot(rows[i].fx, rows[i].fy) / weight);
+    EXPECT_LT(imbalance.back(), 0.05) << "grain " << i << ": force " << rows[i].fx << ", " << rows[i].fy
+                                      << " against a weight of " << weight;
+  }
+  ASSERT_GT(imbalance.size(), s.grainCount * 9 / 10);
+  std::nth_element(imbalance.begin(), imbalance.begin() + imbalance.size() / 2, imbalance.end());
+  EXPECT_LT(imbalance[imbalance.size() / 2], 0.01);
+  // The grains' weight rests on the base and the intruder's atoms: the contact forces dumped for
+  // them add up to the grains' total weight, pointing down, within 1 %.
+  double onBaseAndIntruder = 0.0;
+  for (std::size_t r = s.grainCount; r < rows.size(); ++r) onBaseAndIntruder += rows[r].fy;
+  EXPECT_NEAR(onBaseAndIntruder, -grainWeight, 0.01 * grainWeight);
+  // The atoms' forces add up to the intruder's contact force (to the dump's six digits per atom).
+  double atomsFx = 0.0, atomsFy = 0.0, largest = 0.0;
+  for (std::size_t r = s.size(); r < rows.size(); ++r) {
+    atomsFx += rows[r].fx;
+    atomsFy += rows[r].fy;
+    largest = std::max({largest, std::fabs(rows[r].fx), std::fabs(rows[r].fy)});
+  }
+  EXPECT_GT(std::fabs(world.intruder().contactFy), 1.0);  // grains rest on it: a sum worth comparing
+  const double digits = 5e-6 * largest * static_cast<double>(rows.size() - s.size());
+  EXPECT_NEAR(atomsFx, world.intruder().contactFx, digits);
+  EXPECT_NEAR(atomsFy, world.intruder().contactFy, digits);
 }
 
 }  // namespace

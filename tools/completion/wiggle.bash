@@ -3,7 +3,7 @@
 _wiggle() {
   local cur prev words cword
   _init_completion || return
-  local commands="run sweep model plot export-lammps status"
+  local commands="run sweep model plot export-lammps status report"
   if [[ $cword -eq 1 ]]; then
     COMPREPLY=($(compgen -W "$commands --help --version" -- "$cur"))
     return
@@ -17,7 +17,9 @@ _wiggle() {
       COMPREPLY=($(compgen -W "$keys" -- "$cur"))
       compopt -o nospace
       return ;;
-    --out) _filedir -d; return ;;
+    --out)  # a directory, except report's HTML file
+      if [[ "${words[1]}" == report ]]; then _filedir html; else _filedir -d; fi
+      return ;;
     --threads|--jobs|--case) return ;;
   esac
   local options
@@ -28,6 +30,7 @@ _wiggle() {
     plot) options="--format --movie --times --out --geometry --help" ;;
     export-lammps) options="--set --out --threads --help" ;;
     status) options="--help" ;;
+    report) options="--out --help" ;;
   esac
   if [[ "$cur" == -* ]]; then
     COMPREPLY=($(compgen -W "$options" -- "$cur"))
