@@ -96,6 +96,16 @@ class World {
   // --- stepping ---
   void step();
   void run(std::uint64_t steps);
+  // run(steps), calling afterEach(intruder, step count, time) after every step. Between two steps
+  // of a run the grains may already be half a step into the next one (World::advance), so the
+  // callback gets only what is whole after every step: the intruder's state, the step and time.
+  template <class AfterEach>
+  void runWatchingIntruder(std::uint64_t steps, AfterEach&& afterEach) {
+    for (std::uint64_t s = 0; s < steps; ++s) {
+      advance(s + 1 < steps);
+      afterEach(static_cast<const ClumpState&>(clumpState_), step_, time());
+    }
+  }
   // The forces of the current state, evaluated now if a change since the last step left them stale
   // (set-up, resetClock, setParameters, ...), exactly as the next step would first do itself: so
   // calling it changes no result. For observers that read forces before the first step (the dump's

@@ -160,17 +160,16 @@ World startFromBed(const Case& run, RunState& state, LogFile& log, ProgressLine&
   return world;
 }
 
-// What the step loop feeds after each step: the phase bins and field frames (after t_i), the
-// trajectory samples and the dump frames, all kept in the RunState a checkpoint saves.
+// What the step loop feeds: after every step, the phase bins (after t_i) and the trajectory
+// samples, which read only the intruder; at the steps that need the grains (needsGrainsAt), the
+// field frames and the dump frames. All kept in the RunState a checkpoint saves.
 class RunObservers {
  public:
   RunObservers(const Case& run, RunState& state, FieldObserver& fields, std::string dumpPath)
       : run_(run), state_(state), fields_(fields), dumpPath_(std::move(dumpPath)) {}
 
-  void sample(const World& world) {
-    const ClumpState& c = world.intruder();
-    state_.samples.push_back({world.time(), c.x, c.y, c.vx, c.vy, c.contactFy});
-  }
+  void sample(const ClumpState& c, double time) { state_.samples.push_back({time, c.x, c.y, c.vx, c.vy, c.contactFy}); }
+  void sample(const World& world) { sample(world.intruder(), world.time()); }
 
   void dumpFrame(const World& world) {
     const std::string frame = lammpsDumpFrame(world);
@@ -178,22 +177,41 @@ class RunObservers {
     state_.dumpBytes += frame.size();
   }
 
-  void afterStep(const World& world) {
+  // After every step, from the intruder's state alone (World::runWatchingIntruder).
+  void afterStep(const ClumpState& intruder, std::uint64_t step, double time) {
     const RunSchedule& steps = run_.steps;
-    const std::uint64_t step = world.stepCount();
     if (step > steps.firstMeasured) {
       const int bin = static_cast<int>((step % steps.period) * kPhaseBins / steps.period);
-      state_.phaseSum[bin] += world.intruder().vy;
+      state_.phaseSum[bin] += intruder.vy;
       ++state_.phaseCount[bin];
-      if (run_.config.fields.enabled)
-        for (std::size_t p = 0; p < steps.fieldPhaseStep.size(); ++p)
-          if (step % steps.period == steps.fieldPhaseStep[p]) fields_.addFrame(world, p);
     }
-    if (step % steps.sampleEvery == 0) sample(world);
+    if (step % steps.sampleEvery == 0) sample(intruder, time);
+  }
+
+  // Whether the grains are observed after this step: a field frame or a dump frame.
+  bool needsGrainsAt(std::uint64_t step) const {
+    const RunSchedule& steps = run_.steps;
+    return fieldPhaseAt(step) || (steps.dumpEvery && step % steps.dumpEvery == 0);
+  }
+
+  // The grain observations of the world's current step (after afterStep).
+  void observeGrains(const World& world) {
+    const RunSchedule& steps = run_.steps;
+    const std::uint64_t step = world.stepCount();
+    if (const std::size_t p = fieldPhaseAt(step)) fields_.addFrame(world, p - 1);
     if (steps.dumpEvery && step % steps.dumpEvery == 0) dumpFrame(world);
   }
 
  private:
+  // 1 + the fields.phases entry whose frame is taken after this step; 0 for none.
+  std::size_t fieldPhaseAt(std::uint64_t step) const {
+    const RunSchedule& steps = run_.steps;
+    if (!run_.config.fields.enabled || step <= steps.firstMeasured) return 0;
+    for (std::size_t p = 0; p < steps.fieldPhaseStep.size(); ++p)
+      if (step % steps.period == steps.fieldPhaseStep[p]) return p + 1;
+    return 0;
+  }
+
   const Case& run_;
   RunState& state_;
   FieldObserver& fields_;
@@ -276,9 +294,20 @@ bool stepToTheEnd(const Case& run, const RunOptions& options, const std::string&
   auto lastCheckpoint = Clock::now();
   auto chunkStart = Clock::now();
   const std::uint64_t startStep = world.stepCount();
+  // Every 200 steps the progress line, the signal and the checkpoint clock are looked at.
+  auto mustStopAt = [&](std::uint64_t step) {
+    return step % 200 == 0 || step == steps.total || observers.needsGrainsAt(step) ||
+           (options.stopAfterSteps && step - startStep >= options.stopAfterSteps);
+  };
   while (world.stepCount() < steps.total) {
-    world.step();
-    observers.afterStep(world);
+    // The steps to the next one whose grains somebody looks at run as one stretch (World::run's
+    // fused passes); the intruder is observed after each of them.
+    std::uint64_t to = world.stepCount() + 1;
+    while (!mustStopAt(to)) ++to;
+    world.runWatchingIntruder(to - world.stepCount(), [&](const ClumpState& intruder, std::uint64_t step, double time) {
+      observers.afterStep(intruder, step, time);
+    });
+    observers.observeGrains(world);
     const std::uint64_t step = world.stepCount();
     if (step % 200 == 0 || step == steps.total) {
       state.runWallSeconds += secondsSince(chunkStart);
