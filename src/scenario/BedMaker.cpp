@@ -388,14 +388,18 @@ CachedBed obtainBed(const RunConfig& config, const ClumpDef& clump, const BedPro
   const std::string partialPath = bedPartialPath(config, key);
   std::string note;
   auto addNote = [&](const std::string& text) { note += (note.empty() ? "" : "; ") + text; };
+  std::error_code ec;
   if (std::filesystem::exists(path)) {
     try {
-      return CachedBed{parseCachedBed(readFile(path), path, key), key, path, true, ""};
+      CachedBed cached{parseCachedBed(readFile(path), path, key), key, path, true, ""};
+      // A kill between writing the bed and removing its partial file (below) leaves the partial
+      // behind; the finished bed supersedes it.
+      std::filesystem::remove(partialPath, ec);
+      return cached;
     } catch (const Error& e) {
       addNote(std::string("cached bed refused and rebuilt: ") + e.what());
     }
   }
-  std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   const bool cacheWritable = !ec;
   if (!cacheWritable) addNote("bed not cached: cannot create " + dir + ": " + ec.message());

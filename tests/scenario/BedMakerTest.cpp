@@ -224,6 +224,14 @@ TEST(BedMaker, TinyRandomBedComesToRestAndContinuesToTheSameBits) {
   const CachedBed continued = obtainBed(stopped, clump);
   EXPECT_FALSE(continued.fromCache);
   EXPECT_EQ(continued.world.stateHash(), bed.stateHash());
+  EXPECT_FALSE(fs::exists(bedPartialPath(stopped, bedKey(stopped, clump))));
+
+  // A kill between writing the finished bed and removing its partial file leaves the partial
+  // behind: the next use of the cached bed removes it.
+  const std::string partial = bedPartialPath(stopped, bedKey(stopped, clump));
+  fs::copy_file(continued.path, partial);
+  EXPECT_TRUE(obtainBed(stopped, clump).fromCache);
+  EXPECT_FALSE(fs::exists(partial));
   fs::remove_all(scratch(""));
 }
 
