@@ -79,12 +79,10 @@ double forceBlock(std::uint32_t b, ParticleStore& s, const Kinematics* kin, Neig
   return excess;
 }
 
-double intruderContacts(ParticleStore& s, const ClumpDef& clump, ClumpState& state, IntruderPairs& ip,
-                        const ContactParams params, double dt, double width, bool updateShear, double overlapRatio) {
+double intruderPairForces(const ParticleStore& s, const ClumpDef& clump, const ClumpState& state, IntruderPairs& ip,
+                          const ContactParams params, double dt, double width, bool updateShear, double overlapRatio) {
   double worstExcess = -std::numeric_limits<double>::infinity();
   const double invClumpMass = 1.0 / clump.mass;
-  const std::uint32_t n = s.grainCount;
-  double clumpFx = 0.0, clumpFy = 0.0;
   const PairSlots slots{ip.shearX.data(), ip.shearY.data(), ip.forceX.data(), ip.forceY.data(),
                         ip.torqueArm.data()};
   auto inputs = [&](std::uint32_t p) {
@@ -106,19 +104,6 @@ double intruderContacts(ParticleStore& s, const ClumpDef& clump, ClumpState& sta
     for (std::uint32_t m = 0; m < count; ++m) chunk.set(m, inputs(first + m));
     worstExcess = std::max(worstExcess, evaluateChunk(chunk, count, first, slots, params, dt, updateShear, overlapRatio));
   }
-  // The sums in list order, serially: the clump's total does not depend on the thread count.
-  for (std::uint32_t p = 0; p < ip.size(); ++p) {
-    const std::uint32_t g = ip.grain[p];
-    if (g < n) {
-      s.fx[g] += ip.forceX[p];
-      s.fy[g] += ip.forceY[p];
-      s.torque[g] -= s.radius[g] * ip.torqueArm[p];
-    }
-    clumpFx -= ip.forceX[p];
-    clumpFy -= ip.forceY[p];
-  }
-  state.contactFx = clumpFx;
-  state.contactFy = clumpFy;
   return worstExcess;
 }
 
@@ -131,7 +116,7 @@ double intruderContacts(ParticleStore& s, const ClumpDef& clump, ClumpState& sta
 const ForceKernels& WIGGLE_KERNEL_TABLE_NAME(WIGGLE_KERNEL_VARIANT)() {
   static constexpr ForceKernels kernels{
       WIGGLE_KERNEL_LANES == 8 ? SimdLevel::Avx512 : WIGGLE_KERNEL_LANES == 4 ? SimdLevel::Avx2 : SimdLevel::Scalar,
-      WIGGLE_KERNEL_LANES, &forceBlock, &intruderContacts};
+      WIGGLE_KERNEL_LANES, &forceBlock, &intruderPairForces};
   return kernels;
 }
 

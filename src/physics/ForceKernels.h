@@ -32,12 +32,13 @@ struct ForceKernels {
   double (*forceBlock)(std::uint32_t b, ParticleStore& s, const Kinematics* kin, NeighbourList& list,
                        ContactParams params, double dt, double width, bool updateShear, double overlapRatio);
 
-  // The contacts between grains and the clump's atoms, in list order. Adds each force to its grain
-  // (base particles get none), sets the clump's contact force (the sum, serially in list order) and
-  // returns the largest overlap excess. The clump's total mass enters meff, as LAMMPS does for
-  // rigid bodies.
-  double (*intruderContacts)(ParticleStore& s, const ClumpDef& clump, ClumpState& state, IntruderPairs& pairs,
-                             ContactParams params, double dt, double width, bool updateShear, double overlapRatio);
+  // The contacts between grains and the clump's atoms: each pair's force, torque arm and new history
+  // written into its slots (IntruderPairs), nothing summed yet (World adds them to the grains and
+  // the clump, in list order), so that it can run beside the force blocks. Returns the largest
+  // overlap excess. The clump's total mass enters meff, as LAMMPS does for rigid bodies.
+  double (*intruderPairForces)(const ParticleStore& s, const ClumpDef& clump, const ClumpState& state,
+                               IntruderPairs& pairs, ContactParams params, double dt, double width, bool updateShear,
+                               double overlapRatio);
 };
 
 // "scalar", "avx2", "avx512".

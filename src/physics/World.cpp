@@ -45,11 +45,30 @@ World::World(const WorldDef& def) : def_(def), kernels_(&forceKernels(defaultSim
     throw Error("blow-up bounds must be finite, > 0 (the speed factor > 1)");
 }
 
+void addIntruderPairForces(ParticleStore& s, ClumpState& state, const IntruderPairs& ip) {
+  const std::uint32_t n = s.grainCount;
+  double clumpFx = 0.0, clumpFy = 0.0;
+  for (std::uint32_t p = 0; p < ip.size(); ++p) {
+    const std::uint32_t g = ip.grain[p];
+    if (g < n) {
+      s.fx[g] += ip.forceX[p];
+      s.fy[g] += ip.forceY[p];
+      s.torque[g] -= s.radius[g] * ip.torqueArm[p];
+    }
+    clumpFx -= ip.forceX[p];
+    clumpFy -= ip.forceY[p];
+  }
+  state.contactFx = clumpFx;
+  state.contactFy = clumpFy;
+}
+
 double addIntruderContactForces(ParticleStore& s, const ClumpDef& clump, ClumpState& state, IntruderPairs& pairs,
                                 const ContactParams params, double dt, double width, bool updateShear,
                                 double overlapRatio) {
-  return forceKernels(defaultSimdLevel())
-      .intruderContacts(s, clump, state, pairs, params, dt, width, updateShear, overlapRatio);
+  const double excess = forceKernels(defaultSimdLevel())
+                            .intruderPairForces(s, clump, state, pairs, params, dt, width, updateShear, overlapRatio);
+  addIntruderPairForces(s, state, pairs);
+  return excess;
 }
 
 // ---------------------------------------------------------------- set-up
@@ -409,19 +428,23 @@ void World::computeContactForces(bool updateShear) {
   // between two full scans still raises the alarm, and so a scan.
   const double overlapRatio = def_.maxOverlapRatio;
 
-  // 1. Force blocks, each on one thread (any thread: a block's sums do not depend on which).
-  //    The largest overlap excess is a max, so it does not depend on the thread count either.
+  // 1. Force blocks, each on one thread (any thread: a block's sums do not depend on which), and
+  //    beside them, as one more work item (the first, as it is the largest), the intruder's pairs:
+  //    it reads only positions and velocities, which no block writes, and writes only its own
+  //    slots. The largest overlap excess is a max, so it does not depend on the thread count.
   double worstExcess = -std::numeric_limits<double>::infinity();
+  const std::int64_t first = hasIntruder_ ? -1 : 0;
   const auto blocks = static_cast<std::int64_t>(list.blockCount());
 #pragma omp parallel for schedule(dynamic, 1) reduction(max : worstExcess)
-  for (std::int64_t b = 0; b < blocks; ++b)
-    worstExcess = std::max(worstExcess, kernels_->forceBlock(static_cast<std::uint32_t>(b), s, kinematics_.data(), list,
-                                                             params, dt, width, updateShear, overlapRatio));
+  for (std::int64_t b = first; b < blocks; ++b)
+    worstExcess = std::max(worstExcess, b < 0 ? kernels_->intruderPairForces(s, clump_, clumpState_, intruderPairs_,
+                                                                              params, dt, width, updateShear, overlapRatio)
+                                              : kernels_->forceBlock(static_cast<std::uint32_t>(b), s, kinematics_.data(),
+                                                                     list, params, dt, width, updateShear, overlapRatio));
 
-  // 2. Intruder contacts (a few hundred pairs).
-  if (hasIntruder_)
-    worstExcess = std::max(worstExcess, kernels_->intruderContacts(s, clump_, clumpState_, intruderPairs_, params, dt,
-                                                                   width, updateShear, overlapRatio));
+  // 2. The intruder's pair forces onto its grains and the clump, serially in list order (after the
+  //    blocks, which start their grains' sums from zero), so that no sum depends on the thread count.
+  if (hasIntruder_) addIntruderPairForces(s, clumpState_, intruderPairs_);
   overlapAlarm_ = worstExcess > 0.0;
 }
 

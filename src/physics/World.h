@@ -60,8 +60,12 @@ class SimulationError : public Error {
 // delta_max = (5 meff v^2 / (4 kn sqrt(Reff)))^(2/5), meff = m/2, Reff = r/2.
 double hertzContactTime(double kn, double radius, double mass, double speed);
 
-// Stage 5c of the step (ARCHITECTURE.md) alone, in the default force kernels (ForceKernels.h,
-// intruderContacts), for the micro-benchmarks.
+// The intruder's pair forces (in its pair slots, ForceKernels::intruderPairForces) added to its
+// grains (base particles get none) and summed into the clump's contact force, in list order.
+void addIntruderPairForces(ParticleStore& s, ClumpState& state, const IntruderPairs& pairs);
+
+// Stage 5c of the step (ARCHITECTURE.md) alone: the intruder's pair forces in the default force
+// kernels, then addIntruderPairForces; for the micro-benchmarks.
 double addIntruderContactForces(ParticleStore& s, const ClumpDef& clump, ClumpState& state, IntruderPairs& pairs,
                                 ContactParams params, double dt, double width, bool updateShear,
                                 double overlapRatio);
