@@ -1,17 +1,26 @@
 #!/usr/bin/python3
-"""wiggle vs LAMMPS on the same settled bed (docs/PERFORMANCE.md).
+"""wiggle vs LAMMPS on the same settled bed (docs/PERFORMANCE.md, bench/README.md).
 
-One invocation: builds wiggle (Release), installs LAMMPS from Debian if `lmp` is absent, makes or
-reuses the cached beds, exports each to LAMMPS with `wiggle export-lammps`, then runs both codes
-with the same oscillating intruder for the same number of steps at 1 and 2 threads / MPI ranks,
-interleaving the codes and repeating the rounds. Prints a table and appends the rows to
+One invocation: builds wiggle (Release) and its floor benchmark, gets LAMMPS (Debian's `lmp`, and
+the optimised build of the same version from bench/build_lammps.sh), makes or reuses the cached
+beds, exports each to LAMMPS with `wiggle export-lammps`, then runs every chosen code with the same
+oscillating intruder for the same number of steps at 1 and 2 threads, interleaving the codes and
+repeating the rounds. Then the floor (wiggle_floor: the contact law alone over the bed's listed
+pairs) on each bed, and the step's ratio to it. Prints a table and appends the rows to
 bench/results/<date>-<host>.csv.
 
+Codes (--codes):
+  wiggle      `wiggle run --threads N`
+  lammps      Debian's `lmp`, N MPI ranks (mpirun -np N)
+  lammps-opt  the anchor: the same LAMMPS version built -O3 -march=native with OPENMP
+              (bench/build_lammps.sh), one rank, `-sf omp -pk omp N`, OMP_NUM_THREADS=N
+
 Timings are the run phase only: wiggle's summary.json `run_wall_s` (bed excluded) and LAMMPS's
-"Loop time of X on P procs for N steps with M atoms". Both are divided by the same particle count
+"Loop time of X on P procs for N steps with M atoms". All are divided by the same particle count
 (every atom of the LAMMPS data file: grains + base + intruder atoms) and the step count.
 
-Usage: bench/run_bench.sh [--quick] [--rounds N] [--threads 1,2] [--build-dir DIR] [--no-build] [--cache DIR]
+Usage: bench/run_bench.sh [--quick] [--cases small,paper] [--codes wiggle,lammps,lammps-opt]
+                          [--rounds N] [--threads 1,2] [--no-floor] [--lammps-opt PATH] ...
   --quick   the ~3,000-grain bed only (the 63,000-grain paper bed takes hours to make the first time)
 """
 import argparse
@@ -37,6 +46,15 @@ CASES = {
 COMMON = ["intruder.shape=disk", "drive.amplitude=3", "drive.period=5", "run.dt=0.0001",
           "run.dump_interval=0", "fields.enabled=false", "run.plot=false",
           "run.checkpoint_interval=1e9", "run.sample_interval=0.05"]
+CODES = ["wiggle", "lammps", "lammps-opt"]
+WHAT_THREADS_ARE = {"wiggle": "OpenMP threads", "lammps": "MPI ranks", "lammps-opt": "OpenMP threads, 1 rank"}
+# The optimised LAMMPS is compiled with FMA contraction, Debian's is not (nor is wiggle): the same
+# deck gives the same physics with other round-off, which the granular dynamics amplifies. So the
+# intruder's height must agree closely at the first sample (t = 0.05, 500 steps: measured 1e-13 on
+# the small bed) and loosely at the end (t = 2, 20,000 steps: measured 0.02 d, where Debian's own 1
+# and 2 ranks differ by 0.013 d; the bound is 0.1 d). A wrong build, style or deck differs far more early on.
+EARLY_TOL_Y = 1e-9
+PHYSICS_TOL_Y = 0.1
 
 
 def log(msg):
@@ -70,8 +88,8 @@ def machine():
     return model, cpus
 
 
-def lammps_version():
-    out = subprocess.run(["lmp", "-h"], text=True, stdout=subprocess.PIPE).stdout
+def lammps_version(binary):
+    out = subprocess.run([binary, "-h"], text=True, stdout=subprocess.PIPE).stdout
     for line in out.splitlines():
         if "Large-scale" in line:
             return line.split(" - ", 1)[-1].strip()
@@ -87,11 +105,21 @@ def ensure_lammps():
     run(["apt-get", "install", "-y", "lammps"], capture=False)
 
 
-def build(build_dir):
-    log("building wiggle (Release) in %s ..." % build_dir)
-    run(["cmake", "-S", REPO, "-B", build_dir, "-DCMAKE_BUILD_TYPE=Release"])
-    run(["cmake", "--build", build_dir, "--target", "wiggle", "-j2"])
-    return os.path.join(build_dir, "wiggle")
+def optimised_lammps():
+    """The anchor's binary: bench/build_lammps.sh builds it once (tens of minutes) and then finds it."""
+    log("optimised LAMMPS: bench/build_lammps.sh (builds it the first time; that takes long) ...")
+    r = run([os.path.join(REPO, "bench", "build_lammps.sh")], show_stderr=True)
+    binary = r.stdout.strip().splitlines()[-1]
+    if not os.access(binary, os.X_OK):
+        sys.exit("bench/build_lammps.sh did not name a binary (got %r)" % binary)
+    return binary
+
+
+def build(build_dir, targets):
+    log("building %s (Release) in %s ..." % (", ".join(targets), build_dir))
+    run(["cmake", "-S", REPO, "-B", build_dir, "-DCMAKE_BUILD_TYPE=Release", "-DWIGGLE_BENCH=ON"])
+    for target in targets:
+        run(["nice", "-n", "5", "cmake", "--build", build_dir, "--target", target, "-j2"])
 
 
 def sets(items):
@@ -101,6 +129,16 @@ def sets(items):
     return out
 
 
+def data_file_atoms(deck_dir):
+    """The particle count every code is divided by: the data file's header line 'N atoms'."""
+    with open(os.path.join(deck_dir, "data.lammps")) as f:
+        for line in f:
+            m = re.match(r"\s*(\d+)\s+atoms\s*$", line)
+            if m:
+                return int(m.group(1))
+    sys.exit("no 'N atoms' line in %s/data.lammps" % deck_dir)
+
+
 def run_wiggle(wiggle, case_sets, out_dir, threads, env):
     shutil.rmtree(out_dir, ignore_errors=True)
     cmd = ["/usr/bin/time", "-v", wiggle, "run"] + sets(case_sets) + \
@@ -108,24 +146,83 @@ def run_wiggle(wiggle, case_sets, out_dir, threads, env):
     r = run(cmd, env=env)
     with open(os.path.join(out_dir, "summary.json")) as f:
         summary = json.load(f)
-    return summary["run_wall_s"], summary["steps"], peak_rss_mb(r.stderr)
+    return dict(wall=summary["run_wall_s"], steps=summary["steps"], atoms=None, rss=peak_rss_mb(r.stderr))
 
 
-def run_lammps(deck_dir, work_dir, ranks):
+def samples(work_dir):
+    """The intruder's (t, y) rows of the deck's trajectory.csv (17 significant digits), from t = 0."""
+    with open(os.path.join(work_dir, "trajectory.csv")) as f:
+        rows = [line.split(",") for line in f.read().split("\n")[1:] if line.strip()]
+    if len(rows) < 2:
+        sys.exit("fewer than two samples in %s/trajectory.csv" % work_dir)
+    return [(float(r[0]), float(r[2])) for r in rows]
+
+
+def run_lammps(binary, deck_dir, work_dir, n, openmp):
+    """Debian's style (openmp False): n MPI ranks. The anchor's (openmp True): one rank, n threads."""
     shutil.rmtree(work_dir, ignore_errors=True)
     os.makedirs(work_dir)
     for name in ("data.lammps", "in.wiggle"):
         shutil.copy(os.path.join(deck_dir, name), work_dir)
-    lmp = ["lmp", "-in", "in.wiggle", "-log", "log.lammps", "-screen", "none"]
-    if ranks > 1:
-        lmp = ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", str(ranks)] + lmp
-    r = run(["/usr/bin/time", "-v"] + lmp, cwd=work_dir)
+    lmp = [binary, "-in", "in.wiggle", "-log", "log.lammps", "-screen", "none"]
+    env = dict(os.environ)
+    if openmp:
+        lmp += ["-sf", "omp", "-pk", "omp", str(n)]
+        env["OMP_NUM_THREADS"] = str(n)
+    elif n > 1:
+        lmp = ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", str(n)] + lmp
+    r = run(["/usr/bin/time", "-v"] + lmp, cwd=work_dir, env=env)
     with open(os.path.join(work_dir, "log.lammps")) as f:
         text = f.read()
     m = re.search(r"Loop time of ([0-9.eE+-]+) on (\d+) procs for (\d+) steps with (\d+) atoms", text)
     if not m:
         sys.exit("no loop time in %s/log.lammps" % work_dir)
-    return float(m.group(1)), int(m.group(3)), int(m.group(4)), peak_rss_mb(r.stderr)
+    return dict(wall=float(m.group(1)), steps=int(m.group(3)), atoms=int(m.group(4)), rss=peak_rss_mb(r.stderr),
+                samples=samples(work_dir))
+
+
+def run_floor(floor, case_sets, json_path, env):
+    """wiggle_floor on the case's bed at one thread: the law's sweep time and the engine's step time."""
+    env = dict(env, OMP_NUM_THREADS="1")
+    run([floor] + sets(case_sets) + ["--threads", "1", "--json", json_path], env=env)
+    with open(json_path) as f:
+        return json.load(f)
+
+
+def median(v):
+    v = sorted(v)
+    return v[len(v) // 2] if len(v) % 2 else 0.5 * (v[len(v) // 2 - 1] + v[len(v) // 2])
+
+
+def check_same_physics(rows, case, atoms, steps, tol):
+    """The anchor against Debian's lmp on this case: the same atoms, steps and samples in every run
+    (else exit); the intruder's height at the first sample after t = 0, before chaos has grown the
+    round-off, to EARLY_TOL_Y; and at the end to tol. Returns a line to print and whether it passed."""
+    lmp = [r for r in rows if r["case"] == case and r["code"] in ("lammps", "lammps-opt")]
+    for r in lmp:
+        if r["atoms"] != atoms or r["steps"] != steps:
+            sys.exit("%s %s round %d ran %d atoms for %d steps; the deck has %d atoms and %d steps" %
+                     (case, r["code"], r["round"], r["atoms"], r["steps"], atoms, steps))
+    if len({tuple(t for t, _ in r["samples"]) for r in lmp}) > 1:
+        sys.exit("%s: the LAMMPS runs' trajectory.csv have different sample times" % case)
+    ref = [r["samples"] for r in lmp if r["code"] == "lammps"]
+    opt = [r["samples"] for r in lmp if r["code"] == "lammps-opt"]
+    if not ref or not opt:
+        return None, True
+
+    def gap(index):
+        return max(abs(a[index][1] - b[index][1]) for a in opt for b in ref)
+
+    def spread(runs, index):
+        return max(r[index][1] for r in runs) - min(r[index][1] for r in runs)
+
+    early, final = gap(1), gap(-1)
+    ok = early <= EARLY_TOL_Y and final <= tol
+    return ("%s: lammps-opt vs lammps: %d atoms, %d steps, the same samples in every run; intruder's y "
+            "(trajectory.csv) at t = %g differs by %.1e d at most (tolerance %.0e), at the end (t = %g) by %.1e d "
+            "(tolerance %.2g; Debian's own runs spread by %.1e d): %s" %
+            (case, atoms, steps, opt[0][1][0], early, EARLY_TOL_Y, opt[0][-1][0], final, tol, spread(ref, -1),
+             "same physics" if ok else "DIFFERENT")), ok
 
 
 def main():
@@ -133,6 +230,11 @@ def main():
     ap.add_argument("--quick", action="store_true", help="small bed only")
     ap.add_argument("--rounds", type=int, default=3)
     ap.add_argument("--threads", default="1,2", help="thread / rank counts, comma separated")
+    ap.add_argument("--codes", default=",".join(CODES), help="comma-separated, of: " + ", ".join(CODES))
+    ap.add_argument("--no-floor", action="store_true", help="skip wiggle_floor (the law's floor and the ratio)")
+    ap.add_argument("--lammps-opt", default="", help="the optimised LAMMPS binary (default: bench/build_lammps.sh's)")
+    ap.add_argument("--physics-tol", type=float, default=PHYSICS_TOL_Y,
+                    help="largest |final y| difference [d] between lammps-opt and lammps (%(default)s)")
     ap.add_argument("--build-dir", default=os.path.join(REPO, "build", "bench"))
     ap.add_argument("--work-dir", default=os.path.join(REPO, "build", "bench-work"))
     ap.add_argument("--no-build", action="store_true", help="use the wiggle already in --build-dir")
@@ -142,70 +244,123 @@ def main():
     ap.add_argument("--steps-paper", type=int, default=CASES["paper"][1])
     args = ap.parse_args()
 
-    wiggle = os.path.join(args.build_dir, "wiggle") if args.no_build else build(args.build_dir)
-    ensure_lammps()
+    codes = args.codes.split(",")
+    unknown = [c for c in codes if c not in CODES]
+    if unknown or not codes:
+        sys.exit("--codes: unknown %s (choose from %s)" % (",".join(unknown), ", ".join(CODES)))
+    codes = [c for c in CODES if c in codes]  # the table's order
+    with_floor = "wiggle" in codes and not args.no_floor
+    cases = ["small"] if args.quick else ["small", "paper"]
+    if args.cases:
+        cases = args.cases.split(",")
+    unknown = [c for c in cases if c not in CASES]
+    if unknown:
+        sys.exit("--cases: unknown %s (choose from %s)" % (",".join(unknown), ", ".join(CASES)))
+
+    targets = ["wiggle"] + (["wiggle_floor"] if with_floor else [])
+    if not args.no_build:
+        build(args.build_dir, targets)
+    wiggle, floor = (os.path.join(args.build_dir, t) for t in ("wiggle", "wiggle_floor"))
+    for t in targets:
+        if not os.access(os.path.join(args.build_dir, t), os.X_OK):
+            sys.exit("no %s in %s" % (t, args.build_dir))
+    binaries = {}
+    if "lammps" in codes:
+        ensure_lammps()
+        binaries["lammps"] = shutil.which("lmp")
+    if "lammps-opt" in codes:
+        binaries["lammps-opt"] = args.lammps_opt or optimised_lammps()
+        if not os.access(binaries["lammps-opt"], os.X_OK):
+            sys.exit("--lammps-opt: %s is not an executable" % binaries["lammps-opt"])
     model, cpus = machine()
     host = socket.gethostname()
     env = dict(os.environ)
     if args.cache:
         env["WIGGLE_CACHE"] = args.cache
     threads = [int(t) for t in args.threads.split(",")]
-    cases = ["small"] if args.quick else ["small", "paper"]
-    if args.cases:
-        cases = args.cases.split(",")
     steps_of = {"small": args.steps_small, "paper": args.steps_paper, "tiny": CASES["tiny"][1]}
-    log("machine: %s, %d logical CPUs; LAMMPS %s" % (model, cpus, lammps_version()))
+    log("machine: %s, %d logical CPUs" % (model, cpus))
+    for code, binary in binaries.items():
+        log("%s: %s, LAMMPS %s" % (code, binary, lammps_version(binary)))
+    versions = {lammps_version(b) for b in binaries.values()}
+    if len(versions) > 1:
+        sys.exit("the two LAMMPS builds are of different versions: %s" % ", ".join(sorted(versions)))
 
-    rows = []
+    rows, floors, checks, all_same = [], {}, [], True
     for case in cases:
         steps = steps_of[case]
         case_sets = COMMON + CASES[case][0] + ["run.duration=%r" % (steps * 1e-4)]
-        deck_dir = os.path.join(args.work_dir, case, "deck")
+        case_dir = os.path.join(args.work_dir, case)
+        deck_dir = os.path.join(case_dir, "deck")
+        os.makedirs(case_dir, exist_ok=True)  # export-lammps makes only the last component of --out
         log("[%s] bed + export-lammps (the bed is made once and cached; that can take long) ..." % case)
         t0 = datetime.datetime.now()
         # stderr passes through: making the paper bed takes long, and its progress lines say how far it is.
         r = run([wiggle, "export-lammps"] + sets(case_sets) + ["--out", deck_dir], env=env, show_stderr=True)
         log("  " + r.stdout.strip().replace("\n", "\n  ") +
             "  (%.0f s)" % (datetime.datetime.now() - t0).total_seconds())
+        atoms = data_file_atoms(deck_dir)
         for rnd in range(1, args.rounds + 1):
             for t in threads:
-                # Interleave: wiggle then LAMMPS at the same thread count, alternating the order per round.
-                order = ["wiggle", "lammps"] if rnd % 2 else ["lammps", "wiggle"]
-                for code in order:
+                # Interleave the codes at the same thread count, rotating which goes first each round.
+                shift = (rnd - 1) % len(codes)
+                for code in codes[shift:] + codes[:shift]:
                     load = os.getloadavg()[0]
+                    work = os.path.join(case_dir, "%s-%d" % (code, t))
                     if code == "wiggle":
-                        wall, nsteps, rss = run_wiggle(wiggle, case_sets,
-                                                       os.path.join(args.work_dir, case, "wiggle-%d" % t), t, env)
-                        atoms = None
+                        res = run_wiggle(wiggle, case_sets, work, t, env)
                     else:
-                        wall, nsteps, atoms, rss = run_lammps(deck_dir, os.path.join(args.work_dir, case, "lammps-%d" % t), t)
-                    rows.append(dict(case=case, code=code, threads=t, round=rnd, steps=nsteps, wall=wall,
-                                     atoms=atoms, rss=rss, load=load))
-                    log("  round %d %-6s %d thr: %.3f s for %d steps, peak RSS %.0f MB (load before %.2f)" %
-                        (rnd, code, t, wall, nsteps, rss, load))
-        n_atoms = next(r["atoms"] for r in rows if r["case"] == case and r["code"] == "lammps")
+                        res = run_lammps(binaries[code], deck_dir, work, t, openmp=(code == "lammps-opt"))
+                    row = dict(case=case, code=code, threads=t, round=rnd, load=load, **res)
+                    row["ns"] = 1e9 * row["wall"] / (atoms * row["steps"])
+                    rows.append(row)
+                    log("  round %d %-10s %d thr: %.3f s for %d steps, %.1f ns/particle-step, peak RSS %.0f MB "
+                        "(load before %.2f)" % (rnd, code, t, row["wall"], row["steps"], row["ns"], row["rss"], load))
         for r in rows:
             if r["case"] == case:
-                r["atoms"] = n_atoms
-                r["ns"] = 1e9 * r["wall"] / (n_atoms * r["steps"])
+                r["atoms"] = r["atoms"] or atoms
+        line, ok = check_same_physics(rows, case, atoms, steps, args.physics_tol)
+        if line:
+            checks.append(line)
+            all_same = all_same and ok
+        if with_floor:
+            load = os.getloadavg()[0]
+            fl = run_floor(floor, case_sets, os.path.join(case_dir, "floor.json"), env)
+            if fl["particles"] != atoms:
+                sys.exit("wiggle_floor counted %d particles, the data file has %d" % (fl["particles"], atoms))
+            floors[case] = fl
+            # One row per sweep over all pairs: loop_s is one sweep, steps 1, so ns_per_particle_step reads as for the others.
+            rows.append(dict(case=case, code="floor", threads=1, round=1, steps=1, wall=fl["floor_sweep_s"],
+                             atoms=atoms, rss=float("nan"), load=load, ns=1e9 * fl["floor_sweep_s"] / atoms))
+            log("  floor: %.2f ns per particle-step (%.2f ns per pair, %d pairs, %d touching; %d lanes, the engine's %d)" %
+                (rows[-1]["ns"], fl["floor_ns_per_pair"], fl["pairs"], fl["touching"], fl["floor_lanes"],
+                 fl["step_lanes"]))
 
-    # Table: median over rounds.
-    def median(v):
-        v = sorted(v)
-        return v[len(v) // 2] if len(v) % 2 else 0.5 * (v[len(v) // 2 - 1] + v[len(v) // 2])
-
-    log("\nns per particle-step (median of %d rounds; min-max), particles = all LAMMPS atoms" % args.rounds)
-    log("%-6s %7s %4s | %-20s | %-20s | %-6s | %-9s %-9s" %
-        ("case", "atoms", "thr", "wiggle", "LAMMPS", "ratio", "RSS wig", "RSS lmp"))
+    log("\nns per particle-step (median of %d rounds; min-max), particles = all LAMMPS atoms; "
+        "'x wiggle' = this code's time / wiggle's at the same thread count" % args.rounds)
+    log("threads: " + "; ".join("%s = %s" % (c, WHAT_THREADS_ARE[c]) for c in codes))
+    log("%-6s %7s %4s %-10s | %-20s | %-8s | %-8s" % ("case", "atoms", "thr", "code", "ns/particle-step",
+                                                       "x wiggle", "peak RSS"))
     for case in cases:
         for t in threads:
-            w = [r for r in rows if r["case"] == case and r["threads"] == t and r["code"] == "wiggle"]
-            l = [r for r in rows if r["case"] == case and r["threads"] == t and r["code"] == "lammps"]
-            wm, lm = median([r["ns"] for r in w]), median([r["ns"] for r in l])
-            log("%-6s %7d %4d | %6.1f (%5.1f-%5.1f) | %6.1f (%5.1f-%5.1f) | %6.2f | %6.0f MB %6.0f MB" %
-                (case, w[0]["atoms"], t, wm, min(r["ns"] for r in w), max(r["ns"] for r in w),
-                 lm, min(r["ns"] for r in l), max(r["ns"] for r in l), lm / wm,
-                 max(r["rss"] for r in w), max(r["rss"] for r in l)))
+            runs = {c: [r for r in rows if r["case"] == case and r["threads"] == t and r["code"] == c] for c in codes}
+            wm = median([r["ns"] for r in runs["wiggle"]]) if "wiggle" in codes else None
+            for code in codes:
+                ns = [r["ns"] for r in runs[code]]
+                m = median(ns)
+                log("%-6s %7d %4d %-10s | %6.1f (%5.1f-%5.1f) | %8s | %5.0f MB" %
+                    (case, runs[code][0]["atoms"], t, code, m, min(ns), max(ns),
+                     "%.2f" % (m / wm) if wm else "-", max(r["rss"] for r in runs[code])))
+        if case in floors:
+            fl = floors[case]
+            floor_ns = 1e9 * fl["floor_sweep_s"] / fl["particles"]
+            one = [r["ns"] for r in rows if r["case"] == case and r["code"] == "wiggle" and r["threads"] == 1]
+            ratio = "wiggle 1-thread step / floor: %.2f" % (median(one) / floor_ns) if one else "(no 1-thread wiggle run)"
+            log("%-6s %7d %4d %-10s | %6.1f ns (%.2f ns per pair) | %s (wiggle_floor's own step: %.1f ns, %.2f)" %
+                (case, fl["particles"], 1, "floor", floor_ns, fl["floor_ns_per_pair"], ratio,
+                 fl["step_ns_per_particle_step"], fl["step_over_floor"]))
+    for line in checks:
+        log(line)
 
     os.makedirs(os.path.join(REPO, "bench", "results"), exist_ok=True)
     path = os.path.join(REPO, "bench", "results", "%s-%s.csv" % (datetime.date.today().isoformat(), host))
@@ -218,8 +373,10 @@ def main():
                         "atoms", "steps", "loop_s", "ns_per_particle_step", "peak_rss_mb", "load_avg_1min"])
         for r in rows:
             w.writerow([stamp, host, model, cpus, r["case"], r["code"], r["threads"], r["round"], r["atoms"],
-                        r["steps"], "%.4f" % r["wall"], "%.2f" % r["ns"], "%.1f" % r["rss"], "%.2f" % r["load"]])
+                        r["steps"], "%.6g" % r["wall"], "%.2f" % r["ns"], "%.1f" % r["rss"], "%.2f" % r["load"]])
     log("appended %d rows to %s" % (len(rows), path))
+    if not all_same:
+        sys.exit("the optimised LAMMPS does not reproduce Debian's on the deck (see above)")
 
 
 if __name__ == "__main__":
