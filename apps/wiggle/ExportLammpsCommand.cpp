@@ -9,6 +9,7 @@
 #include "Commands.h"
 #include "PathChecks.h"
 #include "core/Error.h"
+#include "core/Machine.h"
 #include "io/Config.h"
 #include "scenario/Case.h"
 #include "scenario/LammpsExport.h"
@@ -35,14 +36,16 @@ void addExportLammpsCommand(CLI::App& app) {
   cmd->add_option("--out", args->out,
                   "Output directory (gets data.lammps and in.wiggle; made if missing, its parent must exist)")
       ->required();
-  cmd->add_option("--threads", args->threads, "OpenMP threads for making the bed (default: all cores)")
+  cmd->add_option("--threads", args->threads,
+                  "OpenMP threads for making the bed (default: the cores other work leaves idle, by the 1-minute "
+                  "load average; at least 1)")
       ->check(CLI::Range(1, 1024));
   cmd->footer(
       "Run the deck with:  cd DIR && lmp -in in.wiggle   (or mpirun -np 2 lmp -in in.wiggle; -var nsteps N "
       "to shorten it).\nLAMMPS writes the intruder's t,x,y,vx,vy,fy to DIR/trajectory.csv. Contact history "
       "cannot be carried into a data file: LAMMPS starts every contact with zero shear.");
   cmd->callback([args] {
-    if (args->threads > 0) omp_set_num_threads(args->threads);
+    omp_set_num_threads(args->threads > 0 ? args->threads : idleCores());
     std::optional<std::string> path;
     if (!args->config.empty()) path = args->config;
     if (path) requireInputFile(*path, "config file");

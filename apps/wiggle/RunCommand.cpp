@@ -8,6 +8,7 @@
 #include "PathChecks.h"
 #include "core/Error.h"
 #include "core/Format.h"
+#include "core/Machine.h"
 #include "io/AtomicFile.h"
 #include "io/Config.h"
 #include "scenario/BedMaker.h"
@@ -71,7 +72,9 @@ void addRunCommand(CLI::App& app) {
   cmd->add_option("config", args->config, "Run config (TOML); none = the embedded default case");
   cmd->add_option("--set", args->sets, "Override a key: --set drive.period=2 (repeatable)")->allow_extra_args(false);
   cmd->add_option("--out", args->out, "Output directory (made if missing; its parent must exist)")->capture_default_str();
-  cmd->add_option("--threads", args->threads, "OpenMP threads (default: all cores)")->check(CLI::Range(1, 1024));
+  cmd->add_option("--threads", args->threads,
+                  "OpenMP threads (default: the cores other work leaves idle, by the 1-minute load average; at least 1)")
+      ->check(CLI::Range(1, 1024));
   cmd->add_flag("--resume", args->resume, "Continue from the newest good checkpoint in --out");
   cmd->add_flag("--no-plot", args->noPlot, "Do not draw the figures at the end");
   cmd->add_flag("--check", args->check,
@@ -93,7 +96,11 @@ void addRunCommand(CLI::App& app) {
     }
     RunOptions options;
     options.outDir = args->out;
-    options.threads = args->threads;
+    options.threads = args->threads > 0 ? args->threads : idleCores();
+    if (args->threads == 0 && options.threads < availableCores())
+      std::fprintf(stderr, "wiggle: the machine is busy (1-minute load average %.1f on %d cores): %d thread%s; "
+                   "--threads N to choose\n", loadAverage(), availableCores(), options.threads,
+                   options.threads == 1 ? "" : "s");
     options.resume = args->resume;
     const RunOutcome outcome = runExperiment(prepareCase(config), options);
     std::printf("V_y = %.6g (least-squares slope %.6g) d per sqrt(d/g); summary in %s\n", outcome.vy,

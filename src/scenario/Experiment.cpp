@@ -387,7 +387,7 @@ RunOutcome runExperiment(const Case& run, const RunOptions& options) {
   prepareRunDirectory(dir, config, configToml, options.resume);
   LogFile log(dir + "/log.txt");
   log.line("wiggle " + versionText() + (options.resume ? " run --resume" : " run") + " in " + dir +
-           " with " + std::to_string(omp_get_max_threads()) + " threads, " +
+           " with " + std::to_string(omp_get_max_threads()) + (omp_get_max_threads() == 1 ? " thread, " : " threads, ") +
            simdLevelName(defaultSimdLevel()) + " force kernels");
 
   RunState state;

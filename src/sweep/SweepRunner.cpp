@@ -1,7 +1,5 @@
 #include "sweep/SweepRunner.h"
 
-#include <sched.h>
-
 #include <algorithm>
 #include <charconv>
 #include <cstdlib>
@@ -9,9 +7,9 @@
 #include <iostream>
 #include <memory>
 #include <optional>
-#include <thread>
 
 #include "core/Error.h"
+#include "core/Machine.h"
 #include "core/StopSignal.h"
 #include "io/AtomicFile.h"
 #include "io/FileLock.h"
@@ -51,12 +49,6 @@ int envInt(const char* name) {
 }
 
 }  // namespace
-
-int availableCores() {
-  cpu_set_t set;
-  if (::sched_getaffinity(0, sizeof set, &set) == 0) return std::max(1, CPU_COUNT(&set));
-  return std::max(1u, std::thread::hardware_concurrency());
-}
 
 SweepOutcome runSweep(const std::string& sweepFile, const SweepOptions& options) {
   SweepSpec spec = loadSweepSpec(sweepFile);

@@ -55,7 +55,5 @@ struct SweepOutcome {
 // failed cases are not exceptions: they are counted in the outcome and recorded in results.csv.
 SweepOutcome runSweep(const std::string& sweepFile, const SweepOptions& options);
 
-// Cores this process may run on (its CPU affinity), at least 1.
-int availableCores();
 
 }  // namespace wiggle

@@ -1,0 +1,20 @@
+#pragma once
+// What the machine offers a run: its cores, and how many of them other work leaves idle.
+
+namespace wiggle {
+
+// Cores this process may run on (its CPU affinity), at least 1.
+int availableCores();
+
+// The 1-minute load average (runnable processes, ours included once they run), 0 if unknown.
+double loadAverage();
+
+// The default thread count of a single run: the available cores minus the load of other work (the
+// 1-minute load average, rounded), at least 1. OpenMP threads wait for each other at every step's
+// barriers by spinning, so on a core that another process also wants, a run's threads keep waiting
+// for a descheduled partner: measured 1,045 ns per particle-step for 2 threads beside two other
+// jobs on 2 cores, against 55 for 1 thread (docs/PERFORMANCE.md, "Threads on a busy machine").
+// The thread count never changes a result, only the speed.
+int idleCores();
+
+}  // namespace wiggle
