@@ -9,6 +9,7 @@
 #include "Commands.h"
 #include "PathChecks.h"
 #include "core/Error.h"
+#include "physics/ForceKernels.h"
 #include "core/Machine.h"
 #include "io/Config.h"
 #include "scenario/Case.h"
@@ -45,6 +46,7 @@ void addExportLammpsCommand(CLI::App& app) {
       "to shorten it).\nLAMMPS writes the intruder's t,x,y,vx,vy,fy to DIR/trajectory.csv. Contact history "
       "cannot be carried into a data file: LAMMPS starts every contact with zero shear.");
   cmd->callback([args] {
+    defaultSimdLevel();  // a bad WIGGLE_SIMD is bad input before anything is written
     omp_set_num_threads(args->threads > 0 ? args->threads : idleCores());
     std::optional<std::string> path;
     if (!args->config.empty()) path = args->config;

@@ -7,6 +7,7 @@
 #include "Commands.h"
 #include "PathChecks.h"
 #include "core/Error.h"
+#include "physics/ForceKernels.h"
 #include "core/Format.h"
 #include "core/Machine.h"
 #include "io/AtomicFile.h"
@@ -82,6 +83,7 @@ void addRunCommand(CLI::App& app) {
                 "estimated cost); run nothing, write nothing");
   cmd->footer("Config keys (TOML section.key, default, unit):\n" + configHelp());
   cmd->callback([args] {
+    defaultSimdLevel();  // a bad WIGGLE_SIMD is bad input before anything is written
     std::optional<std::string> path;
     if (!args->config.empty()) path = args->config;
     // Resuming without a config reuses the run directory's own resolved config.

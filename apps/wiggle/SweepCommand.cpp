@@ -8,6 +8,7 @@
 #include "Commands.h"
 #include "PathChecks.h"
 #include "core/Error.h"
+#include "physics/ForceKernels.h"
 #include "sweep/SweepRunner.h"
 #include "sweep/TaskRunner.h"
 
@@ -55,6 +56,7 @@ void addSweepCommand(CLI::App& app) {
       "are skipped, interrupted ones continue from their checkpoints, failed ones are retried.\n"
       "Exit status: 0 when every case is ok, 1 when some failed or did not finish, 2 for bad input.");
   cmd->callback([args] {
+    defaultSimdLevel();  // a bad WIGGLE_SIMD is bad input before anything is written
     if (!args->makeBed.empty()) {
       requireInputFile(args->makeBed, "config file");
       makeSweepBed(args->makeBed, args->threads);

@@ -60,6 +60,13 @@ int main(int argc, char** argv) {
   CLI::App app{"wiggle: a horizontally wiggling intruder in a 2D bed of frictional grains"};
   app.set_version_flag("--version", "wiggle " + wiggle::versionText());
   app.require_subcommand(1);
+  app.footer(
+      "Environment:\n"
+      "  WIGGLE_CACHE     directory of cached beds (default ~/.cache/wiggle; a config's bed.cache_dir wins)\n"
+      "  WIGGLE_SIMD      cap the force kernels' instruction set: scalar, avx2 or avx512 (default: the widest\n"
+      "                   the CPU runs; every one gives the same bits, docs/PERFORMANCE.md)\n"
+      "  OMP_WAIT_POLICY  passive: OpenMP threads sleep instead of spinning at barriers (slower on a quiet\n"
+      "                   machine, kinder to a busy one)");
   wiggle::cli::addRunCommand(app);
   wiggle::cli::addSweepCommand(app);
   wiggle::cli::addModelCommand(app);

@@ -58,9 +58,10 @@ class Cli : public ::testing::Test {
 
   // Runs `wiggle ARGS` (shell words, already quoted where needed) in work_, bounded by a timeout so
   // that a regression (a bad path accepted and a simulation started) fails instead of hanging.
-  Result wiggle(const std::string& args) const {
+  // `environment`: more VAR=value words for the command's environment.
+  Result wiggle(const std::string& args, const std::string& environment = "") const {
     const std::string cmd = "cd " + quoted(work_.string()) + " && WIGGLE_CACHE=" + quoted((root_ / "cache").string()) +
-                            " timeout 120 " + quoted(WIGGLE_BINARY) + " " + args + " >" +
+                            " " + environment + " timeout 120 " + quoted(WIGGLE_BINARY) + " " + args + " >" +
                             quoted((logs_ / "out").string()) + " 2>" + quoted((logs_ / "err").string()) +
                             " </dev/null";
     const int raw = std::system(cmd.c_str());
@@ -187,6 +188,20 @@ TEST_F(Cli, ConfigThatIsNotARegularFileIsRefusedBeforeAnythingIsWritten) {
   }
   EXPECT_TRUE(fs::is_empty(dir));
   EXPECT_FALSE(fs::exists(root_ / "cache"));  // no bed made either
+}
+
+// WIGGLE_SIMD (ForceKernels.h) is checked before a command writes anything.
+TEST_F(Cli, BadSimdLevelInTheEnvironmentIsRefusedBeforeAnythingIsWritten) {
+  const std::string out = (root_ / "out").string();
+  for (const std::string& args : {"run " + tinyConfig() + " --out " + quoted(out),
+                                  "run " + tinyConfig() + " --check --out " + quoted(out),
+                                  "export-lammps " + tinyConfig() + " --out " + quoted(out),
+                                  "sweep " + quickSweep() + " --out " + quoted(out)}) {
+    expectOneLineError(wiggle(args, "WIGGLE_SIMD=avx9"), {"WIGGLE_SIMD=avx9", "scalar, avx2, avx512"}, args);
+    EXPECT_FALSE(fs::exists(out)) << args;
+  }
+  EXPECT_FALSE(fs::exists(root_ / "cache"));
+  EXPECT_EQ(wiggle("run " + tinyConfig() + " --check --out " + quoted(out), "WIGGLE_SIMD=scalar").status, 0);
 }
 
 TEST_F(Cli, OutCreatesAtMostItsLastComponent) {
