@@ -290,11 +290,14 @@ void World::startGrains() {
   maxDisplacementSq_ = maxSq;
 }
 
+void World::kickIntruder() {
+  clumpState_.vy += 0.5 * def_.dt * (clumpState_.contactFy - clump_.mass * def_.gravity) / clump_.mass;
+}
+
 void World::startIntruder() {
   if (hasIntruder_ && motion_.verticalFree) {
-    const double dt = def_.dt;
-    clumpState_.vy += 0.5 * dt * (clumpState_.contactFy - clump_.mass * def_.gravity) / clump_.mass;
-    clumpState_.y += dt * clumpState_.vy;
+    kickIntruder();
+    clumpState_.y += def_.dt * clumpState_.vy;
   }
 }
 
@@ -481,8 +484,7 @@ void World::completeForces(bool kick, bool startNextStep) {
     if (startNextStep) maxSq = std::max(maxSq, kickAndDrift(i, fx, fy, torque, track));
   }
   if (startNextStep) maxDisplacementSq_ = maxSq;
-  if (kick && hasIntruder_ && motion_.verticalFree)
-    clumpState_.vy += halfDt * (clumpState_.contactFy - clump_.mass * def_.gravity) / clump_.mass;
+  if (kick && hasIntruder_ && motion_.verticalFree) kickIntruder();
 }
 
 }  // namespace wiggle

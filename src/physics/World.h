@@ -151,6 +151,7 @@ class World {
   void advance(bool startNextStep);  // one step; see World.cpp
   void startGrains();             // every grain's first half kick and drift; tracks max displacement
   double kickAndDrift(std::uint32_t i, double fx, double fy, double torque, bool track);
+  void kickIntruder();            // the free intruder's half kick in y
   void startIntruder();           // the intruder's first half kick and drift in y, when it is free
   void placeIntruder();           // prescribed x, vx at the current time
   void rebuildNeighbours();       // wrap, maybe re-sort, rebuild both lists carrying history

@@ -189,20 +189,18 @@ class RunObservers {
   }
 
   // Whether the grains are observed after this step: a field frame or a dump frame.
-  bool needsGrainsAt(std::uint64_t step) const {
-    const RunSchedule& steps = run_.steps;
-    return fieldPhaseAt(step) || (steps.dumpEvery && step % steps.dumpEvery == 0);
-  }
+  bool needsGrainsAt(std::uint64_t step) const { return fieldPhaseAt(step) || dumpAt(step); }
 
   // The grain observations of the world's current step (after afterStep).
   void observeGrains(const World& world) {
-    const RunSchedule& steps = run_.steps;
     const std::uint64_t step = world.stepCount();
     if (const std::size_t p = fieldPhaseAt(step)) fields_.addFrame(world, p - 1);
-    if (steps.dumpEvery && step % steps.dumpEvery == 0) dumpFrame(world);
+    if (dumpAt(step)) dumpFrame(world);
   }
 
  private:
+  bool dumpAt(std::uint64_t step) const { return run_.steps.dumpEvery && step % run_.steps.dumpEvery == 0; }
+
   // 1 + the fields.phases entry whose frame is taken after this step; 0 for none.
   std::size_t fieldPhaseAt(std::uint64_t step) const {
     const RunSchedule& steps = run_.steps;
@@ -294,10 +292,13 @@ bool stepToTheEnd(const Case& run, const RunOptions& options, const std::string&
   auto lastCheckpoint = Clock::now();
   auto chunkStart = Clock::now();
   const std::uint64_t startStep = world.stepCount();
-  // Every 200 steps the progress line, the signal and the checkpoint clock are looked at.
+  // Every 200 steps and at the end the progress line, the signal and the checkpoint clock are looked at.
+  auto progressAt = [&](std::uint64_t step) { return step % 200 == 0 || step == steps.total; };
+  auto stopAfterAt = [&](std::uint64_t step) {
+    return options.stopAfterSteps && step - startStep >= options.stopAfterSteps;
+  };
   auto mustStopAt = [&](std::uint64_t step) {
-    return step % 200 == 0 || step == steps.total || observers.needsGrainsAt(step) ||
-           (options.stopAfterSteps && step - startStep >= options.stopAfterSteps);
+    return progressAt(step) || observers.needsGrainsAt(step) || stopAfterAt(step);
   };
   while (world.stepCount() < steps.total) {
     // The steps to the next one whose grains somebody looks at run as one stretch (World::run's
@@ -309,7 +310,7 @@ bool stepToTheEnd(const Case& run, const RunOptions& options, const std::string&
     });
     observers.observeGrains(world);
     const std::uint64_t step = world.stepCount();
-    if (step % 200 == 0 || step == steps.total) {
+    if (progressAt(step)) {
       state.runWallSeconds += secondsSince(chunkStart);
       chunkStart = Clock::now();
       const double done = static_cast<double>(step - startStep);
@@ -337,7 +338,7 @@ bool stepToTheEnd(const Case& run, const RunOptions& options, const std::string&
         log.line("checkpoint at step " + std::to_string(step));
       }
     }
-    if (options.stopAfterSteps && step - startStep >= options.stopAfterSteps) {
+    if (stopAfterAt(step)) {
       if (options.checkpointAtStop) writeCheckpoint(dir, configToml, world, state, fields);
       return false;
     }
