@@ -43,13 +43,7 @@ using Clock = std::chrono::steady_clock;
 
 // The lanes maxOverLanes sweeps in: the widest this program is compiled for (wigglecore's flags,
 // -march=native in a Release build). The engine chooses its own at run time (ForceKernels.h).
-#if WIGGLE_SIMD_DOUBLE8
-constexpr int kFloorLanes = 8;
-#elif WIGGLE_SIMD_DOUBLE4
-constexpr int kFloorLanes = 4;
-#else
-constexpr int kFloorLanes = 1;
-#endif
+constexpr int kFloorLanes = simd::kLaneCount<simd::WidestLanes>;
 
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
