@@ -49,7 +49,12 @@ void printCheck(const RunConfig& c, const std::string& out, bool resume) {
                 std::filesystem::is_regular_file(c.bed.file) ? "checked when the run starts" : "no such file");
   else if (std::filesystem::exists(bedPath))
     std::printf("bed %s: cached (%s)\n", key.c_str(), bedPath.c_str());
-  else
+  else if (c.bed.cavity == "carved") {
+    const bool baseCached = std::filesystem::exists(bedCachePath(c, baseBedKey(c)));
+    std::printf("bed %s: not cached; carved from base bed %s (%s), about %s on one core (estimate)\n", key.c_str(),
+                baseBedKey(c).c_str(), baseCached ? "cached" : "not cached: poured first",
+                formatDuration(estimatedBedSeconds(c, ns, !baseCached)).c_str());
+  } else
     std::printf("bed %s: not cached, making it takes about %s on one core (estimate)\n", key.c_str(),
                 formatDuration(estimatedBedSeconds(c, ns)).c_str());
   std::printf("run: %llu steps (t = %g at dt = %g), about %s on one core at %g ns per particle-step "

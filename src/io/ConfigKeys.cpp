@@ -142,6 +142,12 @@ const std::vector<KeyInfo>& keyTable() {
           [](C& c) -> std::string& { return c.bed.pour; },
           "how each batch is placed (docs/PHYSICS.md, section 8): lattice = a loose lattice with small random "
           "velocities; random = grains at random non-overlapping positions, as LAMMPS's fix pour"),
+      choice(
+          "bed.cavity", {"poured", "carved"},
+          [](C& c) -> std::string& { return c.bed.cavity; },
+          "how the intruder gets its place in the bed (docs/PHYSICS.md, section 8): poured = the grains are poured "
+          "around the held intruder; carved = the seed's bed is poured once without an intruder (shared by every "
+          "shape and y0), the grains the intruder overlaps are removed and the bed relaxes to rest around it"),
       number("bed.pour_fraction", [](C& c) -> double& { return c.bed.pourFraction; }, above(0), atMost(0.6),
              "", "pour = \"random\" only: area fraction of grains a batch fills in its insertion region "
              "(box.width x bed.batch_height, one d_max above the highest grain; fix pour's vol)"),

@@ -43,6 +43,7 @@ struct DriveDef {
 struct BedDef {
   double batchHeight = 20.0;   // bed.batch_height: height of each poured layer [d]
   std::string pour = "lattice";  // bed.pour: lattice|random, how a batch is placed (docs/PHYSICS.md §8)
+  std::string cavity = "poured";  // bed.cavity: poured|carved, how the intruder gets its place (docs/PHYSICS.md §8)
   double pourFraction = 0.3;   // bed.pour_fraction: area fraction a random batch fills in its region (pour = random)
   double pourSpeed = 1.0;      // bed.pour_speed: initial downward speed of a random batch (pour = random) [sqrt(g d)]
   double settleSpeed = 0.05;   // bed.settle_speed: pour the next batch when the rms grain speed is below [sqrt(g d)]

@@ -13,6 +13,7 @@
 #include "core/Rng.h"
 #include "core/StopSignal.h"
 #include "io/AtomicFile.h"
+#include "io/FileLock.h"
 #include "io/StateFile.h"
 
 namespace wiggle {
@@ -23,6 +24,9 @@ constexpr std::uint64_t kBedFormat = 4;  // bump when bed making or the engine's
 // The random pour's own format, in its beds' keys only (the lattice beds keep theirs): bump when it
 // changes (2: grains start with fix pour's falling-stream speeds instead of all at bed.pour_speed).
 constexpr std::uint64_t kRandomPourFormat = 2;
+// Carved beds' own format, in their keys (which also hold their base bed's key): bump when carving
+// changes.
+constexpr std::uint64_t kCarvedFormat = 1;
 constexpr std::uint64_t kStepsPerCheck = 1000;
 using Clock = std::chrono::steady_clock;
 
@@ -52,15 +56,20 @@ WorldDef worldDefFor(const RunConfig& config) {
   return def;
 }
 
-std::string bedKey(const RunConfig& c, const ClumpDef& clump) {
+namespace {
+
+// The key of a bed poured around `clump` at intruder.y0, or, when `clump` has no atoms, of the
+// seed's bed poured without an intruder (the base of carved beds: the same for every shape and y0).
+std::string pouredBedKey(const RunConfig& c, const ClumpDef& clump) {
   // bed.max_time is left out on purpose: it only bounds the work, and a bed that completes is the
   // same bed whatever the bound (paper.toml and the benchmark share the paper bed this way).
+  const bool intruder = !clump.offsetX.empty();
   Hasher h;
   h.addValue(kBedFormat);
   h.addValue(kStateFormatVersion);
   for (double v : {c.box.width, c.box.bedHeight, c.grains.dMin, c.grains.dMax, c.contact.kn, c.contact.kt,
-                   c.contact.gammaN, c.contact.gammaT, c.contact.mu, c.intruder.y0, c.bed.batchHeight,
-                   c.bed.settleSpeed, c.bed.restEnergy, c.run.dt, c.engine.skin,
+                   c.contact.gammaN, c.contact.gammaT, c.contact.mu, intruder ? c.intruder.y0 : 0.0,
+                   c.bed.batchHeight, c.bed.settleSpeed, c.bed.restEnergy, c.run.dt, c.engine.skin,
                    c.engine.intruderSkin, clump.atomRadius, clump.mass})
     h.addValue(v);
   h.addValue(c.box.seed);
@@ -80,6 +89,26 @@ std::string bedKey(const RunConfig& c, const ClumpDef& clump) {
     h.addBytes("relax_damping", 13);
     h.addValue(c.bed.relaxDamping);
   }
+  if (!intruder) h.addBytes("no intruder", 11);
+  return h.hex();
+}
+
+// The bed every carved bed of a config is cut from: the seed's, poured without an intruder.
+const ClumpDef kNoIntruder{};
+
+}  // namespace
+
+std::string baseBedKey(const RunConfig& c) { return pouredBedKey(c, kNoIntruder); }
+
+std::string bedKey(const RunConfig& c, const ClumpDef& clump) {
+  if (c.bed.cavity == "poured") return pouredBedKey(c, clump);
+  Hasher h;
+  h.addValue(kCarvedFormat);
+  const std::string base = baseBedKey(c);
+  h.addBytes(base.data(), base.size());
+  for (double v : {c.intruder.y0, clump.atomRadius, clump.mass}) h.addValue(v);
+  h.add(clump.offsetX);
+  h.add(clump.offsetY);
   return h.hex();
 }
 
@@ -148,7 +177,7 @@ PartialBed startBed(const RunConfig& config, const ClumpDef& clump) {
   World world(worldDefFor(config));
   const double width = config.box.width;
   for (int i = 0; i < static_cast<int>(std::lround(width)); ++i) world.addFrozen(i + 0.5, 0.0, 0.5);
-  world.setIntruder(clump, 0.5 * width, config.intruder.y0);
+  if (!clump.offsetX.empty()) world.setIntruder(clump, 0.5 * width, config.intruder.y0);
   PartialBed p{std::move(world), BedStage::Pouring, 0, 0, 0, 0, 0, 0.0, {}};
   p.surface = freeSurfaceHeight(p.world);
   return p;
@@ -308,8 +337,32 @@ std::string bedStatusLine(const BedStatus& s, double targetHeight) {
          formatNumber(s.time) + (s.stage == "relaxing" ? ", KE/grain " + formatNumber(s.kineticPerGrain) : "");
 }
 
+namespace {
+
+// bed.cavity = "carved": the grains of `base` (a bed poured without an intruder) that the intruder
+// touches at (box centre, intruder.y0) removed, the intruder held there, and the bed relaxed to rest
+// as a poured bed's last stage relaxes it.
+World carveBed(const RunConfig& config, const ClumpDef& clump, World base, const BedProgress& progress,
+               const BedSaver& save) {
+  const double cx = 0.5 * config.box.width, cy = config.intruder.y0;
+  const ParticleStore& s = base.particles();
+  std::vector<bool> remove(base.grainCount());
+  for (std::uint32_t i = 0; i < s.grainCount; ++i) remove[i] = touchesClump(clump, cx, cy, s.x[i], s.y[i], s.radius[i]);
+  base.removeGrains(remove);
+  base.setIntruder(clump, cx, cy);
+  PartialBed p{std::move(base), BedStage::Relaxing, 0, 0, 0, 0, 0, 0.0, {}};
+  p.surface = freeSurfaceHeight(p.world);
+  return finishBed(config, clump, std::move(p), progress, save);
+}
+
+}  // namespace
+
 World makeBed(const RunConfig& config, const ClumpDef& clump, const BedProgress& progress) {
-  return finishBed(config, clump, startBed(config, clump), progress, [](const PartialBed&) {});
+  const BedSaver noSaving = [](const PartialBed&) {};
+  if (config.bed.cavity == "carved")
+    return carveBed(config, clump, finishBed(config, kNoIntruder, startBed(config, kNoIntruder), progress, noSaving),
+                    progress, noSaving);
+  return finishBed(config, clump, startBed(config, clump), progress, noSaving);
 }
 
 std::string bedCacheDir(const RunConfig& config) {
@@ -380,41 +433,90 @@ std::string bedPartialPath(const RunConfig& config, const std::string& key) {
   return bedCacheDir(config) + "/bed-" + key + ".partial.bin";
 }
 
-CachedBed obtainBed(const RunConfig& config, const ClumpDef& clump, const BedProgress& progress) {
-  if (!config.bed.file.empty()) return pinnedBed(config, clump);
-  const std::string key = bedKey(config, clump);
-  const std::string dir = bedCacheDir(config);
-  const std::string path = bedCachePath(config, key);
-  const std::string partialPath = bedPartialPath(config, key);
-  std::string note;
-  auto addNote = [&](const std::string& text) { note += (note.empty() ? "" : "; ") + text; };
-  std::error_code ec;
-  if (std::filesystem::exists(path)) {
-    try {
-      CachedBed cached{parseCachedBed(readFile(path), path, key), key, path, true, ""};
-      // A kill between writing the bed and removing its partial file (below) leaves the partial
-      // behind; the finished bed supersedes it.
-      std::filesystem::remove(partialPath, ec);
-      return cached;
-    } catch (const Error& e) {
-      addNote(std::string("cached bed refused and rebuilt: ") + e.what());
-    }
-  }
-  std::filesystem::create_directories(dir, ec);
-  const bool cacheWritable = !ec;
-  if (!cacheWritable) addNote("bed not cached: cannot create " + dir + ": " + ec.message());
+namespace {
 
+// What happened to the cache on the way to a bed, for CachedBed::note.
+struct CacheNotes {
+  std::string text;
+  void add(const std::string& line) { text += (text.empty() ? "" : "; ") + line; }
+};
+
+// The finished bed of this key from the cache, when a valid one is there; a refused entry is noted
+// (and will be made again, never trusted).
+std::optional<World> cachedBed(const RunConfig& config, const std::string& key, CacheNotes& notes) {
+  const std::string path = bedCachePath(config, key);
+  if (!std::filesystem::exists(path)) return std::nullopt;
+  try {
+    World world = parseCachedBed(readFile(path), path, key);
+    // A kill between writing the bed and removing its partial file leaves the partial behind; the
+    // finished bed supersedes it.
+    std::error_code ec;
+    std::filesystem::remove(bedPartialPath(config, key), ec);
+    return world;
+  } catch (const Error& e) {
+    notes.add(std::string("cached bed refused and rebuilt: ") + e.what());
+    return std::nullopt;
+  }
+}
+
+// Stores a finished bed in the cache and removes its partial file; a failure is noted, not fatal.
+void storeBed(const RunConfig& config, const std::string& key, const World& world, CacheNotes& notes) {
+  BinaryWriter out;
+  out.string(key);
+  world.save(out);
+  try {
+    writeStateFile(bedCachePath(config, key), "bed", out.bytes());
+    std::error_code ec;
+    std::filesystem::remove(bedPartialPath(config, key), ec);
+  } catch (const Error& e) {
+    notes.add(std::string("bed not cached: ") + e.what());
+  }
+}
+
+// Makes the cache directory if missing; false (noted) when it cannot be made.
+bool makeCacheDir(const RunConfig& config, CacheNotes& notes) {
+  std::error_code ec;
+  std::filesystem::create_directories(bedCacheDir(config), ec);
+  if (ec) notes.add("bed not cached: cannot create " + bedCacheDir(config) + ": " + ec.message());
+  return !ec;
+}
+
+// While one process makes the bed of a key, another that wants it waits and then loads it from the
+// cache (two bed tasks of a sweep whose carved beds share a base bed, or two runs started at once).
+// A cache directory that cannot hold the lock file (read-only) gets no lock: the bed is made
+// unguarded, as it is then not cached either.
+std::optional<FileLock> lockBedMaking(const RunConfig& config, const std::string& key, bool cacheWritable) {
+  if (!cacheWritable) return std::nullopt;
+  try {
+    return std::optional<FileLock>(std::in_place, bedCacheDir(config) + "/bed-" + key + ".lock", false, true);
+  } catch (const Error&) {
+    return std::nullopt;
+  }
+}
+
+// A poured bed (around `clump`, or without an intruder when it has no atoms) from the cache, or made
+// there: continued from its partial file when there is one, saved every run.checkpoint_interval
+// seconds and when SIGINT/SIGTERM asks to stop (if the caller holds a StopSignalGuard).
+CachedBed obtainPouredBed(const RunConfig& config, const ClumpDef& clump, const std::string& key,
+                          const BedProgress& progress) {
+  const std::string path = bedCachePath(config, key);
+  CacheNotes notes;
+  if (auto world = cachedBed(config, key, notes)) return CachedBed{std::move(*world), key, path, true, notes.text};
+  const bool cacheWritable = makeCacheDir(config, notes);
+  const std::optional<FileLock> making = lockBedMaking(config, key, cacheWritable);
+  if (making && notes.text.empty())  // made by another process while this one waited
+    if (auto world = cachedBed(config, key, notes)) return CachedBed{std::move(*world), key, path, true, notes.text};
+
+  const std::string partialPath = bedPartialPath(config, key);
   std::optional<PartialBed> start;
   if (std::filesystem::exists(partialPath)) {
     try {
       start.emplace(parsePartialBed(readFile(partialPath), partialPath, key));
     } catch (const Error& e) {
-      addNote(std::string("unfinished bed refused, starting afresh: ") + e.what());
+      notes.add(std::string("unfinished bed refused, starting afresh: ") + e.what());
     }
   }
   if (!start) start.emplace(startBed(config, clump));
-  // The bed in the making is saved every run.checkpoint_interval seconds, and when SIGINT/SIGTERM
-  // asks to stop (if the caller holds a StopSignalGuard): the same command then continues it.
   auto lastSave = Clock::now();
   const BedSaver save = [&](const PartialBed& p) {
     const int signal = stopSignalReceived();
@@ -433,18 +535,42 @@ CachedBed obtainBed(const RunConfig& config, const ClumpDef& clump, const BedPro
                   std::to_string(static_cast<double>(p.steps) * config.run.dt) + saved);
   };
   World world = finishBed(config, clump, std::move(*start), progress, save);
-  if (cacheWritable) {
-    BinaryWriter out;
-    out.string(key);
-    world.save(out);
-    try {
-      writeStateFile(path, "bed", out.bytes());
-      std::filesystem::remove(partialPath, ec);
-    } catch (const Error& e) {
-      addNote(std::string("bed not cached: ") + e.what());
-    }
-  }
-  return CachedBed{std::move(world), key, path, false, note};
+  if (cacheWritable) storeBed(config, key, world, notes);
+  return CachedBed{std::move(world), key, path, false, notes.text};
+}
+
+// bed.cavity = "carved": carveBed on the seed's bed without an intruder, which is obtained (from the
+// cache, or made there) like any poured bed. The carving is not saved part-way: it is short, and an
+// interrupted one is carved again from the cached base bed, with the same bits.
+CachedBed obtainCarvedBed(const RunConfig& config, const ClumpDef& clump, const BedProgress& progress) {
+  const std::string key = bedKey(config, clump);
+  const std::string path = bedCachePath(config, key);
+  CacheNotes notes;
+  if (auto world = cachedBed(config, key, notes)) return CachedBed{std::move(*world), key, path, true, notes.text};
+  const bool cacheWritable = makeCacheDir(config, notes);
+  const std::optional<FileLock> making = lockBedMaking(config, key, cacheWritable);
+  if (making && notes.text.empty())  // made by another process while this one waited
+    if (auto world = cachedBed(config, key, notes)) return CachedBed{std::move(*world), key, path, true, notes.text};
+
+  CachedBed base = obtainPouredBed(config, kNoIntruder, baseBedKey(config), progress);
+  if (!base.note.empty()) notes.add("base bed: " + base.note);
+  const BedSaver stopWhenAsked = [&](const PartialBed& bed) {
+    if (const int signal = stopSignalReceived(); signal != 0)
+      throw Error("interrupted by signal " + std::to_string(signal) + " while relaxing the carved bed at t = " +
+                  std::to_string(static_cast<double>(bed.steps) * config.run.dt) +
+                  " (the same command carves it again from the cached base bed)");
+  };
+  World carved = carveBed(config, clump, std::move(base.world), progress, stopWhenAsked);
+  if (cacheWritable) storeBed(config, key, carved, notes);
+  return CachedBed{std::move(carved), key, path, false, notes.text};
+}
+
+}  // namespace
+
+CachedBed obtainBed(const RunConfig& config, const ClumpDef& clump, const BedProgress& progress) {
+  if (!config.bed.file.empty()) return pinnedBed(config, clump);
+  if (config.bed.cavity == "carved") return obtainCarvedBed(config, clump, progress);
+  return obtainPouredBed(config, clump, bedKey(config, clump), progress);
 }
 
 }  // namespace wiggle

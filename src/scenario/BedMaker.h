@@ -2,6 +2,8 @@
 // Making the granular bed (docs/PHYSICS.md §8): grains poured in batches around the held intruder, each batch
 // left to settle, until the free surface reaches the target height; grains above it removed; then
 // relaxed until the kinetic energy per grain is below bed.rest_energy (or bed.max_time is spent).
+// With bed.cavity = "carved" the seed's bed is poured that way once without an intruder, and each
+// intruder's bed is cut from it: the grains the intruder touches removed, then relaxed to rest.
 // A bed depends only on its own parameters, so it is cached on disk under a key that hashes exactly
 // those (bedKey); one bed serves every amplitude and period of a shape.
 #include <cstdint>
@@ -37,7 +39,11 @@ WorldDef worldDefFor(const RunConfig& config);
 // pour = "random", and bed.relax_damping only when not 0, so a bed made as before those keys existed
 // keeps its key), time step and
 // engine settings, and the bed format version.
+// A carved bed's key holds its base bed's key and the intruder's clump and position.
 std::string bedKey(const RunConfig& config, const ClumpDef& clump);
+
+// The key of the bed carved beds of this config are cut from (the seed's, without an intruder).
+std::string baseBedKey(const RunConfig& config);
 
 // Free-surface height: the median over 2-d-wide columns of the highest grain top in the column.
 double freeSurfaceHeight(const World& world);
@@ -68,7 +74,8 @@ std::string bedPartialPath(const RunConfig& config, const std::string& key);
 World parseCachedBed(const std::string& file, const std::string& name, const std::string& key);
 
 // Loads the bed from the cache when a valid entry exists; otherwise makes it, continuing from the
-// bed's partial file when there is one, and stores it. A corrupt or foreign entry is reported in
+// bed's partial file when there is one, and stores it (a carved bed is cut from its base bed, itself
+// loaded or made and cached; a process that finds a bed being made by another waits for it). A corrupt or foreign entry is reported in
 // `note` and rebuilt, never trusted. While a StopSignalGuard is alive, SIGINT/SIGTERM saves the bed
 // in the making and throws wiggle::Error; the same call later continues it, with the same bits as
 // a bed made in one go. With bed.file set, the bed is that file's, checked against the config and

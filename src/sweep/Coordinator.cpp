@@ -411,7 +411,7 @@ class Coordinator {
     }
     for (std::size_t b = 0; b < plan_.beds.size(); ++b) {
       if (bedState_[b] == BedState::Waiting || bedState_[b] == BedState::Running) {
-        remaining += estimatedBedSeconds(plan_.spec.cases[plan_.beds[b].firstCase].config, ns);
+        remaining += plan_.beds[b].estimatedSeconds * ns / CostModel::nsPerParticleStep;  // planned at that speed
       }
     }
     std::string line = "[sweep] " + std::to_string(countStatus("ok")) + " done, " + std::to_string(running) +

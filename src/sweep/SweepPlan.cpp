@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <map>
 #include <numbers>
+#include <set>
 #include <sstream>
 #include <nlohmann/json.hpp>
 
@@ -33,11 +34,13 @@ double estimatedRunSeconds(const RunConfig& config, double nsPerParticleStep) {
   return 1e-9 * nsPerParticleStep * estimatedParticles(config) * steps;
 }
 
-double estimatedBedSeconds(const RunConfig& config, double nsPerParticleStep) {
+double estimatedBedSeconds(const RunConfig& config, double nsPerParticleStep, bool withBase) {
   // While pouring, the bed holds on average about half (b + 1) / (2 b) of its final grains over
   // b batches; then the whole bed relaxes.
   const double batches = std::max(1.0, std::ceil(config.box.bedHeight / config.bed.batchHeight));
-  const double simulatedTime = 0.5 * (batches + 1.0) * CostModel::bedTimePerBatch + CostModel::bedRelaxTime;
+  const double pouredTime = 0.5 * (batches + 1.0) * CostModel::bedTimePerBatch + CostModel::bedRelaxTime;
+  double simulatedTime = pouredTime;
+  if (config.bed.cavity == "carved") simulatedTime = CostModel::carvedRelaxTime + (withBase ? pouredTime : 0.0);
   return 1e-9 * nsPerParticleStep * estimatedParticles(config) * simulatedTime / config.run.dt;
 }
 
@@ -47,6 +50,7 @@ SweepPlan makeSweepPlan(SweepSpec spec, const std::string& outDir) {
   plan.outDir = outDir;
   std::map<std::string, int> bedIndex;      // key -> index in plan.beds (beds to make)
   std::map<std::string, bool> keySeen;
+  std::set<std::string> basesToPour;        // base beds of carved beds, counted in the estimate once
   for (const SweepCase& c : plan.spec.cases) {
     PlannedCase p;
     p.index = c.index;
@@ -101,7 +105,11 @@ SweepPlan makeSweepPlan(SweepSpec spec, const std::string& outDir) {
           bed.configPath = outDir + "/beds/bed-" + p.bedKey + ".toml";
           bed.firstCase = c.index;
           bed.cachePath = bedCachePath(c.config, p.bedKey);
-          bed.estimatedSeconds = estimatedBedSeconds(c.config, CostModel::nsPerParticleStep);
+          // Carved beds of one seed share a base bed: it is poured once, by the first of them.
+          const bool baseToPour = c.config.bed.cavity == "carved" &&
+                                  !fs::exists(bedCachePath(c.config, baseBedKey(c.config))) &&
+                                  basesToPour.insert(baseBedKey(c.config)).second;
+          bed.estimatedSeconds = estimatedBedSeconds(c.config, CostModel::nsPerParticleStep, baseToPour);
           plan.beds.push_back(bed);
         }
         p.bedTask = it->second;

@@ -30,12 +30,15 @@ struct CostModel {
   // bed.rest_energy = 1e-6 about 40 more.
   static constexpr double bedTimePerBatch = 10.0;
   static constexpr double bedRelaxTime = 40.0;
+  // Simulated time a carved bed relaxes after its cut (bed.cavity = "carved"), in sqrt(d/g).
+  static constexpr double carvedRelaxTime = 10.0;
 };
 
 // Estimated wall seconds of a case's run phase (bed excluded) at `nsPerParticleStep`.
 double estimatedRunSeconds(const RunConfig& config, double nsPerParticleStep);
-// Estimated wall seconds of making the case's bed at `nsPerParticleStep`.
-double estimatedBedSeconds(const RunConfig& config, double nsPerParticleStep);
+// Estimated wall seconds of making the case's bed at `nsPerParticleStep`; for a carved bed, the
+// cut and its relaxation, plus pouring its base bed when `withBase`.
+double estimatedBedSeconds(const RunConfig& config, double nsPerParticleStep, bool withBase = true);
 
 // --- the plan -----------------------------------------------------------------------------------
 enum class CaseState {
@@ -62,7 +65,7 @@ struct PlannedBed {
   std::string configPath;     // <outDir>/beds/bed-<key>.toml: the config the bed task reads
   std::size_t firstCase = 0;  // the case whose config makes the bed
   std::string cachePath;      // where obtainBed keeps it
-  double estimatedSeconds = 0.0;
+  double estimatedSeconds = 0.0;  // at CostModel::nsPerParticleStep
 };
 
 struct SweepPlan {

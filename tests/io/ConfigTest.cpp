@@ -62,6 +62,7 @@ std::vector<std::string> differingFields(const RunConfig& a, const RunConfig& b)
   other("drive.rampPeriods", a.drive.rampPeriods == b.drive.rampPeriods);
   num("bed.batchHeight", a.bed.batchHeight, b.bed.batchHeight);
   other("bed.pour", a.bed.pour == b.bed.pour);
+  other("bed.cavity", a.bed.cavity == b.bed.cavity);
   num("bed.pourFraction", a.bed.pourFraction, b.bed.pourFraction);
   num("bed.pourSpeed", a.bed.pourSpeed, b.bed.pourSpeed);
   num("bed.settleSpeed", a.bed.settleSpeed, b.bed.settleSpeed);
@@ -119,6 +120,7 @@ const std::vector<std::tuple<std::string, std::string, std::string>>& everyKey()
       {"drive.ramp_periods", "3", "drive.rampPeriods"},
       {"bed.batch_height", "10", "bed.batchHeight"},
       {"bed.pour", "random", "bed.pour"},
+      {"bed.cavity", "carved", "bed.cavity"},
       {"bed.pour_fraction", "0.45", "bed.pourFraction"},
       {"bed.pour_speed", "2", "bed.pourSpeed"},
       {"bed.settle_speed", "0.1", "bed.settleSpeed"},
@@ -164,7 +166,7 @@ TEST(Config, KeyListIsExactlyTheSpecKeys) {
   std::set<std::string> expected;
   for (const auto& [key, value, field] : everyKey()) expected.insert(key);
   const std::vector<std::string> keys = configKeys();
-  EXPECT_EQ(keys.size(), 47u);
+  EXPECT_EQ(keys.size(), 48u);
   EXPECT_EQ(std::set<std::string>(keys.begin(), keys.end()), expected);
 }
 
@@ -343,6 +345,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"[engine]\nsort_interval = 0\n", "engine.sort_interval = 0: must be >= 1"},
         BadCase{"[bed]\ncache_dir = 5\n", "bed.cache_dir = 5: expected a string, got integer"},
         BadCase{"[bed]\npour = \"funnel\"\n", "bed.pour = \"funnel\": must be one of lattice, random"},
+        BadCase{"[bed]\ncavity = \"dug\"\n", "bed.cavity = \"dug\": must be one of poured, carved"},
         BadCase{"[bed]\npour_fraction = 0\n", "bed.pour_fraction = 0: must be > 0 and <= 0.6"},
         BadCase{"[bed]\npour_fraction = 0.61\n", "bed.pour_fraction = 0.61: must be > 0 and <= 0.6"},
         BadCase{"[bed]\npour_speed = -1\n", "bed.pour_speed = -1: must be >= 0"}));

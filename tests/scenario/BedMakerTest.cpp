@@ -15,6 +15,7 @@
 
 #include "core/Error.h"
 #include "core/StopSignal.h"
+#include "io/AtomicFile.h"
 #include "io/Config.h"
 #include "io/SweepSpec.h"
 #include "scenario/BedMaker.h"
@@ -282,6 +283,74 @@ TEST(BedMaker, DampedRelaxationRestsSoonerAndContinuesToTheSameBits) {
   fs::remove_all(scratch(""));
 }
 
+// bed.cavity = "carved": one base bed per seed, poured without an intruder, serves every shape and
+// position; each carved bed holds no grain inside its intruder, is at rest, and is the same bed
+// whether made in one go (makeBed), obtained through the cache, or carved again after a stop.
+TEST(BedMaker, CarvedBedsShareOneBaseBedAndRestAroundTheirIntruder) {
+  const OneThread oneThread;
+  RunConfig config = tinyRandomConfig();
+  config.bed.pour = "lattice";
+  config.bed.cavity = "carved";
+  config.bed.cacheDir = scratch("cache-carved");
+  RunConfig triangleConfig = config;
+  triangleConfig.intruder.vertices = {{-1.0, -0.6}, {1.0, -0.6}, {0.0, 1.0}};
+  triangleConfig.intruder.y0 = 3.5;
+  const ClumpDef square = prepareCase(config).clump, triangle = prepareCase(triangleConfig).clump;
+
+  // Keys: one base for both; carved keys of their own, apart from the poured bed's.
+  EXPECT_EQ(baseBedKey(config), baseBedKey(triangleConfig));
+  EXPECT_NE(bedKey(config, square), bedKey(triangleConfig, triangle));
+  RunConfig poured = config;
+  poured.bed.cavity = "poured";
+  EXPECT_NE(bedKey(config, square), bedKey(poured, square));
+  EXPECT_NE(baseBedKey(config), bedKey(poured, square));
+
+  const CachedBed first = obtainBed(config, square);
+  const CachedBed second = obtainBed(triangleConfig, triangle);
+  EXPECT_FALSE(first.fromCache);
+  EXPECT_FALSE(second.fromCache);
+  int beds = 0;
+  for (const auto& entry : fs::directory_iterator(config.bed.cacheDir)) beds += entry.path().extension() == ".bin";
+  EXPECT_EQ(beds, 3);  // the base, poured once, and the two carved beds
+  const World base = parseCachedBed(readFile(bedCachePath(config, baseBedKey(config))), "base", baseBedKey(config));
+  EXPECT_FALSE(base.hasIntruder());
+
+  for (const auto& [bed, cfg, clump] : {std::tie(first.world, config, square), std::tie(second.world, triangleConfig, triangle)}) {
+    ASSERT_TRUE(bed.hasIntruder());
+    EXPECT_EQ(bed.intruder().y, cfg.intruder.y0);
+    EXPECT_LT(bed.grainCount(), base.grainCount());
+    EXPECT_GT(bed.grainCount(), base.grainCount() - 12);  // only the grains where the intruder now is
+    EXPECT_LT(bed.kineticEnergy() / bed.grainCount(), cfg.bed.restEnergy);
+    // Grains rest against the intruder (overlaps of order m g / k_n), none inside it.
+    const ParticleStore& s = bed.particles();
+    double deepest = 0.0;
+    for (std::uint32_t i = 0; i < bed.grainCount(); ++i)
+      for (std::size_t a = 0; a < clump.offsetX.size(); ++a)
+        deepest = std::max(deepest, s.radius[i] + clump.atomRadius -
+                                        std::hypot(s.x[i] - (0.5 * cfg.box.width + clump.offsetX[a]),
+                                                   s.y[i] - (cfg.intruder.y0 + clump.offsetY[a])));
+    EXPECT_LT(deepest, 0.01);
+  }
+  EXPECT_EQ(makeBed(config, square).stateHash(), first.world.stateHash());
+  EXPECT_TRUE(obtainBed(config, square).fromCache);
+
+  // Stopped while the carved bed relaxes: nothing of it is kept, and the next call carves it again
+  // from the cached base, to the same bits.
+  fs::remove(bedCachePath(config, bedKey(config, square)));
+  {
+    const StopSignalGuard guard;
+    int reports = 0;
+    EXPECT_THROW(obtainBed(config, square,
+                           [&](const BedStatus& st) {
+                             if (st.stage == "relaxing" && ++reports == 2) std::raise(SIGTERM);
+                           }),
+                 Error);
+  }
+  EXPECT_FALSE(fs::exists(bedCachePath(config, bedKey(config, square))));
+  EXPECT_EQ(obtainBed(config, square).world.stateHash(), first.world.stateHash());
+  fs::remove_all(scratch(""));
+}
+
 TEST(BedMaker, PaperDepthSweepsRunOnThePresetsBeds) {
   // The study's results under results/paper_depth/ stand for configs/paper_depth.toml only if its
   // sweeps pour the preset's beds: the same bed key once the preset takes the case's shape, seed and
@@ -291,7 +360,7 @@ TEST(BedMaker, PaperDepthSweepsRunOnThePresetsBeds) {
   EXPECT_EQ(preset.box.bedHeight - preset.intruder.y0, 105.0);  // the paper's depth
   int compared = 0;
   for (const char* file : {"paper_depth_box.toml", "paper_depth_seeds.toml", "paper_depth_table1.toml",
-                           "paper_depth_runlength.toml"}) {
+                           "paper_depth_runlength.toml", "paper_depth_table1_bed2.toml", "paper_depth_fig5.toml"}) {
     for (const SweepCase& c : loadSweepSpec(root + "sweeps/" + file).cases) {
       RunConfig expected = preset;
       expected.box.width = c.config.box.width;

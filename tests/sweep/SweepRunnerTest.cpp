@@ -170,6 +170,24 @@ TEST(SweepPlan, GrainEstimateIsAreaTimesPackingOverMeanGrainArea) {
   EXPECT_NEAR(estimatedGrains(c), 63000.0, 2000.0);
 }
 
+// Carved beds of one seed share their base bed: the plan counts its pour once, in the first of
+// them, and the carving alone in the others.
+TEST(SweepPlan, CarvedBedsOfOneSeedCountTheirBasePourOnce) {
+  const std::string cache = (fs::temp_directory_path() / ("wiggle-plan-carved-" + std::to_string(::getpid()))).string();
+  const SweepSpec spec = parseSweepSpec("[base.bed]\ncavity = \"carved\"\ncache_dir = \"" + cache +
+                                            "\"\n[grid.intruder]\nshape = [\"disk\", \"square\", \"triangle\"]\n",
+                                        "carved.toml");
+  const SweepPlan plan = makeSweepPlan(spec, cache + "/out");
+  ASSERT_EQ(plan.beds.size(), 3u);
+  const RunConfig& c = spec.cases[0].config;
+  EXPECT_DOUBLE_EQ(plan.beds[0].estimatedSeconds, estimatedBedSeconds(c, CostModel::nsPerParticleStep, true));
+  for (std::size_t b = 1; b < 3; ++b)
+    EXPECT_DOUBLE_EQ(plan.beds[b].estimatedSeconds,
+                     estimatedBedSeconds(spec.cases[b].config, CostModel::nsPerParticleStep, false));
+  EXPECT_GT(plan.beds[0].estimatedSeconds, 5 * plan.beds[1].estimatedSeconds);
+  EXPECT_FALSE(fs::exists(cache));  // planning makes nothing
+}
+
 TEST_F(SweepRunnerTest, RunsEveryCaseRecordsFailuresAndResumes) {
   // amplitude 7 fails the geometry check (box too narrow); period 0.0003 (3 steps: the intruder jumps 0.4 d a step)
   // drives the intruder so
