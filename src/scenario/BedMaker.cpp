@@ -237,6 +237,14 @@ void pourBatch(const RunConfig& config, const ClumpDef& clump, PartialBed& p) {
   p.batchSteps = 0;
 }
 
+// The grains whose centre lies above `height` (levelling the bed's surface there).
+std::vector<bool> grainsAbove(const World& world, double height) {
+  const ParticleStore& s = world.particles();
+  std::vector<bool> above(world.grainCount());
+  for (std::uint32_t i = 0; i < s.grainCount; ++i) above[i] = s.y[i] > height;
+  return above;
+}
+
 // Called at every point where the making can stop and continue (PartialBed): saves it when due.
 using BedSaver = std::function<void(const PartialBed&)>;
 
@@ -268,11 +276,14 @@ World finishBed(const RunConfig& config, const ClumpDef& clump, PartialBed p, co
           pourBatch(config, clump, p);
           p.stage = BedStage::Settling;
         } else {
+          // A base bed (no intruder: bed.cavity = "carved") ends here, poured to the target: each
+          // bed carved from it is levelled with its cut and relaxed once, held by its intruder.
+          // Without an intruder nothing holds the bed in x, and it takes hundreds of time units to
+          // come to rest (the paper-depth preset's was still above bed.rest_energy at t = 370, where
+          // the bed poured around the disk rests at t = 115).
+          if (!p.world.hasIntruder()) return std::move(p.world);
           // Level the surface at the target height, then relax to rest.
-          std::vector<bool> remove(p.world.grainCount());
-          const ParticleStore& s = p.world.particles();
-          for (std::uint32_t i = 0; i < s.grainCount; ++i) remove[i] = s.y[i] > target;
-          p.world.removeGrains(remove);
+          p.world.removeGrains(grainsAbove(p.world, target));
           p.surface = freeSurfaceHeight(p.world);
           p.stage = BedStage::Relaxing;
         }
@@ -339,15 +350,16 @@ std::string bedStatusLine(const BedStatus& s, double targetHeight) {
 
 namespace {
 
-// bed.cavity = "carved": the grains of `base` (a bed poured without an intruder) that the intruder
-// touches at (box centre, intruder.y0) removed, the intruder held there, and the bed relaxed to rest
-// as a poured bed's last stage relaxes it.
+// bed.cavity = "carved": `base` (a bed poured without an intruder to box.bed_height) levelled as a
+// poured bed is, the grains the intruder touches at (box centre, intruder.y0) removed with them,
+// the intruder held there, and the bed relaxed to rest as a poured bed's last stage relaxes it.
 World carveBed(const RunConfig& config, const ClumpDef& clump, World base, const BedProgress& progress,
                const BedSaver& save) {
   const double cx = 0.5 * config.box.width, cy = config.intruder.y0;
   const ParticleStore& s = base.particles();
-  std::vector<bool> remove(base.grainCount());
-  for (std::uint32_t i = 0; i < s.grainCount; ++i) remove[i] = touchesClump(clump, cx, cy, s.x[i], s.y[i], s.radius[i]);
+  std::vector<bool> remove = grainsAbove(base, config.box.bedHeight);
+  for (std::uint32_t i = 0; i < s.grainCount; ++i)
+    remove[i] = remove[i] || touchesClump(clump, cx, cy, s.x[i], s.y[i], s.radius[i]);
   base.removeGrains(remove);
   base.setIntruder(clump, cx, cy);
   PartialBed p{std::move(base), BedStage::Relaxing, 0, 0, 0, 0, 0, 0.0, {}};

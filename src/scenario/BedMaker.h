@@ -2,7 +2,7 @@
 // Making the granular bed (docs/PHYSICS.md §8): grains poured in batches around the held intruder, each batch
 // left to settle, until the free surface reaches the target height; grains above it removed; then
 // relaxed until the kinetic energy per grain is below bed.rest_energy (or bed.max_time is spent).
-// With bed.cavity = "carved" the seed's bed is poured that way once without an intruder, and each
+// With bed.cavity = "carved" the seed's bed is poured once without an intruder, and each
 // intruder's bed is cut from it: the grains the intruder touches removed, then relaxed to rest.
 // A bed depends only on its own parameters, so it is cached on disk under a key that hashes exactly
 // those (bedKey); one bed serves every amplitude and period of a shape.

@@ -38,9 +38,12 @@ double estimatedBedSeconds(const RunConfig& config, double nsPerParticleStep, bo
   // While pouring, the bed holds on average about half (b + 1) / (2 b) of its final grains over
   // b batches; then the whole bed relaxes.
   const double batches = std::max(1.0, std::ceil(config.box.bedHeight / config.bed.batchHeight));
-  const double pouredTime = 0.5 * (batches + 1.0) * CostModel::bedTimePerBatch + CostModel::bedRelaxTime;
-  double simulatedTime = pouredTime;
-  if (config.bed.cavity == "carved") simulatedTime = CostModel::carvedRelaxTime + (withBase ? pouredTime : 0.0);
+  const double pourTime = 0.5 * (batches + 1.0) * CostModel::bedTimePerBatch;
+  const bool carved = config.bed.cavity == "carved";
+  const double relaxTime = config.bed.relaxDamping > 0 ? CostModel::dampedRelaxTime
+                           : carved                    ? CostModel::carvedRelaxTime
+                                                       : CostModel::bedRelaxTime;
+  const double simulatedTime = relaxTime + (carved && !withBase ? 0.0 : pourTime);
   return 1e-9 * nsPerParticleStep * estimatedParticles(config) * simulatedTime / config.run.dt;
 }
 

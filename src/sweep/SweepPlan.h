@@ -30,8 +30,12 @@ struct CostModel {
   // bed.rest_energy = 1e-6 about 40 more.
   static constexpr double bedTimePerBatch = 10.0;
   static constexpr double bedRelaxTime = 40.0;
-  // Simulated time a carved bed relaxes after its cut (bed.cavity = "carved"), in sqrt(d/g).
-  static constexpr double carvedRelaxTime = 10.0;
+  // The relaxation of a carved bed (bed.cavity = "carved") after its cut, and of any bed with
+  // bed.relax_damping > 0. Measured on the paper-depth preset (seed 7, one quiet core, 2026-11-25):
+  // a cut relaxed in 152 s undamped (about 53 time units at 23 ns per particle-step), 16 s with
+  // bed.relax_damping = 2 (about 5.6).
+  static constexpr double carvedRelaxTime = 55.0;
+  static constexpr double dampedRelaxTime = 6.0;
 };
 
 // Estimated wall seconds of a case's run phase (bed excluded) at `nsPerParticleStep`.

@@ -184,7 +184,7 @@ TEST(SweepPlan, CarvedBedsOfOneSeedCountTheirBasePourOnce) {
   for (std::size_t b = 1; b < 3; ++b)
     EXPECT_DOUBLE_EQ(plan.beds[b].estimatedSeconds,
                      estimatedBedSeconds(spec.cases[b].config, CostModel::nsPerParticleStep, false));
-  EXPECT_GT(plan.beds[0].estimatedSeconds, 5 * plan.beds[1].estimatedSeconds);
+  EXPECT_GT(plan.beds[0].estimatedSeconds, plan.beds[1].estimatedSeconds);
   EXPECT_FALSE(fs::exists(cache));  // planning makes nothing
 }
 
