@@ -8,7 +8,8 @@ the drive starts: the area fraction against height (grains' disc areas over the 
 bands, away from the intruder: |x - W/2| > 8 d), the coordination number Z (touching neighbours
 per grain, grains and base, for grains 3 d above the base to 3 d below the surface and 8 d from
 the intruder) and the free surface (median and standard deviation of the highest grain top in
-2 d wide columns, as wiggle measures it). Cases sharing a bed (same protocol and seed) are
+2 d wide columns, as wiggle measures it); around the intruder, the grains touching it and the area
+fraction of the 16 d wide strip's grains in the 16 d above its top. Cases sharing a bed (same protocol and seed) are
 counted once. The V_y of every case comes from results.csv. --dump adds a bed from any dump file
 (its first frame; e.g. LAMMPS's fix pour bed from tools/validation/lammps_fix_pour.py) under the
 protocol name LABEL; repeat it for several seeds (LABEL=FILE, the seeds numbered in order).
@@ -25,7 +26,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from dumps import BASE, GRAIN, pair_overlaps, read_dump  # noqa: E402
+from dumps import BASE, GRAIN, INTRUDER, pair_overlaps, read_dump  # noqa: E402
 
 BAND = 2.0          # [d] height of the area-fraction bands and width of the surface columns
 CLEAR = 8.0         # [d] half-width of the strip around the intruder left out of the statistics
@@ -56,8 +57,17 @@ def bed_statistics(frame):
     counts = np.bincount(np.concatenate([i[touch], j[touch]]), minlength=len(atoms))
     bulk = grain & away & (y > BULK_MARGIN) & (y < surface - BULK_MARGIN)
     bulk_band = (edges[:-1] > BULK_MARGIN) & (edges[1:] < surface - BULK_MARGIN)
+    # Around the intruder (where a carved bed and a poured one can differ): the grains touching it,
+    # and the area fraction of the strip's grains in the 2 CLEAR above its top.
+    intruder = kind == INTRUDER
+    on_intruder = touch & (intruder[i] | intruder[j]) & (grain[i] | grain[j])
+    contacts = len(set(np.where(grain[i[on_intruder]], i[on_intruder], j[on_intruder]).tolist()))
+    top = float((y + r)[intruder].max()) if intruder.any() else float("nan")
+    above = grain & ~away & (y >= top) & (y < top + 2 * CLEAR)
+    phi_above = float((math.pi * r[above] ** 2).sum() / (4 * CLEAR * CLEAR))
     return {"surface": surface, "surface_sd": float(np.std(tops)), "z": float(counts[bulk].mean()),
             "phi_bulk": float(phi[bulk_band].mean()), "rattlers": float((counts[bulk] < 2).mean()),
+            "intruder_contacts": contacts, "phi_above": phi_above,
             "grains": int(grain.sum()), "profile": (0.5 * (edges[1:] + edges[:-1]), phi)}
 
 
@@ -92,12 +102,13 @@ def main():
         label, path = spec.split("=", 1)
         beds[(label, str(sum(1 for k in beds if k[0] == label) + 1))] = bed_statistics(read_dump(path)[0])
 
-    fields = ["protocol", "seed", "grains", "surface", "surface_sd", "phi_bulk", "z", "rattlers"]
+    fields = ["protocol", "seed", "grains", "intruder_contacts", "surface", "surface_sd", "phi_bulk", "z",
+              "rattlers", "phi_above"]
     with open(args.out + ".csv", "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(fields)
         for (protocol, seed), s in sorted(beds.items()):
-            w.writerow([protocol, seed, s["grains"]] + [f"{s[k]:.4f}" for k in fields[3:]])
+            w.writerow([protocol, seed, s["grains"], s["intruder_contacts"]] + [f"{s[k]:.4f}" for k in fields[4:]])
     with open(args.out + "_vy.csv", "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(["protocol", "period", "beds", "vy_mean", "vy_sem", "vy_values"])
