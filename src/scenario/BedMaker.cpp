@@ -506,11 +506,11 @@ std::optional<FileLock> lockBedMaking(const RunConfig& config, const std::string
   }
 }
 
-// A poured bed (around `clump`, or without an intruder when it has no atoms) from the cache, or made
-// there: continued from its partial file when there is one, saved every run.checkpoint_interval
-// seconds and when SIGINT/SIGTERM asks to stop (if the caller holds a StopSignalGuard).
-CachedBed obtainPouredBed(const RunConfig& config, const ClumpDef& clump, const std::string& key,
-                          const BedProgress& progress) {
+// The bed of `key` from the cache, or made by `make` (told whether the cache is writable, and where
+// to note what it met) and stored there. While one process makes a bed, another that wants it waits
+// for it (bed-KEY.lock) and then reads it from the cache.
+CachedBed cachedOrMade(const RunConfig& config, const std::string& key,
+                       const std::function<World(bool cacheWritable, CacheNotes& notes)>& make) {
   const std::string path = bedCachePath(config, key);
   CacheNotes notes;
   if (auto world = cachedBed(config, key, notes)) return CachedBed{std::move(*world), key, path, true, notes.text};
@@ -518,63 +518,63 @@ CachedBed obtainPouredBed(const RunConfig& config, const ClumpDef& clump, const 
   const std::optional<FileLock> making = lockBedMaking(config, key, cacheWritable);
   if (making && notes.text.empty())  // made by another process while this one waited
     if (auto world = cachedBed(config, key, notes)) return CachedBed{std::move(*world), key, path, true, notes.text};
-
-  const std::string partialPath = bedPartialPath(config, key);
-  std::optional<PartialBed> start;
-  if (std::filesystem::exists(partialPath)) {
-    try {
-      start.emplace(parsePartialBed(readFile(partialPath), partialPath, key));
-    } catch (const Error& e) {
-      notes.add(std::string("unfinished bed refused, starting afresh: ") + e.what());
-    }
-  }
-  if (!start) start.emplace(startBed(config, clump));
-  auto lastSave = Clock::now();
-  const BedSaver save = [&](const PartialBed& p) {
-    const int signal = stopSignalReceived();
-    if (signal == 0 && std::chrono::duration<double>(Clock::now() - lastSave).count() < config.run.checkpointInterval)
-      return;
-    std::string saved = " (the cache directory is not writable: nothing saved)";
-    if (cacheWritable) {
-      BinaryWriter out;
-      p.save(out, key);
-      writeStateFile(partialPath, "bed-partial", out.bytes());
-      lastSave = Clock::now();
-      saved = "; saved in " + partialPath + ": the same command continues it";
-    }
-    if (signal != 0)
-      throw Error("interrupted by signal " + std::to_string(signal) + " while making the bed at t = " +
-                  std::to_string(static_cast<double>(p.steps) * config.run.dt) + saved);
-  };
-  World world = finishBed(config, clump, std::move(*start), progress, save);
+  World world = make(cacheWritable, notes);
   if (cacheWritable) storeBed(config, key, world, notes);
   return CachedBed{std::move(world), key, path, false, notes.text};
+}
+
+// A poured bed (around `clump`, or without an intruder when it has no atoms): continued from its
+// partial file when there is one, saved every run.checkpoint_interval seconds and when
+// SIGINT/SIGTERM asks to stop (if the caller holds a StopSignalGuard).
+CachedBed obtainPouredBed(const RunConfig& config, const ClumpDef& clump, const std::string& key,
+                          const BedProgress& progress) {
+  return cachedOrMade(config, key, [&](bool cacheWritable, CacheNotes& notes) {
+    const std::string partialPath = bedPartialPath(config, key);
+    std::optional<PartialBed> start;
+    if (std::filesystem::exists(partialPath)) {
+      try {
+        start.emplace(parsePartialBed(readFile(partialPath), partialPath, key));
+      } catch (const Error& e) {
+        notes.add(std::string("unfinished bed refused, starting afresh: ") + e.what());
+      }
+    }
+    if (!start) start.emplace(startBed(config, clump));
+    auto lastSave = Clock::now();
+    const BedSaver save = [&](const PartialBed& p) {
+      const int signal = stopSignalReceived();
+      if (signal == 0 && std::chrono::duration<double>(Clock::now() - lastSave).count() < config.run.checkpointInterval)
+        return;
+      std::string saved = " (the cache directory is not writable: nothing saved)";
+      if (cacheWritable) {
+        BinaryWriter out;
+        p.save(out, key);
+        writeStateFile(partialPath, "bed-partial", out.bytes());
+        lastSave = Clock::now();
+        saved = "; saved in " + partialPath + ": the same command continues it";
+      }
+      if (signal != 0)
+        throw Error("interrupted by signal " + std::to_string(signal) + " while making the bed at t = " +
+                    std::to_string(static_cast<double>(p.steps) * config.run.dt) + saved);
+    };
+    return finishBed(config, clump, std::move(*start), progress, save);
+  });
 }
 
 // bed.cavity = "carved": carveBed on the seed's bed without an intruder, which is obtained (from the
 // cache, or made there) like any poured bed. The carving is not saved part-way: it is short, and an
 // interrupted one is carved again from the cached base bed, with the same bits.
 CachedBed obtainCarvedBed(const RunConfig& config, const ClumpDef& clump, const BedProgress& progress) {
-  const std::string key = bedKey(config, clump);
-  const std::string path = bedCachePath(config, key);
-  CacheNotes notes;
-  if (auto world = cachedBed(config, key, notes)) return CachedBed{std::move(*world), key, path, true, notes.text};
-  const bool cacheWritable = makeCacheDir(config, notes);
-  const std::optional<FileLock> making = lockBedMaking(config, key, cacheWritable);
-  if (making && notes.text.empty())  // made by another process while this one waited
-    if (auto world = cachedBed(config, key, notes)) return CachedBed{std::move(*world), key, path, true, notes.text};
-
-  CachedBed base = obtainPouredBed(config, kNoIntruder, baseBedKey(config), progress);
-  if (!base.note.empty()) notes.add("base bed: " + base.note);
-  const BedSaver stopWhenAsked = [&](const PartialBed& bed) {
-    if (const int signal = stopSignalReceived(); signal != 0)
-      throw Error("interrupted by signal " + std::to_string(signal) + " while relaxing the carved bed at t = " +
-                  std::to_string(static_cast<double>(bed.steps) * config.run.dt) +
-                  " (the same command carves it again from the cached base bed)");
-  };
-  World carved = carveBed(config, clump, std::move(base.world), progress, stopWhenAsked);
-  if (cacheWritable) storeBed(config, key, carved, notes);
-  return CachedBed{std::move(carved), key, path, false, notes.text};
+  return cachedOrMade(config, bedKey(config, clump), [&](bool, CacheNotes& notes) {
+    CachedBed base = obtainPouredBed(config, kNoIntruder, baseBedKey(config), progress);
+    if (!base.note.empty()) notes.add("base bed: " + base.note);
+    const BedSaver stopWhenAsked = [&](const PartialBed& bed) {
+      if (const int signal = stopSignalReceived(); signal != 0)
+        throw Error("interrupted by signal " + std::to_string(signal) + " while relaxing the carved bed at t = " +
+                    std::to_string(static_cast<double>(bed.steps) * config.run.dt) +
+                    " (the same command carves it again from the cached base bed)");
+    };
+    return carveBed(config, clump, std::move(base.world), progress, stopWhenAsked);
+  });
 }
 
 }  // namespace
