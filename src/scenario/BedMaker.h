@@ -75,8 +75,8 @@ World parseCachedBed(const std::string& file, const std::string& name, const std
 
 // Loads the bed from the cache when a valid entry exists; otherwise makes it, continuing from the
 // bed's partial file when there is one, and stores it (a carved bed is cut from its base bed, itself
-// loaded or made and cached; a process that finds a bed being made by another waits for it). A corrupt or foreign entry is reported in
-// `note` and rebuilt, never trusted. While a StopSignalGuard is alive, SIGINT/SIGTERM saves the bed
+// loaded or made and cached; a process that finds a bed being made by another waits for it). A
+// corrupt or foreign entry is reported in `note` and rebuilt, never trusted. While a StopSignalGuard is alive, SIGINT/SIGTERM saves the bed
 // in the making and throws wiggle::Error; the same call later continues it, with the same bits as
 // a bed made in one go. With bed.file set, the bed is that file's, checked against the config and
 // given its engine parameters (World::setParameters), never made; `note` says when it was made for

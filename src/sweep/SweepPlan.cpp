@@ -109,9 +109,9 @@ SweepPlan makeSweepPlan(SweepSpec spec, const std::string& outDir) {
           bed.firstCase = c.index;
           bed.cachePath = bedCachePath(c.config, p.bedKey);
           // Carved beds of one seed share a base bed: it is poured once, by the first of them.
-          const bool baseToPour = c.config.bed.cavity == "carved" &&
-                                  !fs::exists(bedCachePath(c.config, baseBedKey(c.config))) &&
-                                  basesToPour.insert(baseBedKey(c.config)).second;
+          const std::string base = baseBedKey(c.config);
+          const bool baseToPour = c.config.bed.cavity == "carved" && !fs::exists(bedCachePath(c.config, base)) &&
+                                  basesToPour.insert(base).second;
           bed.estimatedSeconds = estimatedBedSeconds(c.config, CostModel::nsPerParticleStep, baseToPour);
           plan.beds.push_back(bed);
         }
