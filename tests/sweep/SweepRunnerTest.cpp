@@ -5,6 +5,7 @@
 
 #include <cctype>
 #include <signal.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -387,6 +388,23 @@ TEST_F(SweepRunnerTest, ArrayTasksRunOneCaseEachAndTheTableMergesThem) {
       EXPECT_NE(std::string(e.what()).find("from 1 to 3"), std::string::npos) << e.what();
     }
   }
+}
+
+TEST_F(SweepRunnerTest, ArrayTaskEndsWhenItsCaseIsDoneThoughOtherCasesBedsAreNotMade) {
+  // Two seeds, two beds: the task for case 1 makes its own bed only, runs its case and exits; the
+  // other case's bed is someone else's work (an earlier version waited for it for ever). The
+  // timeout turns such a wait into a failure instead of a stuck test.
+  const std::string file = sweepFile("array_beds", "[grid.box]\nseed = [1, 2]\n");
+  const std::string out = *root_ + "/array_beds";
+  const std::string task = "timeout 300 " + std::string(WIGGLE_BINARY) + " sweep " + file + " --out " + out +
+                           " --threads 1 --case 1 > /dev/null 2>&1";
+  const int status = std::system(task.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0);  // 124: timed out
+  auto results = readResults(out);
+  EXPECT_EQ(results["seed=1"]["status"], "ok");
+  EXPECT_EQ(results["seed=2"]["status"], "pending");
+  EXPECT_FALSE(fs::exists(out + "/cases/seed=2"));
 }
 
 }  // namespace
