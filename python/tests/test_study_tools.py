@@ -1,5 +1,5 @@
-"""tools/study/table1_markdown.py: the markdown table of V_y per shape and period that
-docs/VALIDATION.md's Table 1 and figure 5 sections print."""
+"""tools/study: table1_markdown.py, the markdown table of V_y per shape and period that
+docs/VALIDATION.md's Table 1 and figure 5 sections print, and collect.py's sweep log."""
 import csv
 import importlib.util
 import json
@@ -8,10 +8,17 @@ import tempfile
 import unittest
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-SCRIPT = os.path.join(HERE, "..", "..", "tools", "study", "table1_markdown.py")
-spec = importlib.util.spec_from_file_location("table1_markdown", SCRIPT)
-table1_markdown = importlib.util.module_from_spec(spec)
-spec.loader.exec_module(table1_markdown)
+
+
+def load_tool(name):
+    spec = importlib.util.spec_from_file_location(name, os.path.join(HERE, "..", "..", "tools", "study", name + ".py"))
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+table1_markdown = load_tool("table1_markdown")
+collect = load_tool("collect")
 
 COLUMNS = ["case", "run_dir", "status", "vy", "intruder.shape", "drive.period", "drive.amplitude"]
 
@@ -55,6 +62,18 @@ class TableTest(unittest.TestCase):
             write_folder(root, [("a", "ok", 0.1, "disk", 3, 3), ("b", "ok", 0.1, "disk", 3, 5)])
             with self.assertRaises(ValueError):
                 table1_markdown.table(root)
+
+
+class CollectTest(unittest.TestCase):
+    def test_log_keeps_earlier_sweep_directories_lines_once(self):
+        earlier = ["s1 start\n", "s1 ok\n", "s2 start\n"]
+        current = ["s2 start\n", "s2 ok\n"]   # the same directory, collected again later
+        self.assertEqual(collect.merged_log(earlier, current), ["s1 start\n", "s1 ok\n", "s2 start\n", "s2 ok\n"])
+        fresh = ["s3 start\n"]                  # a new sweep directory in a later session
+        merged = collect.merged_log(["s1 start\n", "s1 ok"], fresh)
+        self.assertEqual(merged, ["s1 start\n", "s1 ok\n", "s3 start\n"])
+        self.assertEqual(collect.merged_log(merged, fresh), merged)   # collecting again changes nothing
+        self.assertEqual(collect.merged_log([], fresh), fresh)
 
 
 if __name__ == "__main__":
