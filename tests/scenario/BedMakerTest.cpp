@@ -364,7 +364,8 @@ TEST(BedMaker, PaperDepthSweepsRunOnThePresetsBeds) {
   EXPECT_EQ(preset.box.bedHeight - preset.intruder.y0, 105.0);  // the paper's depth
   int compared = 0;
   for (const char* file : {"paper_depth_box.toml", "paper_depth_seeds.toml", "paper_depth_table1.toml",
-                           "paper_depth_runlength.toml", "paper_depth_table1_bed2.toml", "paper_depth_fig5.toml"}) {
+                           "paper_depth_runlength.toml", "paper_depth_table1_bed2.toml", "paper_depth_fig5.toml",
+                           "paper_depth_fig5_bed2.toml"}) {
     for (const SweepCase& c : loadSweepSpec(root + "sweeps/" + file).cases) {
       RunConfig expected = preset;
       expected.box.width = c.config.box.width;
