@@ -14,6 +14,7 @@ void addPlotCommand(CLI::App& app);
 void addExportLammpsCommand(CLI::App& app);
 void addStatusCommand(CLI::App& app);
 void addReportCommand(CLI::App& app);
+void addRateCommand(CLI::App& app);
 
 // Runs the plotting package (`/usr/bin/python3 -m wiggleplot ARGS...`, PlotCommand.cpp) and returns
 // its exit status.

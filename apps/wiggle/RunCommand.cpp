@@ -110,8 +110,7 @@ void addRunCommand(CLI::App& app) {
                    options.threads == 1 ? "" : "s");
     options.resume = args->resume;
     const RunOutcome outcome = runExperiment(prepareCase(config), options);
-    std::printf("V_y = %.6g (least-squares slope %.6g) d per sqrt(d/g); summary in %s\n", outcome.vy,
-                outcome.vySlope, outcome.summaryPath.c_str());
+    std::printf("%s\n", outcome.resultLine().c_str());
     for (const std::string& w : outcome.warnings) std::fprintf(stderr, "wiggle: warning: %s\n", w.c_str());
     std::fflush(stdout);  // before the plotter writes to the same stream
     if (config.run.plot && !args->noPlot) {

@@ -74,6 +74,7 @@ int main(int argc, char** argv) {
   wiggle::cli::addExportLammpsCommand(app);
   wiggle::cli::addStatusCommand(app);
   wiggle::cli::addReportCommand(app);
+  wiggle::cli::addRateCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

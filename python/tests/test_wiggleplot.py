@@ -86,6 +86,19 @@ class RunDataTest(DataDirs):
         at_mean = yy[0] + v * (t[inside].mean() - tt[0])
         self.assertAlmostEqual(at_mean, dy[inside].mean(), places=9)
 
+    def test_settled_chord_ends_at_t_settled_on_the_trajectory(self):
+        traj = readers.read_trajectory(self.run_dir)
+        self.assertNotIn("settled", prepare.rate_lines(self.summary, traj))  # a summary before the rule
+        unsettled = dict(self.summary, settled=False, t_settled=100.0, vy_settled=self.summary["vy"])
+        self.assertNotIn("settled", prepare.rate_lines(unsettled, traj))
+        settled = dict(self.summary, settled=True, t_settled=60.0, vy_settled=0.5)
+        tt, yy, v = prepare.rate_lines(settled, traj)["settled"]
+        self.assertEqual(v, 0.5)
+        self.assertEqual(list(tt), [10.0, 60.0])
+        t, dy = prepare.displacement(traj)
+        self.assertAlmostEqual(yy[1], float(np.interp(60.0, t, dy)), places=12)
+        self.assertEqual(yy[0], prepare.rate_lines(settled, traj)["vy"][1][0])
+
     def test_model_rate_interpolates_the_curve_and_stays_silent_below_t_rise(self):
         model = readers.read_model(self.run_dir)
         self.assertAlmostEqual(prepare.model_rate_at(model, 5.0), 0.15, places=12)

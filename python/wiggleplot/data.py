@@ -66,7 +66,8 @@ def load_run(run_dir):
 
 def load_sweep(sweep_dir):
     """results.csv of a sweep directory as a DataFrame, one row per case in case order, pending and
-    failed cases included (their numbers NaN): case, run_dir, status, vy, vy_slope, wall_s, one
+    failed cases included (their numbers NaN): case, run_dir, status, vy, vy_slope, vy_settled,
+    t_settled (the paper's t_f rule; absent from tables written before it), wall_s, one
     column per parameter named by its config key (drive.period, intruder.shape, ...), n_grains,
     steps, ns_per_particle_step, state_hash, error. `load_case(sweep_dir, row)` reads a case's run."""
     path = os.path.join(sweep_dir, "results.csv")

@@ -11,8 +11,8 @@ SHAPE, AMPLITUDE, PERIOD, MU, SEED = (
     "intruder.shape", "drive.amplitude", "drive.period", "contact.mu", "box.seed")
 # Columns of results.csv that are outcomes or bookkeeping, never parameters (src/sweep/ResultsTable.h;
 # case_label is a [[case]]'s name, which the figures label by already).
-NON_PARAMETERS = {"case", "run_dir", "status", "vy", "vy_slope", "wall_s", "n_grains", "steps",
-                  "ns_per_particle_step", "state_hash", "error", "case_label"}
+NON_PARAMETERS = {"case", "run_dir", "status", "vy", "vy_slope", "vy_settled", "t_settled", "wall_s", "n_grains",
+                  "steps", "ns_per_particle_step", "state_hash", "error", "case_label"}
 
 
 # --- one run ------------------------------------------------------------------------------------
@@ -28,7 +28,9 @@ def rate_lines(summary, traj):
     """The straight lines drawn over y(t) - y(0) on [t_i, t_f]:
     'vy': the paper's rate, the chord from (t_i, y_initial) to (t_f, y_final) of summary.json;
     'slope': the least-squares line with summary's vy_slope, through the mean of the samples in
-    [t_i, t_f] (for a fixed slope that is where the least-squares line passes).
+    [t_i, t_f] (for a fixed slope that is where the least-squares line passes);
+    'settled': the paper's t_f rule, the chord from (t_i, y_initial) to t_settled with vy_settled,
+    present only when the intruder settled before t_f (summary's `settled`).
     Each is (t_pair, dy_pair, rate) in the y - y(0) frame, or absent when summary lacks its keys."""
     t, dy = displacement(traj)
     y0 = float(traj["y"][0])
@@ -41,6 +43,11 @@ def rate_lines(summary, traj):
         yi = summary.get("y_initial")
         yi = float(np.interp(ti, t, traj["y"])) if yi is None else float(yi)
         lines["vy"] = (np.array([ti, tf]), np.array([yi - y0, yi - y0 + vy * (tf - ti)]), float(vy))
+    settled = settled_point(summary, traj)
+    if settled is not None and "vy" in lines:
+        (t_start, _), (dy_start, _), _ = lines["vy"]
+        lines["settled"] = (np.array([t_start, settled[0]]), np.array([dy_start, settled[1]]),
+                            float(summary["vy_settled"]))
     slope = summary.get("vy_slope")
     inside = (t >= ti) & (t <= tf)
     if slope is not None and np.isfinite(slope) and inside.any():
@@ -48,6 +55,16 @@ def rate_lines(summary, traj):
         tt = np.array([ti, tf])
         lines["slope"] = (tt, ym + slope * (tt - tm), float(slope))
     return lines
+
+
+def settled_point(summary, traj):
+    """(t_settled, y(t_settled) - y(0)) when summary.json says the intruder settled (the paper's t_f
+    rule, docs/OUTPUT-FORMATS.md), else None (not settled, or a summary written before the rule)."""
+    if not summary.get("settled") or summary.get("t_settled") is None:
+        return None
+    t, dy = displacement(traj)
+    ts = float(summary["t_settled"])
+    return ts, float(np.interp(ts, t, dy))
 
 
 def model_rate_at(model, period):

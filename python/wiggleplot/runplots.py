@@ -114,8 +114,12 @@ def plot_trajectory(run, out_dir, formats):
     lines = prepare.rate_lines(run.summary, run.trajectory)
     if "vy" in lines:
         tt, yy, v = lines["vy"]
-        ax.plot(tt, yy, color="#d95f02", lw=1.8, label=rf"$V_y$ = {v:.3g} (paper rule)")
+        ax.plot(tt, yy, color="#d95f02", lw=1.8, label=rf"$V_y$ = {v:.3g} ($t_i$ to $t_f$ = {tt[1]:.4g})")
         ax.plot(tt, yy, "o", color="#d95f02", ms=3.5)
+    if "settled" in lines:
+        tt, yy, v = lines["settled"]
+        ax.plot(tt, yy, color="#7570b3", lw=1.4, label=rf"$V_y$ = {v:.3g} to $t_{{settled}}$ = {tt[1]:.4g}")
+        ax.plot(tt[1:], yy[1:], "s", color="#7570b3", ms=3.5)
     if "slope" in lines:
         tt, yy, v = lines["slope"]
         ax.plot(tt, yy, "--", color="#1b9e77", lw=1.2, label=rf"least squares: {v:.3g}")

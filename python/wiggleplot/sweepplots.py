@@ -334,7 +334,8 @@ def _per_period_cases(sweep, panel, rows, amplitude):
 
 def plot_sweep_trajectories(sweep, out_dir, formats):
     """Paper fig. 2: y(t) - y(0) per period at one amplitude, one panel per shape (the first seed
-    of each point is drawn: trajectories of different beds are not averaged)."""
+    of each point is drawn: trajectories of different beds are not averaged), with a square at
+    t_settled where the intruder settled (the paper's t_f rule)."""
     rows, _ = sweep.main_mu_rows()
     if not rows.any():
         return
@@ -345,7 +346,9 @@ def plot_sweep_trajectories(sweep, out_dir, formats):
         for T, idx in _per_period_cases(sweep, panel, rows, amplitude).items():
             for i in idx:
                 try:
-                    lines[T] = prepare.displacement(readers.read_trajectory(sweep.run_dir(i)))
+                    trajectory = readers.read_trajectory(sweep.run_dir(i))
+                    summary = readers.read_summary(sweep.run_dir(i))
+                    lines[T] = prepare.displacement(trajectory) + (prepare.settled_point(summary, trajectory),)
                     break
                 except (OSError, readers.FormatError, ValueError):
                     continue
@@ -358,8 +361,10 @@ def plot_sweep_trajectories(sweep, out_dir, formats):
     periods = sorted({T for p in panels.values() for T in p})
     colours = dict(zip(periods, style.series_colours(len(periods), "plasma")))
     for ax, (panel, lines) in zip(axes, panels.items()):
-        for T, (t, dy) in lines.items():
+        for T, (t, dy, settled) in lines.items():
             ax.plot(t, dy, color=colours[T], lw=0.9, label=f"$T$ = {T:g}")
+            if settled is not None:
+                ax.plot(*settled, "s", color=colours[T], ms=4, mec="k", mew=0.5)
         ax.set_title(rf"{panel} ($A$ = {amplitude:g})")
         ax.set_xlabel(style.T_LABEL)
         ax.set_ylabel(style.DY_LABEL)

@@ -1,25 +1,33 @@
 #pragma once
 // The intruder's rise rate from its sampled trajectory (docs/PHYSICS.md §9; docs/OUTPUT-FORMATS.md states the
-// rule for users).
+// rules for users). Two rules, both V_y = (y_f - y_i) / (t_f - t_i) from the raw sampled heights at
+// t_i and t_f, differing in t_f:
 //
-// Paper rule: V_y = (y_f - y_i) / (t_f - t_i), t_i = 0.1 t_total, t_f = t_total unless the intruder
-// reached its final height earlier (a plateau, e.g. at the free surface). Plateau detection, made
-// explicit here: average y over a window of max(T, 1) to remove the in-cycle wiggle; call y_end
-// the averaged height at the end; t_plateau is the earliest time after t_i from which the averaged
-// height stays within `plateauTolerance` (0.5 d) of y_end. It is used as t_f only when the intruder
-// ends at the free surface (y_end >= surfacedHeight: its top within about two grains of the
-// surface), travelled at least 4 tolerances (2 d) between t_i and the end, and the plateau lasts at
-// least 10 % of the run. A pause inside the bed, or the end of a fast start-up transient, is not
-// the paper's plateau and must not shorten the window.
-// y_i and y_f are the raw sampled heights at t_i and t_f. The least-squares slope of y(t) over
-// [t_i, t_f] is reported beside it.
+// measureRiseRate, the run's `vy`: t_i = 0.1 t_total, t_f = t_total unless the intruder reached the
+// free surface earlier (a plateau). Plateau detection: average y over a window of max(T, 1) to
+// remove the in-cycle wiggle; call y_end the averaged height at the end; t_plateau is the earliest
+// time after t_i from which the averaged height stays within `plateauTolerance` (0.5 d) of y_end.
+// It is used as t_f only when the intruder ends at the free surface (y_end >= surfacedHeight: its
+// top within about two grains of the surface), travelled at least 4 tolerances (2 d) between t_i
+// and the end, and the plateau lasts at least 10 % of the run. A pause inside the bed, or the end
+// of a fast start-up transient, is not a plateau for this rule.
+//
+// measureSettledRate, `vy_settled`: the paper's t_f, "the time at which the intruder is about to
+// reach its final vertical position", wherever that position is (in the bed, at the surface, at the
+// base): SettleRule below says exactly when an intruder counts as settled and where t_f then is.
+// When it never settles, vy_settled == vy and t_settled is vy's t_f.
 #include <vector>
+
+#include "analysis/Trajectory.h"
 
 namespace wiggle {
 
-struct TrajectorySample {
-  double t, x, y, vx, vy, fy;  // time, intruder centre, velocity, vertical contact force
+// Where the rate is measured: from t_i = `from` to the end of the data used, `to` (samples after it
+// are ignored, as if the run had ended there). A run's own window is paperWindow(t_total).
+struct RateWindow {
+  double from = 0.0, to = 0.0;
 };
+inline RateWindow paperWindow(double totalTime) { return {0.1 * totalTime, totalTime}; }
 
 struct RiseRate {
   double vy = 0.0;        // paper's rule [sqrt(g d)]
@@ -36,7 +44,40 @@ struct RiseRate {
   bool windowTooShort() const { return windowPeriods < kMinWindowPeriods; }
 };
 
-RiseRate measureRiseRate(const std::vector<TrajectorySample>& samples, double totalTime, double period,
+RiseRate measureRiseRate(const std::vector<TrajectorySample>& samples, RateWindow window, double period,
                          double surfacedHeight, double plateauTolerance = 0.5);
+
+// The paper's t_f rule (docs/PHYSICS.md §9). Heights are first averaged over `smoothing(T)`, a
+// whole number of drive periods at least kSmoothingTime long (the in-cycle wiggle and the bed's
+// short fluctuations average out; one period leaves +-1 d of noise on a plateau at T = 2.5). The
+// intruder has settled at t_s when, from t_s to the end, every averaged height lies within `band`
+// of their mean (the final level), and
+//   - it travelled at least kTravelBands bands from its averaged height at t_i to that level (a
+//     wandering intruder that never went anywhere has not "reached" anything),
+//   - both the approach [t_i, t_s] and the plateau [t_s, end] last at least kMinFraction of the
+//     window (a start-up transient is not an approach; a short calm is not the final position),
+//   - the plateau is flat: its least-squares slope is at most kFlatRatio of the approach's rate (a
+//     steady climb, slow enough to stay within the band for a while, is not a plateau).
+// The earliest such t_s is t_settled. The band is the rule's one parameter; `wiggle rate --band`
+// measures how much an answer depends on it (docs/PHYSICS.md §9 has the figures).
+struct SettleRule {
+  double band = 1.0;                              // [d]: one grain diameter
+  static constexpr double kSmoothingTime = 10.0;  // [sqrt(d/g)]
+  static constexpr double kTravelBands = 4.0;
+  static constexpr double kMinFraction = 0.1;
+  static constexpr double kFlatRatio = 0.25;
+  double smoothing(double period) const;  // the averaging window for drive period T
+};
+
+struct SettledRate {
+  double vy = 0.0;        // (y(t_settled) - y(t_i)) / (t_settled - t_i) [sqrt(g d)]
+  double tSettled = 0.0;  // the paper's t_f: when the intruder settled, else `unsettled`'s t_f
+  bool settled = false;
+};
+
+// `unsettled` is measureRiseRate's result for the same window: what is reported when the intruder
+// never settles (so vy_settled == vy then, and t_settled is vy's t_f).
+SettledRate measureSettledRate(const std::vector<TrajectorySample>& samples, RateWindow window, double period,
+                               const RiseRate& unsettled, const SettleRule& rule = {});
 
 }  // namespace wiggle

@@ -35,14 +35,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double secondsSince(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-void writeTrajectory(const std::string& path, const std::vector<TrajectorySample>& samples) {
-  std::string out = "t,x,y,vx,vy,fy\n";
-  for (const auto& s : samples)
-    out += formatNumber(s.t, 10) + ',' + formatNumber(s.x, 10) + ',' + formatNumber(s.y, 10) + ',' + formatNumber(s.vx, 10) + ',' +
-           formatNumber(s.vy, 10) + ',' + formatNumber(s.fy, 10) + '\n';
-  writeFileAtomically(path, out);
-}
-
 void writePhaseRates(const std::string& path, const RunState& state) {
   std::string out = "bin,phase_center,vy_mean,samples\n";
   for (int b = 0; b < kPhaseBins; ++b) {
@@ -233,7 +225,7 @@ std::vector<std::string> runWarnings(const RiseRate& rate, double averagedFrom, 
 }
 
 RunSummary summarise(const Case& run, const World& world, const RunState& state, const FieldObserver& fields,
-                     const RiseRate& rate, double averagedFrom) {
+                     const RiseRate& rate, const SettledRate& settled, const SettleRule& rule, double averagedFrom) {
   const RunConfig& config = run.config;
   RunSummary summary;
   summary.vy = rate.vy;
@@ -247,6 +239,10 @@ RunSummary summarise(const Case& run, const World& world, const RunState& state,
   summary.yFinal = rate.yFinal;
   summary.yStart = state.samples.front().y;
   summary.vyWindowPeriods = rate.windowPeriods;
+  summary.vySettled = settled.vy;
+  summary.tSettled = settled.tSettled;
+  summary.settled = settled.settled;
+  summary.settleBand = rule.band;
   summary.averagedFromT = averagedFrom;
   summary.warnings = runWarnings(rate, averagedFrom, config);
   summary.overlapMargin = world.healthMargins().overlap;
@@ -351,8 +347,11 @@ bool stepToTheEnd(const Case& run, const RunOptions& options, const std::string&
 RunOutcome writeRunOutputs(const Case& run, const std::string& dir, const World& world, const RunState& state,
                         const FieldObserver& fields, LogFile& log) {
   const RunConfig& config = run.config;
-  const RiseRate rate = measureRiseRate(state.samples, config.run.duration, config.drive.period, run.surfacedHeight);
-  writeTrajectory(dir + "/trajectory.csv", state.samples);
+  const RateWindow window = paperWindow(config.run.duration);
+  const RiseRate rate = measureRiseRate(state.samples, window, config.drive.period, run.surfacedHeight);
+  const SettleRule rule;
+  const SettledRate settled = measureSettledRate(state.samples, window, config.drive.period, rate, rule);
+  writeTrajectoryCsv(dir + "/trajectory.csv", state.samples);
   writePhaseRates(dir + "/phase_rates.csv", state);
   if (config.fields.enabled) fields.writeCsv(dir + "/fields.csv");
   writeModel(dir + "/model.json", config, run.shape);
@@ -363,15 +362,19 @@ RunOutcome writeRunOutputs(const Case& run, const std::string& dir, const World&
   std::uint64_t accumulated = 0;
   for (const std::uint64_t n : state.phaseCount) accumulated += n;
   const double averagedFrom = static_cast<double>(world.stepCount() - accumulated) * config.run.dt;
-  const RunSummary summary = summarise(run, world, state, fields, rate, averagedFrom);
+  const RunSummary summary = summarise(run, world, state, fields, rate, settled, rule, averagedFrom);
   writeFileAtomically(dir + "/summary.json", toJson(summary).dump(2) + "\n");
-  log.line("done: vy = " + formatNumber(rate.vy) + ", slope = " + formatNumber(rate.slope) + ", " +
+  log.line("done: vy = " + formatNumber(rate.vy) + ", slope = " + formatNumber(rate.slope) +
+           ", vy_settled = " + formatNumber(settled.vy) + " (t_settled = " + formatNumber(settled.tSettled) + "), " +
            formatNumber(summary.nsPerParticleStep) + " ns/particle-step, state " + world.stateHash());
   for (const std::string& w : summary.warnings) log.line("warning: " + w);
   RunOutcome outcome;
   outcome.status = "ok";
   outcome.vy = rate.vy;
   outcome.vySlope = rate.slope;
+  outcome.vySettled = settled.vy;
+  outcome.tSettled = settled.tSettled;
+  outcome.settled = settled.settled;
   outcome.warnings = summary.warnings;
   outcome.stateHash = world.stateHash();
   outcome.summaryPath = dir + "/summary.json";
@@ -379,6 +382,18 @@ RunOutcome writeRunOutputs(const Case& run, const std::string& dir, const World&
 }
 
 }  // namespace
+
+std::string RunOutcome::resultLine() const {
+  char text[160];
+  std::snprintf(text, sizeof text, "V_y = %.6g (least-squares slope %.6g) d per sqrt(d/g)", vy, vySlope);
+  std::string line = text;
+  if (settled) {
+    std::snprintf(text, sizeof text, "; settled at t = %.6g: V_y to then (the paper's t_f rule) = %.6g", tSettled,
+                  vySettled);
+    line += text;
+  }
+  return line + "; summary in " + summaryPath;
+}
 
 RunOutcome runExperiment(const Case& run, const RunOptions& options) {
   if (options.threads > 0) omp_set_num_threads(options.threads);

@@ -27,9 +27,15 @@ struct RunOptions {
 struct RunOutcome {
   std::string status;   // "ok" | "stopped"
   double vy = 0.0, vySlope = 0.0;
+  double vySettled = 0.0, tSettled = 0.0;  // the paper's t_f rule (analysis/RiseRate.h)
+  bool settled = false;
   std::vector<std::string> warnings;  // what makes the result less than it seems (also in summary.json)
   std::string stateHash;
   std::string summaryPath;
+
+  // "V_y = ... (least-squares slope ...) d per sqrt(d/g)[; settled at t = ...: ...]; summary in ...":
+  // the line `wiggle run` and a sweep's case print.
+  std::string resultLine() const;
 };
 
 // Runs the case into options.outDir (or continues it there with options.resume).

@@ -20,6 +20,16 @@ const std::vector<SummaryField>& summaryFields() {
       {"y_final", "d", "intruder centre height at t_f", &S::yFinal},
       {"y_start", "d", "intruder centre height at t = 0", &S::yStart},
       {"vy_window_periods", "", "(t_f - t_i) / T: the drive periods V_y is measured over", &S::vyWindowPeriods},
+      {"vy_settled", "sqrt(g d)",
+       "the rate by the paper's t_f rule: (y(t_settled) - y_i) / (t_settled - t_i); vy when the intruder never settled",
+       &S::vySettled},
+      {"t_settled", "sqrt(d/g)",
+       "the paper's t_f: when the intruder came within settle_band of its final level to stay; t_f when it never "
+       "settled",
+       &S::tSettled},
+      {"settled", "", "true when the intruder reached a final level before the end (docs/PHYSICS.md, section 9)",
+       &S::settled},
+      {"settle_band", "d", "the settle rule's band: how close to its final level the intruder stays", &S::settleBand},
       {"averaged_from_t", "sqrt(d/g)", "where the phase rates and fields begin to average", &S::averagedFromT},
       {"warnings", "", "what makes the result less than it seems; empty when nothing is amiss", &S::warnings},
       {"overlap_margin", "", "deepest overlap seen, as a fraction of the blow-up bound", &S::overlapMargin},
@@ -29,7 +39,10 @@ const std::vector<SummaryField>& summaryFields() {
       {"n_particles", "", "grains and frozen base particles", &S::particles},
       {"steps", "", "time steps of the run", &S::steps},
       {"threads", "", "OpenMP threads of the last stretch run", &S::threads},
-      {"simd", "", "instruction set of the force kernels of the last stretch run: scalar, avx2 or avx512 (the same bits; only the speed differs)", &S::simd},
+      {"simd", "",
+       "instruction set of the force kernels of the last stretch run: scalar, avx2 or avx512 (the same bits; only the "
+       "speed differs)",
+       &S::simd},
       {"wall_s", "s", "wall time: run and bed", &S::wallSeconds},
       {"run_wall_s", "s", "wall time of the run phase", &S::runWallSeconds},
       {"bed_wall_s", "s", "wall time spent obtaining the bed (made or loaded)", &S::bedWallSeconds},
@@ -46,7 +59,8 @@ const std::vector<SummaryField>& summaryFields() {
       {"period", "sqrt(d/g)", "drive.period", &S::period},
       {"mu", "", "contact.mu", &S::mu},
       {"field_frames", "", "frames averaged per fields.phases entry", &S::fieldFrames},
-      {"version", "", "version and git revision of the wiggle that wrote the file: 0.1.0 (git a1b2c3d4e5f6)", &S::version},
+      {"version", "", "version and git revision of the wiggle that wrote the file: 0.1.0 (git a1b2c3d4e5f6)",
+       &S::version},
   };
   return fields;
 }

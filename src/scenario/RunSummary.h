@@ -19,6 +19,8 @@ struct RunSummary {
   bool plateau = false;
   double tInitial = 0.0, tFinal = 0.0, yInitial = 0.0, yFinal = 0.0, yStart = 0.0;
   double vyWindowPeriods = 0.0, averagedFromT = 0.0;
+  double vySettled = 0.0, tSettled = 0.0, settleBand = 0.0;  // the paper's t_f rule (measureSettledRate)
+  bool settled = false;
   std::vector<std::string> warnings;
   // the blow-up detector (docs/RELIABILITY.md, section 7)
   double overlapMargin = 0.0, speedMargin = 0.0;

@@ -71,6 +71,8 @@ CaseResult readCaseSummary(const std::string& runDir) {
   r.status = "ok";
   r.vy = summary.vy;
   r.vySlope = summary.vySlope;
+  r.vySettled = summary.vySettled;
+  r.tSettled = summary.tSettled;
   r.wallSeconds = summary.wallSeconds;
   r.nsPerParticleStep = summary.nsPerParticleStep;
   r.runWallSeconds = summary.runWallSeconds;
@@ -83,7 +85,8 @@ CaseResult readCaseSummary(const std::string& runDir) {
 }
 
 std::vector<std::string> resultColumns(const SweepSpec& spec) {
-  std::vector<std::string> columns = {"case", "run_dir", "status", "vy", "vy_slope", "wall_s"};
+  std::vector<std::string> columns = {"case",     "run_dir",    "status",    "vy",
+                                      "vy_slope", "vy_settled", "t_settled", "wall_s"};
   for (const std::string& k : parameterKeys(spec)) columns.push_back(columnName(k));
   for (const char* k : {"n_grains", "steps", "ns_per_particle_step", "state_hash", "error"}) columns.emplace_back(k);
   return columns;
@@ -101,8 +104,9 @@ std::string resultsCsv(const SweepSpec& spec, const std::vector<std::string>& ru
     const SweepCase& sc = spec.cases[c];
     const CaseResult& r = results[c];
     const bool ok = r.status == "ok";
-    std::vector<std::string> row = {sc.name, runDirs[c], r.status, ok ? formatNumber(r.vy, 10) : "",
-                                    ok ? formatNumber(r.vySlope, 10) : "", ok ? formatNumber(r.wallSeconds, 10) : ""};
+    auto number = [ok](double v) { return ok ? formatNumber(v, 10) : std::string(); };
+    std::vector<std::string> row = {sc.name,           runDirs[c],          r.status,           number(r.vy),
+                                    number(r.vySlope), number(r.vySettled), number(r.tSettled), number(r.wallSeconds)};
     for (const std::string& k : keys) {
       std::string value;
       for (const SweepParameter& p : sc.parameters)
@@ -112,12 +116,89 @@ std::string resultsCsv(const SweepSpec& spec, const std::vector<std::string>& ru
     }
     row.push_back(ok ? std::to_string(r.grains) : "");
     row.push_back(ok ? std::to_string(r.steps) : "");
-    row.push_back(ok ? formatNumber(r.nsPerParticleStep, 10) : "");
+    row.push_back(number(r.nsPerParticleStep));
     row.push_back(ok ? r.stateHash : "");
     row.push_back(r.error);
     appendRow(out, row);
   }
   return out;
+}
+
+std::vector<std::vector<std::string>> parseCsv(const std::string& text) {
+  std::vector<std::vector<std::string>> rows;
+  std::vector<std::string> row;
+  std::string cell;
+  bool quoted = false, any = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (quoted) {
+      if (c == '"' && i + 1 < text.size() && text[i + 1] == '"') {
+        cell += '"';
+        ++i;
+      } else if (c == '"') {
+        quoted = false;
+      } else {
+        cell += c;
+      }
+    } else if (c == '"') {
+      quoted = any = true;
+    } else if (c == ',') {
+      row.push_back(std::move(cell));
+      cell.clear();
+      any = true;
+    } else if (c == '\n') {
+      row.push_back(std::move(cell));
+      cell.clear();
+      rows.push_back(std::move(row));
+      row.clear();
+      any = false;
+    } else if (c != '\r') {
+      cell += c;
+      any = true;
+    }
+  }
+  if (any || !cell.empty()) {
+    row.push_back(std::move(cell));
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+void refreshSettledColumns(const std::string& sweepDir) {
+  const std::string path = sweepDir + "/results.csv";
+  std::vector<std::vector<std::string>> rows = parseCsv(readFile(path));
+  if (rows.empty()) throw Error(path + " is empty");
+  std::vector<std::string>& header = rows[0];
+  auto column = [&](const std::string& name) {
+    return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+  };
+  if (column("vy_settled") == header.size()) {
+    const std::size_t after = column("vy_slope");
+    if (after == header.size()) throw Error(path + " has no vy_slope column: not a wiggle results table");
+    for (auto& row : rows)
+      if (row.size() > after) row.insert(row.begin() + static_cast<std::ptrdiff_t>(after) + 1, 2, std::string());
+    header[after + 1] = "vy_settled";
+    header[after + 2] = "t_settled";
+  }
+  const std::size_t runDir = column("run_dir"), status = column("status");
+  const std::size_t vySettled = column("vy_settled"), tSettled = column("t_settled");
+  if (runDir == header.size() || status == header.size() || tSettled == header.size())
+    throw Error(path + " lacks the run_dir, status or t_settled column: not a wiggle results table");
+  std::string out;
+  appendRow(out, header);
+  for (std::size_t r = 1; r < rows.size(); ++r) {
+    std::vector<std::string>& row = rows[r];
+    if (row.size() != header.size())
+      throw Error(path + ": row " + std::to_string(r + 1) + " has " + std::to_string(row.size()) +
+                  " cells, the header " + std::to_string(header.size()));
+    if (row[status] == "ok") {
+      const CaseResult result = readCaseSummary(sweepDir + "/" + row[runDir]);
+      row[vySettled] = formatNumber(result.vySettled, 10);
+      row[tSettled] = formatNumber(result.tSettled, 10);
+    }
+    appendRow(out, row);
+  }
+  writeFileAtomically(path, out);
 }
 
 }  // namespace wiggle

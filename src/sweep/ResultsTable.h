@@ -3,7 +3,7 @@
 // case order, rewritten whole and atomically (temporary file + rename) after every change, so a
 // reader never sees a torn file.
 //
-// Columns: case,run_dir,status,vy,vy_slope,wall_s, then one per parameter named by its config key
+// Columns: case,run_dir,status,vy,vy_slope,vy_settled,t_settled,wall_s, then one per parameter named by its config key
 // (the keys that vary in the sweep, then intruder.shape, drive.amplitude, drive.period, contact.mu
 // and box.seed when they do not vary, so the plots always find them), then
 // n_grains,steps,ns_per_particle_step,state_hash,error.
@@ -21,6 +21,7 @@ namespace wiggle {
 struct CaseResult {
   std::string status = "pending";  // ok | failed | running | pending
   double vy = 0.0, vySlope = 0.0, wallSeconds = 0.0;
+  double vySettled = 0.0, tSettled = 0.0;  // the paper's t_f rule (summary.json)
   double nsPerParticleStep = 0.0;
   double runWallSeconds = 0.0;      // stepping time (for the ETA)
   double particleSteps = 0.0;       // particles x steps of the run phase (for the ETA)
@@ -42,5 +43,13 @@ std::string resultsCsv(const SweepSpec& spec, const std::vector<std::string>& ru
 
 // One CSV cell, quoted when it must be.
 std::string csvCell(const std::string& text);
+
+// The rows of a CSV text (RFC 4180: quoted cells may hold commas, quotes and newlines).
+std::vector<std::vector<std::string>> parseCsv(const std::string& text);
+
+// Brings the vy_settled and t_settled cells of sweepDir/results.csv up to date with each ok case's
+// summary.json (after `wiggle rate --write`), inserting the two columns after vy_slope in a file
+// written before they existed; every other cell stays as it was. Written atomically.
+void refreshSettledColumns(const std::string& sweepDir);
 
 }  // namespace wiggle

@@ -38,7 +38,4 @@ std::string formatSweepStatus(const SweepStatus& status);
 // fraction null unless a running case's log says how far it got).
 std::string sweepStatusJson(const SweepStatus& status);
 
-// The rows of a CSV text (RFC 4180: quoted cells may hold commas, quotes and newlines).
-std::vector<std::vector<std::string>> parseCsv(const std::string& text);
-
 }  // namespace wiggle

@@ -57,6 +57,8 @@ std::string TaskOutcome::toJson() const {
   j["status"] = result.status;
   j["vy"] = result.vy;
   j["vy_slope"] = result.vySlope;
+  j["vy_settled"] = result.vySettled;
+  j["t_settled"] = result.tSettled;
   j["wall_s"] = result.wallSeconds;
   j["ns_per_particle_step"] = result.nsPerParticleStep;
   j["run_wall_s"] = result.runWallSeconds;
@@ -79,6 +81,8 @@ TaskOutcome TaskOutcome::fromJson(const std::string& text) {
   o.result.status = j.at("status").get<std::string>();
   o.result.vy = j.at("vy").get<double>();
   o.result.vySlope = j.at("vy_slope").get<double>();
+  o.result.vySettled = j.at("vy_settled").get<double>();
+  o.result.tSettled = j.at("t_settled").get<double>();
   o.result.wallSeconds = j.at("wall_s").get<double>();
   o.result.nsPerParticleStep = j.at("ns_per_particle_step").get<double>();
   o.result.runWallSeconds = j.at("run_wall_s").get<double>();
@@ -272,8 +276,7 @@ void runSweepCase(const std::string& configPath, const std::string& runDir, int 
   options.resume = true;
   options.progressLine = false;
   const RunOutcome outcome = runExperiment(prepareCase(config), options);
-  std::printf("V_y = %.6g (least-squares slope %.6g); summary in %s\n", outcome.vy, outcome.vySlope,
-              outcome.summaryPath.c_str());
+  std::printf("%s\n", outcome.resultLine().c_str());
   for (const std::string& w : outcome.warnings) std::fprintf(stderr, "wiggle: warning: %s\n", w.c_str());
 }
 

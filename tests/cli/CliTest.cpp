@@ -275,6 +275,42 @@ TEST_F(Cli, RunCheckPrintsWhatTheRunWouldBeAndWritesNothing) {
   EXPECT_TRUE(workIsEmpty());
 }
 
+// `wiggle rate` on a run just made: the run's own window gives the summary's vy again (from
+// trajectory.csv's 10 digits), as a CSV row; --write records vy_settled; bad options and paths are
+// one line with status 2, and write nothing.
+TEST_F(Cli, RateMeasuresAFinishedRunAgainAndRecordsTheSettledRate) {
+  Result r = wiggle("run " + quoted(tinyConfig()) + " --set run.duration=0.2 --out run --threads 1");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string summaryBefore = slurp(work_ / "run" / "summary.json");
+  r = wiggle("rate run");
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::istringstream table(r.out);
+  std::string header, row;
+  std::getline(table, header);
+  std::getline(table, row);
+  EXPECT_EQ(header, "run,period,t_i,t_f,vy,plateau,t_settled,vy_settled,settled");
+  std::vector<std::string> cells;
+  std::istringstream cellsIn(row);
+  for (std::string cell; std::getline(cellsIn, cell, ',');) cells.push_back(cell);
+  ASSERT_EQ(cells.size(), 9u) << row;
+  EXPECT_EQ(cells[0], "run");
+  const std::string summary = slurp(work_ / "run" / "summary.json");
+  const std::size_t at = summary.find("\"vy\": ");
+  ASSERT_NE(at, std::string::npos);
+  EXPECT_NEAR(std::stod(cells[4]), std::stod(summary.substr(at + 6)), 1e-8);
+  EXPECT_EQ(summary, summaryBefore);  // without --write nothing is written
+
+  expectOneLineError(wiggle("rate run --band 0"), {"--band", "positive"}, "band 0");
+  expectOneLineError(wiggle("rate run --write --to 0.1"), {"--write", "--to"}, "write with a window");
+  expectOneLineError(wiggle("rate run --to 5"), {"--to 5", "past the end"}, "window past the end");
+  expectOneLineError(wiggle("rate nowhere"), {"nowhere", "no such directory"}, "missing directory");
+  EXPECT_EQ(slurp(work_ / "run" / "summary.json"), summaryBefore);
+
+  r = wiggle("rate run --write");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(slurp(work_ / "run" / "summary.json").find("\"vy_settled\""), std::string::npos);
+}
+
 }  // namespace
 
 namespace wiggle {

@@ -3,6 +3,9 @@
 // rest (and continued to the same bits after a stop).
 #include <gtest/gtest.h>
 
+#include <omp.h>
+#include <unistd.h>
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <csignal>
@@ -10,8 +13,7 @@
 #include <filesystem>
 #include <map>
 #include <numbers>
-#include <omp.h>
-#include <unistd.h>
+#include <tuple>
 
 #include "core/Error.h"
 #include "core/StopSignal.h"
@@ -365,7 +367,7 @@ TEST(BedMaker, PaperDepthSweepsRunOnThePresetsBeds) {
   int compared = 0;
   for (const char* file : {"paper_depth_box.toml", "paper_depth_seeds.toml", "paper_depth_table1.toml",
                            "paper_depth_runlength.toml", "paper_depth_table1_bed2.toml", "paper_depth_fig5.toml",
-                           "paper_depth_fig5_bed2.toml"}) {
+                           "paper_depth_fig5_bed2.toml", "paper_depth_t1000.toml", "paper_depth_fig2_t1000.toml"}) {
     for (const SweepCase& c : loadSweepSpec(root + "sweeps/" + file).cases) {
       RunConfig expected = preset;
       expected.box.width = c.config.box.width;
@@ -377,6 +379,29 @@ TEST(BedMaker, PaperDepthSweepsRunOnThePresetsBeds) {
     }
   }
   EXPECT_GE(compared, 30);
+}
+
+TEST(BedMaker, TheT1000StudiesAreTheT100StudiesRunLonger) {
+  // results/paper_depth/table1_t1000 (and fig2_t1000) read their first t = 100 as table1's (fig5's)
+  // runs, the same bits, and continue those runs' checkpoints when they are at hand: each case must
+  // be the shorter sweep's case of the same name but for run.duration.
+  const std::string root = std::string(WIGGLE_SOURCE_DIR) + "/configs/sweeps/";
+  for (const auto& [shorter, longer, count] :
+       {std::tuple{"paper_depth_table1.toml", "paper_depth_t1000.toml", 15u},
+        std::tuple{"paper_depth_fig5.toml", "paper_depth_fig2_t1000.toml", 10u}}) {
+    const SweepSpec base = loadSweepSpec(root + shorter);
+    const SweepSpec extended = loadSweepSpec(root + longer);
+    EXPECT_EQ(extended.cases.size(), count) << longer;
+    for (const SweepCase& c : extended.cases) {
+      const auto same =
+          std::find_if(base.cases.begin(), base.cases.end(), [&](const SweepCase& t) { return t.name == c.name; });
+      ASSERT_NE(same, base.cases.end()) << longer << ": " << c.name;
+      EXPECT_EQ(c.config.run.duration, 1000.0) << c.name;
+      RunConfig expected = same->config;
+      expected.run.duration = c.config.run.duration;
+      EXPECT_EQ(toToml(c.config), toToml(expected)) << longer << ": " << c.name;
+    }
+  }
 }
 
 }  // namespace

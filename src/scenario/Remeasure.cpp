@@ -1,0 +1,59 @@
+#include "scenario/Remeasure.h"
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "core/Error.h"
+#include "core/Format.h"
+#include "io/AtomicFile.h"
+#include "io/Config.h"
+#include "scenario/Case.h"
+
+namespace wiggle {
+
+Remeasured remeasureRun(const std::string& runDir, const RemeasureRequest& request) {
+  const std::string configPath = runDir + "/config.toml";
+  const std::string trajectoryPath = runDir + "/trajectory.csv";
+  if (!std::filesystem::is_regular_file(configPath)) throw Error(runDir + ": no config.toml: not a run directory");
+  if (!std::filesystem::is_regular_file(trajectoryPath))
+    throw Error(runDir + ": no trajectory.csv: the run has not finished");
+  // The case, for its surfaced height (the plateau rule) as the run worked it out.
+  const Case run = prepareCase(parseRunConfig(readFile(configPath), configPath));
+  const std::vector<TrajectorySample> samples = readTrajectoryCsv(trajectoryPath);
+
+  Remeasured r;
+  r.period = run.config.drive.period;
+  const double end = samples.back().t;
+  r.window.to = request.to.value_or(run.config.run.duration);
+  r.window.from = request.from.value_or(paperWindow(r.window.to).from);
+  if (r.window.to > end + 1e-9 * std::max(1.0, end))
+    throw Error("--to " + formatNumber(r.window.to) + " is past the end of " + trajectoryPath +
+                " (t = " + formatNumber(end) + ")");
+  if (r.window.from < samples.front().t)
+    throw Error("--from " + formatNumber(r.window.from) + " is before the start of " + trajectoryPath);
+  r.rate = measureRiseRate(samples, r.window, r.period, run.surfacedHeight);
+  r.settled = measureSettledRate(samples, r.window, r.period, r.rate, request.rule);
+  return r;
+}
+
+void recordSettled(const std::string& runDir, const SettledRate& settled, const SettleRule& rule) {
+  const std::string path = runDir + "/summary.json";
+  if (!std::filesystem::is_regular_file(path)) throw Error(runDir + ": no summary.json: the run has not finished");
+  nlohmann::json summary;
+  try {
+    summary = nlohmann::json::parse(readFile(path));
+  } catch (const nlohmann::json::exception& e) {
+    throw Error(path + " is not valid JSON: " + e.what());
+  }
+  if (!summary.is_object()) throw Error(path + ": expected a JSON object");
+  // Unsettled, the rule reports the run's own vy and t_f: those in the file, not their values
+  // recomputed from trajectory.csv's 10 digits, so that the two columns are equal to the bit.
+  const bool own = !settled.settled && summary.contains("vy") && summary.contains("t_f");
+  summary["vy_settled"] = own ? summary["vy"] : nlohmann::json(settled.vy);
+  summary["t_settled"] = own ? summary["t_f"] : nlohmann::json(settled.tSettled);
+  summary["settled"] = settled.settled;
+  summary["settle_band"] = rule.band;
+  writeFileAtomically(path, summary.dump(2) + "\n");
+}
+
+}  // namespace wiggle

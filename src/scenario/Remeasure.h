@@ -1,0 +1,33 @@
+#pragma once
+// V_y after the fact: both rules (analysis/RiseRate.h) measured again from a finished run's
+// trajectory.csv and config.toml, over its own window or any other (`wiggle rate`), and the settle
+// rule's result recorded into a summary.json written before the rule existed.
+#include <optional>
+#include <string>
+
+#include "analysis/RiseRate.h"
+
+namespace wiggle {
+
+struct RemeasureRequest {
+  std::optional<double> from, to;  // t_i and the end of the data used; default 0.1 x `to` and the run's end
+  SettleRule rule;
+  bool isRunsOwn() const { return !from && !to && rule.band == SettleRule{}.band; }
+};
+
+struct Remeasured {
+  double period = 0.0;
+  RateWindow window;
+  RiseRate rate;
+  SettledRate settled;
+};
+
+// Reads runDir/config.toml and runDir/trajectory.csv. Throws wiggle::Error naming the file or the
+// option at fault (a window outside the run, a band that is not positive).
+Remeasured remeasureRun(const std::string& runDir, const RemeasureRequest& request);
+
+// Sets vy_settled, t_settled, settled and settle_band in runDir/summary.json (atomically; every
+// other key as it was; unsettled, vy_settled and t_settled are the file's own vy and t_f). Throws wiggle::Error when there is no summary.json: the run has not finished.
+void recordSettled(const std::string& runDir, const SettledRate& settled, const SettleRule& rule);
+
+}  // namespace wiggle
