@@ -3,6 +3,7 @@
 #include "model/CavityModel.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
@@ -215,7 +216,8 @@ TEST(CavityModelCommand, AsymmetricSidesAndRates) {
 }
 
 TEST(CavityModelCommand, GeometryJsonAndErrors) {
-  const auto path = std::filesystem::temp_directory_path() / "wiggle_model_test_geometry.json";
+  const auto path =
+      std::filesystem::temp_directory_path() / ("wiggle_model_test_geometry-" + std::to_string(::getpid()) + ".json");
   std::filesystem::remove(path);
   int status = -1;
   runWiggle("model --shape triangle --geometry " + path.string(), &status);

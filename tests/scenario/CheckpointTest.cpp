@@ -1,4 +1,5 @@
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -22,7 +23,9 @@ std::string readAll(const std::string& path) {
 // A checkpoint of a two-grain world written with `storedToml` as its config text, read back
 // against `config`.
 Checkpoint roundTrip(const std::string& storedToml, const RunConfig& config) {
-  const std::string dir = (std::filesystem::temp_directory_path() / "wiggle_checkpoint_test").string();
+  // One directory per process: ctest runs this file's tests in parallel processes.
+  const std::string dir =
+      (std::filesystem::temp_directory_path() / ("wiggle_checkpoint_test-" + std::to_string(::getpid()))).string();
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   WorldDef def;
@@ -31,7 +34,9 @@ Checkpoint roundTrip(const std::string& storedToml, const RunConfig& config) {
   world.addGrain(2.0, 2.0, 0.5);
   world.addGrain(5.0, 2.0, 0.5);
   writeCheckpoint(dir, storedToml, world, RunState{}, FieldObserver(config.fields, config.box.width));
-  return parseCheckpoint(readAll(checkpointPath(dir)), "checkpoint.bin", config, toToml(config));
+  const std::string bytes = readAll(checkpointPath(dir));
+  std::filesystem::remove_all(dir);
+  return parseCheckpoint(bytes, "checkpoint.bin", config, toToml(config));
 }
 
 std::string withoutLine(std::string text, const std::string& start) {
