@@ -38,6 +38,7 @@ struct DriveDef {
   double amplitude = 3.0;      // drive.amplitude: A [d]
   double period = 5.0;         // drive.period: T [sqrt(d/g)]
   std::uint64_t rampPeriods = 0;  // drive.ramp_periods: A grows from 0 over n periods (0: none; docs/PHYSICS.md §7)
+  std::string form = "displacement";  // drive.form: displacement|velocity, how A and T make x(t) (docs/PHYSICS.md §7)
 };
 
 struct BedDef {

@@ -21,13 +21,14 @@ enum class HorizontalMotion : std::uint8_t {
   Sinusoid,          // x = x0 + A sin(2 pi t / T), vx = (2 pi A / T) cos(2 pi t / T)
   ConstantVelocity,  // x = x0 + v t, vx = v
   RampedSinusoid,    // x = x0 + A min(1, t / t_ramp) sin(2 pi t / T): from rest, Sinusoid after t_ramp
+  VelocitySinusoid,  // vx = A sin(2 pi t / T), x = x0 + (A T / 2 pi)(1 - cos(2 pi t / T)): A a speed, from rest
 };
 
 struct ClumpMotion {
   HorizontalMotion kind = HorizontalMotion::Held;
   double x0 = 0.0;         // centre of the motion [d]
-  double amplitude = 0.0;  // A [d] (Sinusoid)
-  double period = 1.0;     // T [sqrt(d/g)] (Sinusoid)
+  double amplitude = 0.0;  // A [d] (Sinusoid, RampedSinusoid); [sqrt(g d)] (VelocitySinusoid)
+  double period = 1.0;     // T [sqrt(d/g)] (the sinusoids)
   double velocity = 0.0;   // [sqrt(g d)] (ConstantVelocity)
   bool verticalFree = false;  // false: y held, vy = 0 (while the bed is made)
   double rampTime = 0.0;   // t_ramp [sqrt(d/g)] (RampedSinusoid); a whole number of periods keeps vx
@@ -58,6 +59,10 @@ struct ClumpMotion {
                 amplitude * (scale * w * std::cos(w * t) + growth * std::sin(w * t))};
       }
       case HorizontalMotion::ConstantVelocity: return {x0 + velocity * t, velocity};
+      case HorizontalMotion::VelocitySinusoid: {
+        const double w = omega();
+        return {x0 + amplitude / w * (1.0 - std::cos(w * t)), amplitude * std::sin(w * t)};
+      }
     }
     return {x0, 0.0};
   }

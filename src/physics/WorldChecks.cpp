@@ -29,6 +29,7 @@ double World::peakDriveSpeed() const {
     case HorizontalMotion::Sinusoid: return motion_.amplitude * omega;
     case HorizontalMotion::RampedSinusoid: return motion_.amplitude * (omega + 1.0 / motion_.rampTime);  // a bound
     case HorizontalMotion::ConstantVelocity: return std::fabs(motion_.velocity);
+    case HorizontalMotion::VelocitySinusoid: return std::fabs(motion_.amplitude);
   }
   return 0.0;
 }

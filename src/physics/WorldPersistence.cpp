@@ -186,7 +186,8 @@ void readIntruder(BinaryReader& in, std::size_t particles, IntruderPairs& ip, bo
   state.contactFx = in.value<double>();
   state.contactFy = in.value<double>();
   const auto kind = in.value<std::uint8_t>();
-  if (kind > 3) throw Error(in.what() + " is corrupt: unknown intruder motion");
+  if (kind > static_cast<std::uint8_t>(HorizontalMotion::VelocitySinusoid))
+    throw Error(in.what() + " is corrupt: unknown intruder motion");
   motion.kind = static_cast<HorizontalMotion>(kind);
   motion.x0 = in.value<double>();
   motion.amplitude = in.value<double>();

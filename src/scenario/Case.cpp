@@ -23,6 +23,25 @@ std::uint64_t stepsOf(double interval, double dt, const char* key) {
   return steps;
 }
 
+}  // namespace
+
+HorizontalMotion driveKind(const DriveDef& drive) {
+  if (drive.form == "velocity") {
+    if (drive.rampPeriods > 0)
+      throw Error("drive.ramp_periods = " + std::to_string(drive.rampPeriods) +
+                  " needs drive.form = \"displacement\": the velocity form starts from rest already");
+    return HorizontalMotion::VelocitySinusoid;
+  }
+  return drive.rampPeriods > 0 ? HorizontalMotion::RampedSinusoid : HorizontalMotion::Sinusoid;
+}
+
+double displacementAmplitude(const DriveDef& drive, double period) {
+  return driveKind(drive) == HorizontalMotion::VelocitySinusoid ? drive.amplitude * period / (2.0 * std::numbers::pi)
+                                                                : drive.amplitude;
+}
+
+namespace {
+
 void checkGeometry(const RunConfig& config, const ClumpDef& clump) {
   constexpr double kMaxGrains = 5e7;
   if (const double grains = estimatedGrains(config); grains > kMaxGrains)
@@ -38,10 +57,11 @@ void checkGeometry(const RunConfig& config, const ClumpDef& clump) {
   const double width = maxX - minX;
   // Room for the intruder's sweep plus a few grain diameters between its images across the
   // periodic boundary, so it never meets itself.
-  const double needed = width + 2.0 * config.drive.amplitude + 4.0 * config.grains.dMax;
+  const double swing = displacementAmplitude(config.drive, config.drive.period);
+  const double needed = width + 2.0 * swing + 4.0 * config.grains.dMax;
   if (config.box.width < needed)
-    throw Error("box.width = " + formatNumber(config.box.width) + " is too narrow for the " + config.intruder.shape + " (" +
-                formatNumber(width) + " wide) moving +-" + formatNumber(config.drive.amplitude) + ": need at least " +
+    throw Error("box.width = " + formatNumber(config.box.width) + " is too narrow for the " + config.intruder.shape +
+                " (" + formatNumber(width) + " wide) moving +-" + formatNumber(swing) + ": need at least " +
                 formatNumber(std::ceil(needed)));
   const double bottom = config.intruder.y0 + minY, top = config.intruder.y0 + maxY;
   if (bottom < 0.5 + 2.0 * config.grains.dMax)
@@ -78,7 +98,7 @@ Case prepareCase(const RunConfig& config) {
   if (!config.bed.file.empty() && !std::filesystem::is_regular_file(config.bed.file))
     throw Error("bed.file = " + config.bed.file + ": no such file");
 
-  c.drive.kind = config.drive.rampPeriods > 0 ? HorizontalMotion::RampedSinusoid : HorizontalMotion::Sinusoid;
+  c.drive.kind = driveKind(config.drive);
   c.drive.x0 = 0.5 * config.box.width;
   c.drive.amplitude = config.drive.amplitude;
   c.drive.period = config.drive.period;

@@ -47,6 +47,15 @@ struct Case {
 // grains below and above; the bed must not be absurdly large. Throws wiggle::Error naming the key.
 Case prepareCase(const RunConfig& config);
 
+// The drive's horizontal motion once the run starts (docs/PHYSICS.md §7): the sinusoid of
+// drive.form, ramped when drive.ramp_periods > 0 (displacement form only).
+HorizontalMotion driveKind(const DriveDef& drive);
+
+// How far the intruder swings either side of the centre of its motion at drive period `period`:
+// A with drive.form = "displacement"; A T / (2 pi) with "velocity" (x goes from x0 to x0 + A T / pi
+// and back). The box must hold twice this; the cavity model's amplitude is this.
+double displacementAmplitude(const DriveDef& drive, double period);
+
 // Releases the bed's intruder into the case's drive, y free, with the clock at t = 0.
 void startDrive(World& world, const Case& c);
 

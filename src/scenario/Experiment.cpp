@@ -63,18 +63,19 @@ void writeModel(const std::string& path, const RunConfig& config, const Shape& s
   j["l_right"] = g.right.l;
   j["T_rise_left"] = g.left.tRise;
   j["T_rise_right"] = g.right.tRise;
+  // The model's amplitude is the swing either side of the motion's centre: drive.amplitude in the
+  // displacement form, A T / 2 pi in the velocity form (so it varies along the curve).
+  auto modelRate = [&](double period) {
+    const double amplitude = displacementAmplitude(config.drive, period);
+    return 0.5 * (cavityRiseRate(g, g.left, period, amplitude) + cavityRiseRate(g, g.right, period, amplitude));
+  };
   j["amplitude"] = config.drive.amplitude;
+  j["drive_form"] = config.drive.form;
   j["period"] = config.drive.period;  // the period vy_at_period is for
   nlohmann::json curve = nlohmann::json::array();
-  for (int k = 1; k <= 120; ++k) {
-    const double period = 0.1 * k;
-    const double vy = 0.5 * (cavityRiseRate(g, g.left, period, config.drive.amplitude) +
-                             cavityRiseRate(g, g.right, period, config.drive.amplitude));
-    curve.push_back({period, vy});
-  }
+  for (int k = 1; k <= 120; ++k) curve.push_back({0.1 * k, modelRate(0.1 * k)});
   j["curve"] = curve;
-  j["vy_at_period"] = 0.5 * (cavityRiseRate(g, g.left, config.drive.period, config.drive.amplitude) +
-                             cavityRiseRate(g, g.right, config.drive.period, config.drive.amplitude));
+  j["vy_at_period"] = modelRate(config.drive.period);
   writeFileAtomically(path, j.dump(2) + "\n");
 }
 

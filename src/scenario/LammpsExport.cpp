@@ -104,6 +104,7 @@ std::string lammpsInput(const World& world, const RunConfig& config, const RunSc
   const ClumpDef& clump = world.clump();
   const ClumpMotion& motion = world.intruderMotion();
   const bool ramped = motion.kind == HorizontalMotion::RampedSinusoid;
+  const bool velocityForm = motion.kind == HorizontalMotion::VelocitySinusoid;
   const double meanOffsetX = meanOffset[0], meanOffsetY = meanOffset[1];
   std::string in;
   const ContactParams& p = def.contact;
@@ -135,7 +136,10 @@ std::string lammpsInput(const World& world, const RunConfig& config, const RunSc
   in += "timestep " + num(def.dt) + "\n\n";
   in += ramped ? "# Drive: x(t) = x0 + A s(t) sin(w t), s = min(1, t / t_ramp), vx = A (s w cos(w t) + s' sin(w t)),\n"
                  "# t = step dt from 0 (as wiggle).\n"
-               : "# Drive: x(t) = x0 + A sin(w t), vx = A w cos(w t), t = step dt from 0 (as wiggle).\n";
+        : velocityForm
+            ? "# Drive (drive.form = velocity): vx = A sin(w t), x(t) = x0 + (A / w)(1 - cos(w t)), t = step dt\n"
+              "# from 0 (as wiggle).\n"
+            : "# Drive: x(t) = x0 + A sin(w t), vx = A w cos(w t), t = step dt from 0 (as wiggle).\n";
   in += "variable w equal " + num(omega) + "\n";
   if (ramped) {
     // As World::placeIntruder's ramp: s = t / t_ramp until t_ramp, then 1; ds/dt = 1 / t_ramp, then 0.
@@ -144,6 +148,9 @@ std::string lammpsInput(const World& world, const RunConfig& config, const RunSc
     in += "variable ds equal (step*dt<v_ramp)/v_ramp\n";
     in += "variable dx equal " + num(motion.amplitude) + "*v_s*sin(v_w*(step*dt))\n";
     in += "variable vx equal " + num(motion.amplitude) + "*(v_s*v_w*cos(v_w*(step*dt))+v_ds*sin(v_w*(step*dt)))\n";
+  } else if (velocityForm) {
+    in += "variable dx equal " + num(motion.amplitude) + "/v_w*(1-cos(v_w*(step*dt)))\n";
+    in += "variable vx equal " + num(motion.amplitude) + "*sin(v_w*(step*dt))\n";
   } else {
     in += "variable dx equal " + num(motion.amplitude) + "*sin(v_w*(step*dt))\n";
     in += "variable vx equal " + num(motion.amplitude) + "*v_w*cos(v_w*(step*dt))\n";
@@ -184,8 +191,9 @@ std::string lammpsInput(const World& world, const RunConfig& config, const RunSc
 LammpsDeck makeLammpsDeck(const World& world, const Case& run) {
   if (!world.hasIntruder()) throw Error("export-lammps: the world has no intruder");
   const ClumpMotion& motion = world.intruderMotion();
-  const bool ramped = motion.kind == HorizontalMotion::RampedSinusoid;
-  if ((motion.kind != HorizontalMotion::Sinusoid && !ramped) || !motion.verticalFree)
+  const bool sinusoid = motion.kind == HorizontalMotion::Sinusoid || motion.kind == HorizontalMotion::RampedSinusoid ||
+                        motion.kind == HorizontalMotion::VelocitySinusoid;
+  if (!sinusoid || !motion.verticalFree)
     throw Error("export-lammps: the intruder must be driven sinusoidally with y free");
   if (world.stepCount() != 0) throw Error("export-lammps: the world's clock must be at t = 0");
   LammpsDeck deck;

@@ -60,6 +60,7 @@ std::vector<std::string> differingFields(const RunConfig& a, const RunConfig& b)
   num("drive.amplitude", a.drive.amplitude, b.drive.amplitude);
   num("drive.period", a.drive.period, b.drive.period);
   other("drive.rampPeriods", a.drive.rampPeriods == b.drive.rampPeriods);
+  other("drive.form", a.drive.form == b.drive.form);
   num("bed.batchHeight", a.bed.batchHeight, b.bed.batchHeight);
   other("bed.pour", a.bed.pour == b.bed.pour);
   other("bed.cavity", a.bed.cavity == b.bed.cavity);
@@ -118,6 +119,7 @@ const std::vector<std::tuple<std::string, std::string, std::string>>& everyKey()
       {"drive.amplitude", "1", "drive.amplitude"},
       {"drive.period", "2", "drive.period"},
       {"drive.ramp_periods", "3", "drive.rampPeriods"},
+      {"drive.form", "velocity", "drive.form"},
       {"bed.batch_height", "10", "bed.batchHeight"},
       {"bed.pour", "random", "bed.pour"},
       {"bed.cavity", "carved", "bed.cavity"},
@@ -166,7 +168,7 @@ TEST(Config, KeyListIsExactlyTheSpecKeys) {
   std::set<std::string> expected;
   for (const auto& [key, value, field] : everyKey()) expected.insert(key);
   const std::vector<std::string> keys = configKeys();
-  EXPECT_EQ(keys.size(), 48u);
+  EXPECT_EQ(keys.size(), 49u);
   EXPECT_EQ(std::set<std::string>(keys.begin(), keys.end()), expected);
 }
 

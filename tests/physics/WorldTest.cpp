@@ -442,6 +442,27 @@ TEST(World, RampedDriveStartsFromRestAndBecomesTheSinusoid) {
   expectDrive(1.0, 0.0);
 }
 
+TEST(World, VelocityDriveHasItsPeakSpeedAndContinuesBitForBit) {
+  World a = makePile(10, 6, 11);
+  a.run(2000);
+  a.setIntruder(ClumpDef{{-0.25, 0.25}, {0.0, 0.0}, 0.25, 3.0}, 5.0, 12.0);
+  a.setIntruderMotion({HorizontalMotion::VelocitySinusoid, 5.0, 1.5, 0.5, 0.0, true, 0.0});
+  a.resetClock();
+  EXPECT_EQ(a.peakDriveSpeed(), 1.5);  // A itself, not 2 pi A / T
+  a.run(3000);
+  const double w = 2.0 * std::numbers::pi / 0.5;
+  EXPECT_NEAR(a.intruder().x, 5.0 + 1.5 / w * (1 - std::cos(w * a.time())), 1e-12);
+  EXPECT_NEAR(a.intruder().vx, 1.5 * std::sin(w * a.time()), 1e-12);
+  BinaryWriter out;
+  a.save(out);
+  BinaryReader in(out.bytes().data(), out.bytes().size(), "test state");
+  World b = World::load(in);
+  EXPECT_EQ(b.intruderMotion().kind, HorizontalMotion::VelocitySinusoid);
+  a.run(5000);
+  b.run(5000);
+  EXPECT_EQ(a.stateHash(), b.stateHash());
+}
+
 TEST(World, RampedDriveSavedMidRampContinuesBitForBit) {
   World a = makePile(10, 6, 11);
   a.run(2000);

@@ -365,9 +365,10 @@ TEST(BedMaker, PaperDepthSweepsRunOnThePresetsBeds) {
   const RunConfig preset = loadRunConfig(root + "paper_depth.toml", {});
   EXPECT_EQ(preset.box.bedHeight - preset.intruder.y0, 105.0);  // the paper's depth
   int compared = 0;
-  for (const char* file : {"paper_depth_box.toml", "paper_depth_seeds.toml", "paper_depth_table1.toml",
-                           "paper_depth_runlength.toml", "paper_depth_table1_bed2.toml", "paper_depth_fig5.toml",
-                           "paper_depth_fig5_bed2.toml", "paper_depth_t1000.toml", "paper_depth_fig2_t1000.toml"}) {
+  for (const char* file :
+       {"paper_depth_box.toml", "paper_depth_seeds.toml", "paper_depth_table1.toml", "paper_depth_runlength.toml",
+        "paper_depth_table1_bed2.toml", "paper_depth_fig5.toml", "paper_depth_fig5_bed2.toml", "paper_depth_t1000.toml",
+        "paper_depth_fig2_t1000.toml", "paper_depth_velocity.toml"}) {
     for (const SweepCase& c : loadSweepSpec(root + "sweeps/" + file).cases) {
       RunConfig expected = preset;
       expected.box.width = c.config.box.width;

@@ -52,6 +52,43 @@ TEST(Case, DriveIsTheSinusoidAboutTheBoxCentre) {
   EXPECT_DOUBLE_EQ(ramped.drive.at(4.5).x, x0 + 3.0 * std::sin(w * 4.5));  // past the ramp: the plain drive
 }
 
+// drive.form = "velocity": the paper's formula read as a velocity (docs/PHYSICS.md §7).
+TEST(Case, VelocityFormDrivesVxAsTheSinusoidFromRest) {
+  RunConfig config;
+  config.drive.amplitude = 3.0;
+  config.drive.period = 2.0;
+  config.drive.form = "velocity";
+  const Case c = prepareCase(config);
+  EXPECT_EQ(c.drive.kind, HorizontalMotion::VelocitySinusoid);
+  const double x0 = 0.5 * config.box.width, w = std::numbers::pi;
+  for (double t : {0.0, 0.3, 0.5, 1.0, 1.7}) {
+    EXPECT_DOUBLE_EQ(c.drive.at(t).x, x0 + 3.0 / w * (1 - std::cos(w * t))) << t;
+    EXPECT_DOUBLE_EQ(c.drive.at(t).vx, 3.0 * std::sin(w * t)) << t;
+  }
+  EXPECT_EQ(c.drive.at(0).vx, 0.0);                                    // from rest
+  EXPECT_NEAR(c.drive.at(1.0).x, x0 + 6.0 / std::numbers::pi, 1e-12);  // the far end: A T / pi
+  // The swing either side of the motion's centre, A T / 2 pi, is what the box must hold twice and
+  // what the cavity model reads as its amplitude.
+  EXPECT_DOUBLE_EQ(displacementAmplitude(config.drive, 2.0), 3.0 / std::numbers::pi);
+  EXPECT_DOUBLE_EQ(displacementAmplitude(config.drive, 8.0), 12.0 / std::numbers::pi);
+  config.drive.form = "displacement";
+  EXPECT_DOUBLE_EQ(displacementAmplitude(config.drive, 8.0), 3.0);
+  // The box check uses that swing: A = 3 at T = 60 swings 28.6 d either side, too much for the
+  // 60 d box with the 7 d disk (the displacement form's +-3 d fits).
+  config.drive.form = "velocity";
+  config.drive.period = 60.0;
+  try {
+    prepareCase(config);
+    ADD_FAILURE() << "a 60 d box accepted a swing of 2 x 28.6 d";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("moving +-28.6479"), std::string::npos) << e.what();
+  }
+  // A ramp is for the displacement form only: the velocity form starts from rest already.
+  config.drive.period = 2.0;
+  config.drive.rampPeriods = 2;
+  EXPECT_THROW(prepareCase(config), Error);
+}
+
 TEST(Case, SurfacedHeightIsTwoGrainsBelowTheSurfaceAtTheIntrudersTop) {
   RunConfig config;  // the disk: radius 3.5, its atoms reach the outline
   const Case c = prepareCase(config);

@@ -223,16 +223,15 @@ bool haveLammps() { return std::system("command -v lmp > /dev/null 2>&1") == 0; 
 // Exports a tiny bed (about 220 grains around the 7-wide disk, made once and cached under the
 // test's temporary directory) with drive.ramp_periods = `rampPeriods`, runs the deck in LAMMPS for
 // 2,000 steps (t = 0.2) of the drive at A = 3, T = 2 and compares its intruder with wiggle's.
-void expectLammpsFollowsWiggle(const std::string& rampPeriods) {
+void expectLammpsFollowsWiggle(const std::string& rampPeriods, const std::string& form = "displacement") {
   const fs::path root = fs::path(testing::TempDir()) / "wiggle-lammps-export";
   fs::create_directories(root);
-  RunConfig config = loadRunConfig(std::nullopt, {"box.width=20", "box.bed_height=14", "box.seed=7",
-                                                  "intruder.y0=7", "drive.amplitude=3", "drive.period=2",
-                                                  "drive.ramp_periods=" + rampPeriods,
-                                                  "run.duration=0.2", "run.sample_interval=0.01",
-                                                  "run.dump_interval=0", "bed.rest_energy=1e-6"});
+  RunConfig config = loadRunConfig(
+      std::nullopt, {"box.width=20", "box.bed_height=14", "box.seed=7", "intruder.y0=7", "drive.amplitude=3",
+                     "drive.period=2", "drive.ramp_periods=" + rampPeriods, "drive.form=" + form, "run.duration=0.2",
+                     "run.sample_interval=0.01", "run.dump_interval=0", "bed.rest_energy=1e-6"});
   config.bed.cacheDir = (root / "cache").string();
-  const std::string dir = (root / ("deck-ramp" + rampPeriods)).string();
+  const std::string dir = (root / ("deck-ramp" + rampPeriods + "-" + form)).string();
   fs::remove_all(dir);
   const LammpsExportResult exported = exportLammps(prepareCase(config), dir, false);
   ASSERT_EQ(exported.deck.steps, 2000u);
@@ -295,6 +294,11 @@ TEST(LammpsExport, SlowLammpsRunOfTheDeckFollowsWiggle) {
 TEST(LammpsExport, SlowLammpsRunOfARampedDriveFollowsWiggle) {
   if (!haveLammps()) GTEST_SKIP() << "lmp (LAMMPS) not found: apt-get install lammps to run this comparison";
   expectLammpsFollowsWiggle("1");  // the whole window is inside the ramp (t_ramp = T = 2)
+}
+
+TEST(LammpsExport, SlowLammpsRunOfAVelocityDriveFollowsWiggle) {
+  if (!haveLammps()) GTEST_SKIP() << "lmp (LAMMPS) not found: apt-get install lammps to run this comparison";
+  expectLammpsFollowsWiggle("0", "velocity");  // vx = 3 sin(pi t): the deck's fix move variable
 }
 
 }  // namespace
