@@ -16,7 +16,14 @@ a column, which value (default `vy`, the paper's rule). Cases of one cell that d
 bed (box.seed) are beds of that cell: the cell gives the number of beds and, from two beds on, the
 mean and the standard error of the mean (the standard deviation over sqrt(n)). The same case in two
 folders (same seed and state hash) counts once; two different runs of one cell on the same bed are
-an error. Adding a table is a few lines in TABLES and its two markers in the document.
+an error. Adding a table is a few lines in TABLES and its two markers in the document; for example
+Table 1 read over t = 100-1000 from a folder of t = 1000 runs would be
+
+    shape_by_period("depth_table1_t100_1000", ["results/paper_depth/table1_t1000"], {}, True,
+                    value=chord(100, 1000)),
+
+(`value`: a results.csv column such as "vy", or a function of the case such as chord(t0, t1) or
+slope(t0, t1) over its trajectory.csv).
 
 A case's key is its results.csv column when the sweep varied it, else the value in the case's
 config.toml (every key, as the run resolved it).
@@ -253,10 +260,10 @@ def model_cell(key):
     return cell
 
 
-def shape_by_period(name, sources, where, with_paper):
+def shape_by_period(name, sources, where, with_paper, value="vy"):
     """Table 1 and figure 5: shapes x periods at one amplitude, with the cavity model's periods,
-    the paper's observed T_rising (Table 1 only) and wiggle's."""
-    return {"name": name, "kind": pivot, "sources": sources, "where": where,
+    the paper's observed T_rising (Table 1 only) and wiggle's; `value` as in TABLES."""
+    return {"name": name, "kind": pivot, "sources": sources, "where": where, "value": value,
             "row": "intruder.shape", "col": "drive.period", "rows": None,
             "row_sort": lambda s: (SHAPES.index(s) if s in SHAPES else len(SHAPES), s),
             "row_head": ["shape"],
@@ -389,8 +396,9 @@ TABLES = [
 # A comparison is a cell (the beds of one case: folders and a filter) against another cell or
 # against zero, with the direction the paper's finding predicts. Its difference is counted in
 # standard errors, se = sigma sqrt(1/n_a + 1/n_b) (n: beds; 1/n_b = 0 against zero), where sigma is
-# the standard deviation of one bed at that scale, measured (SIGMA below). The verdict of a finding
-# at a scale: "reproduced" if every comparison goes the paper's way by at least 2 standard errors;
+# the standard deviation of one bed at that scale, measured (sigma() in paper_findings). The verdict
+# of a finding at a scale: "reproduced" if every comparison goes the paper's way by at least 2
+# standard errors (as printed, to 0.1);
 # "not reproduced" if one goes against it by at least 2; "not resolved" otherwise; "not measured"
 # if no committed result bears on it.
 
@@ -433,7 +441,7 @@ def judged(comparison, sig):
     label, a, b, direction = comparison
     diff = mean(a) - (mean(b) if b else 0.0)
     se = sig * math.sqrt(1 / len(a) + (1 / len(b) if b else 0.0))
-    z = direction * diff / se
+    z = round(direction * diff / se, 1)   # judged as printed, to 0.1
     return diff, z, "for" if z >= RESOLVED else "against" if z <= -RESOLVED else "within"
 
 
@@ -475,7 +483,10 @@ def findings_table(spec):
             outcomes = [judged(c, sig) for c in comparisons]
             kinds = [o[2] for o in outcomes]
             against = [f"{c[0]} ({o[1]:+.1f})" for c, o in zip(comparisons, outcomes) if o[2] == "against"]
-            text = (f"{kinds.count('for')} of {len(kinds)} the paper's way by >= {RESOLVED:g} standard errors, "
+            n = sorted({len(c[1]) for c in comparisons} | {len(c[2]) for c in comparisons if c[2]})
+            text = (f"{len(kinds)} comparison{'s' if len(kinds) > 1 else ''} of cases of {n[0]}" + (f"-{n[-1]}" if n[-1] > n[0] else "")
+                    + f" bed{'s' if n[-1] > 1 else ''}: "
+                    f"{kinds.count('for')} the paper's way by >= {RESOLVED:g} standard errors, "
                     f"{kinds.count('within')} within {RESOLVED:g}, {kinds.count('against')} against"
                     + (": " + "; ".join(against) if against else "") + (f" ({note[0]})" if note else "")) \
                 if kinds else "no committed results"
@@ -513,8 +524,8 @@ def sinks_then_rises(sources, label, shapes, **where):
         cell = lambda t: Cell(sources, intruder__shape=shape, drive__period=t, **where)  # noqa: E731
         top = max(ts[1:], key=lambda t: mean(cell(t).values()))
         out.append(compare(f"{shape}, {label}: sinks at T = {ts[0]:g}, its shortest", cell(ts[0]), None, -1))
-        longer = f"T = {ts[1]:g}-{ts[-1]:g}" if len(ts) > 2 else f"T = {ts[1]:g}"
-        out.append(compare(f"{shape}, {label}: rises at T = {top:g}, its largest of {longer}",
+        largest = f", its largest of T = {ts[1]:g}-{ts[-1]:g}" if len(ts) > 2 else ""
+        out.append(compare(f"{shape}, {label}: rises at T = {top:g}{largest}",
                            cell(top), None, +1))
     return out
 
