@@ -20,7 +20,7 @@ def load_tool(name):
 table1_markdown = load_tool("table1_markdown")
 collect = load_tool("collect")
 
-COLUMNS = ["case", "run_dir", "status", "vy", "intruder.shape", "drive.period", "drive.amplitude"]
+COLUMNS = ["case", "run_dir", "status", "vy", "intruder.shape", "drive.period", "drive.amplitude", "box.seed"]
 
 
 def write_folder(root, rows):
@@ -28,8 +28,8 @@ def write_folder(root, rows):
     with open(os.path.join(root, "results.csv"), "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(COLUMNS)
-        for name, status, vy, shape, period, amplitude in rows:
-            w.writerow([name, f"cases/{name}", status, vy, shape, period, amplitude])
+        for name, status, vy, shape, period, amplitude, *seed in rows:
+            w.writerow([name, f"cases/{name}", status, vy, shape, period, amplitude, seed[0] if seed else 1])
             os.makedirs(os.path.join(root, "cases", name), exist_ok=True)
             with open(os.path.join(root, "cases", name, "model.json"), "w") as m:
                 json.dump({"T_rise": 2.83, "T_max": 7.48}, m)
@@ -39,14 +39,14 @@ class TableTest(unittest.TestCase):
     def test_figure5_amplitude_has_no_paper_column_and_averages_beds(self):
         with tempfile.TemporaryDirectory() as root:
             write_folder(root, [("d1", "ok", -0.1, "disk", 1, 3), ("d3a", "ok", 0.02, "disk", 3, 3),
-                                ("d3b", "ok", 0.04, "disk", 3, 3), ("d5", "ok", 0.01, "disk", 5, 3),
+                                ("d3b", "ok", 0.04, "disk", 3, 3, 2), ("d5", "ok", 0.01, "disk", 5, 3),
                                 ("d8", "pending", "", "disk", 8, 3)])
             lines = table1_markdown.table(root).splitlines()
         self.assertNotIn("paper", lines[0])
         self.assertNotIn("T = 8", lines[0])   # the pending case has no column
         cells = [c.strip() for c in lines[2].strip("|").split("|")]
         self.assertEqual(cells[:3], ["disk", "2.83", "7.48"])
-        self.assertEqual(cells[3:6], ["-0.100", "+0.030 (2 beds)", "+0.010"])
+        self.assertEqual(cells[3:6], ["-0.100 (1 bed)", "+0.030 +- 0.010 (2 beds)", "+0.010 (1 bed)"])
         self.assertEqual(cells[7], "1-3")    # sinks at 1, rises from 3: the bracket
         self.assertEqual(cells[-1], "3")     # the largest mean V_y
 

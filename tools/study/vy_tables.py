@@ -1,0 +1,714 @@
+#!/usr/bin/python3
+"""The documents' tables of measured V_y, made from the committed results (results/, and the one
+small-preset results.csv under docs/figures/).
+
+    tools/study/vy_tables.py            rewrite every table in place, between its markers
+    tools/study/vy_tables.py --check    change nothing; exit 1 naming each table that differs
+
+A table sits in its document between two marker lines,
+
+    <!-- vy_tables: NAME -->
+    ...
+    <!-- /vy_tables: NAME -->
+
+and is declared in TABLES below: which result folders, which cases (a filter), what makes a row and
+a column, which value (default `vy`, the paper's rule). Cases of one cell that differ only in their
+bed (box.seed) are beds of that cell: the cell gives the number of beds and, from two beds on, the
+mean and the standard error of the mean (the standard deviation over sqrt(n)). The same case in two
+folders (same seed and state hash) counts once; two different runs of one cell on the same bed are
+an error. Adding a table is a few lines in TABLES and its two markers in the document; for example
+Table 1 read over t = 100-1000 from a folder of t = 1000 runs would be
+
+    shape_by_period("depth_table1_t100_1000", ["results/paper_depth/table1_t1000"], {}, True,
+                    value=chord(100, 1000)),
+
+(`value`: a results.csv column such as "vy", or a function of the case such as chord(t0, t1) or
+slope(t0, t1) over its trajectory.csv).
+
+A case's key is its results.csv column when the sweep varied it, else the value in the case's
+config.toml (every key, as the run resolved it).
+"""
+import csv
+import functools
+import json
+import math
+import os
+import sys
+import tomllib
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+sys.path.insert(0, os.path.join(ROOT, "python"))
+from wiggleplot import prepare  # noqa: E402  (t_rising: the paper's reading of a crossing)
+
+SHAPES = ["disk", "square", "rect_narrow", "rect_wide", "triangle"]
+PAPER_T_RISING = {"disk": "2.5-3.0", "square": "3.0-4.0", "rect_narrow": "3.0-4.0", "rect_wide": "2.0-3.0",
+                  "triangle": "4.0-5.0"}   # the paper's Table 1 (A = 5), observed
+
+
+# Keys added after some of the committed cases were run, with the value every earlier run had.
+LATER_KEYS = {"intruder.surface": "smooth", "intruder.mass_rule": "disk_area", "bed.pour": "lattice",
+              "bed.cavity": "poured", "bed.relax_damping": 0.0}
+
+
+class Case:
+    """One finished case: its results.csv row, and its folder for config.toml, model.json and trajectory.csv."""
+
+    def __init__(self, source, row, case_dir):
+        self.source, self.row, self.dir = source, row, case_dir
+        self._config = self._trajectory = None
+
+    def get(self, key):
+        if self.row.get(key, "") != "":
+            value = self.row[key]
+            try:
+                return float(value)
+            except ValueError:
+                return value
+        if self._config is None:
+            path = os.path.join(self.dir, "config.toml") if self.dir else ""
+            self._config = {}
+            if os.path.exists(path):
+                with open(path, "rb") as f:
+                    self._config = tomllib.load(f)
+        node = self._config
+        for part in key.split("."):
+            if not isinstance(node, dict) or part not in node:
+                if key in LATER_KEYS:
+                    return LATER_KEYS[key]
+                raise KeyError(f"{self.source}: case {self.row['case']} has no {key}")
+            node = node[part]
+        return node
+
+    def trajectory(self):
+        """(t, y) of trajectory.csv."""
+        if self._trajectory is None:
+            with open(os.path.join(self.dir, "trajectory.csv"), newline="") as f:
+                rows = [(float(r["t"]), float(r["y"])) for r in csv.DictReader(f)]
+            self._trajectory = [r[0] for r in rows], [r[1] for r in rows]
+        return self._trajectory
+
+
+@functools.lru_cache(maxsize=None)
+def load(source):
+    """The finished cases of a results folder (or of a results.csv file) under ROOT."""
+    path = os.path.join(ROOT, source)
+    csv_path = path if path.endswith(".csv") else os.path.join(path, "results.csv")
+    with open(csv_path, newline="") as f:
+        rows = [r for r in csv.DictReader(f) if r["status"] == "ok"]
+    folder = None if path.endswith(".csv") else path
+    return tuple(Case(source, r, os.path.join(folder, r["run_dir"]) if folder else None) for r in rows)
+
+
+# ---- values of a case, besides the results.csv columns
+
+def y_at(case, t):
+    ts, ys = case.trajectory()
+    i = min(range(len(ts)), key=lambda k: abs(ts[k] - t))
+    if abs(ts[i] - t) > 1e-6:
+        raise ValueError(f"{case.source}: {case.row['case']} has no sample at t = {t:g}")
+    return ys[i]
+
+
+def chord(t0, t1):
+    """(y(t1) - y(t0)) / (t1 - t0): the paper's rule over a window (without its plateau clause)."""
+    return lambda case: (y_at(case, t1) - y_at(case, t0)) / (t1 - t0)
+
+
+def slope(t0, t1):
+    """The least-squares slope of y(t) over t0 <= t <= t1."""
+    def value(case):
+        pairs = [(t, y) for t, y in zip(*case.trajectory()) if t0 - 1e-9 <= t <= t1 + 1e-9]
+        n = len(pairs)
+        mt, my = sum(p[0] for p in pairs) / n, sum(p[1] for p in pairs) / n
+        return sum((t - mt) * (y - my) for t, y in pairs) / sum((t - mt) ** 2 for t, _ in pairs)
+    return value
+
+
+def value_of(case, value):
+    return value(case) if callable(value) else float(case.get(value))
+
+
+# ---- cells
+
+def beds(cases, where):
+    """The cases of one cell, one per bed (box.seed); a run repeated in two folders counts once."""
+    by_seed = {}
+    for c in cases:
+        seed = c.get("box.seed")
+        if seed in by_seed:
+            if not c.row.get("state_hash") or by_seed[seed].row.get("state_hash") != c.row.get("state_hash"):
+                raise ValueError(f"{where}: two different runs on bed {seed:g} "
+                                 f"({by_seed[seed].source} {by_seed[seed].row['case']}, {c.source} {c.row['case']})")
+            continue
+        by_seed[seed] = c
+    return [by_seed[s] for s in sorted(by_seed)]
+
+
+def mean(values):
+    return sum(values) / len(values)
+
+
+def sd(values):
+    """The standard deviation of a sample (n - 1)."""
+    m = mean(values)
+    return math.sqrt(sum((v - m) ** 2 for v in values) / (len(values) - 1))
+
+
+def stats(values):
+    """mean, standard error of the mean (nan for one value)."""
+    return mean(values), sd(values) / math.sqrt(len(values)) if len(values) > 1 else float("nan")
+
+
+def cell_text(values, digits=3, each=False):
+    """'+0.054 (1 bed)', '+0.041 +- 0.013 (2 beds)'; with each, the beds' values after the count."""
+    if not values:
+        return ""
+    m, se = stats(values)
+    if len(values) == 1:
+        return f"{m:+.{digits}f} (1 bed)"
+    listed = ": " + ", ".join(f"{v:+.{digits}f}" for v in values) if each else ""
+    return f"{m:+.{digits}f} +- {se:.{digits}f} ({len(values)} beds{listed})"
+
+
+# ---- tables
+
+def key_of(case, key):
+    return key(case) if callable(key) else case.get(key)
+
+
+def select(sources, where):
+    """The finished cases of these sources whose keys have the values `where` gives."""
+    return [c for source in sources for c in load(source) if all(key_of(c, k) == v for k, v in where.items())]
+
+
+def pivot(spec):
+    """Rows x columns of V_y cells (each the beds of that row and column), with optional columns
+    made from a row's cells before and after them (spec["pre"], spec["extra"]:
+    [(header, function(row_key, {col: [values]}, {col: [cases]}))])."""
+    cases = select(spec["sources"], spec.get("where", {}))
+    grid = {}
+    for c in cases:
+        grid.setdefault(key_of(c, spec["row"]), {}).setdefault(key_of(c, spec["col"]), []).append(c)
+    rows = spec.get("rows") or sorted(grid, key=spec.get("row_sort", lambda r: r))
+    cols = spec.get("cols") or sorted({k for r in grid.values() for k in r})
+    row_label = spec.get("row_label", lambda r: f"{r:g}" if isinstance(r, float) else str(r))
+    col_label = spec.get("col_label", lambda k: f"{k:g}" if isinstance(k, float) else str(k))
+    pre, extra = spec.get("pre", []), spec.get("extra", [])
+    head = (spec["row_head"] + [h for h, _ in pre] + [col_label(k) for k in cols] + (["all beds"] if spec.get("all") else [])
+            + [h for h, _ in extra])
+    lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
+    for r in rows:
+        cells = grid.get(r, {})
+        values = {k: [value_of(c, spec.get("value", "vy")) for c in beds(cells[k], f"{spec['name']}: {r} {k}")]
+                  for k in cols if k in cells}
+        row = list(row_label(r)) if isinstance(row_label(r), tuple) else [row_label(r)]
+        row += [fn(r, values, cells) for _, fn in pre]
+        row += [cell_text(values.get(k, []), spec.get("digits", 3), spec.get("each", False)) for k in cols]
+        if spec.get("all"):
+            row.append(cell_text([v for k in cols for v in values.get(k, [])], spec.get("digits", 3), spec.get("each", False)))
+        row += [fn(r, values, cells) for _, fn in extra]
+        lines.append("| " + " | ".join(row) + " |")
+    return lines, spec["sources"]
+
+
+def listing(spec):
+    """One row per case: spec["columns"] = [(header, function(case) -> text)]."""
+    cases = select(spec["sources"], spec.get("where", {}))
+    cases.sort(key=spec.get("sort", lambda c: 0))
+    head = [h for h, _ in spec["columns"]]
+    lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
+    lines += ["| " + " | ".join(fn(c) for _, fn in spec["columns"]) + " |" for c in cases]
+    return lines, spec["sources"]
+
+
+def means(values):
+    return {k: mean(v) for k, v in values.items()}
+
+
+def table1_extra():
+    """Table 1's columns after the periods: wiggle's T_rising (the paper's reading: the last period
+    with mean V_y <= 0 and the next, interpolated), its bracket, the period of the largest mean V_y."""
+    def crossing(values):
+        m = means(values)
+        ts = sorted(m)
+        return prepare.t_rising(ts, [m[t] for t in ts])
+
+    def t_text(shape, values, cases):
+        t = crossing(values)[0]
+        return f"{t:.2f}" if t == t else "-"
+
+    def bracket(shape, values, cases):
+        _, lo, hi, note = crossing(values)
+        return f"{lo:g}-{hi:g}" if lo == lo and hi == hi else note
+
+    def largest(shape, values, cases):
+        m = means(values)
+        return f"{max(m, key=m.get):g}"
+    return [("wiggle T_rising", t_text), ("bracket", bracket), ("largest V_y at T", largest)]
+
+
+def model_cell(key):
+    """The cavity model's period `key` (T_rise, T_max) for a row's shape, from its cases' model.json."""
+    def cell(shape, values, cases):
+        for group in cases.values():
+            for c in group:
+                path = os.path.join(c.dir, "model.json")
+                if os.path.exists(path):
+                    with open(path) as f:
+                        return f"{json.load(f)[key]:.2f}"
+        return ""
+    return cell
+
+
+def shape_by_period(name, sources, where, with_paper, value="vy"):
+    """Table 1 and figure 5: shapes x periods at one amplitude, with the cavity model's periods,
+    the paper's observed T_rising (Table 1 only) and wiggle's; `value` as in TABLES."""
+    return {"name": name, "kind": pivot, "sources": sources, "where": where, "value": value,
+            "row": "intruder.shape", "col": "drive.period", "rows": None,
+            "row_sort": lambda s: (SHAPES.index(s) if s in SHAPES else len(SHAPES), s),
+            "row_head": ["shape"],
+            "pre": [("model T_rise", model_cell("T_rise")), ("model T_max", model_cell("T_max"))]
+            + ([("paper (observed)", lambda s, values, cases: PAPER_T_RISING.get(s, ""))] if with_paper else []),
+            "col_label": lambda t: f"T = {t:g}",
+            "extra": table1_extra()}
+
+
+def fmt(digits):
+    return lambda x: f"{x:+.{digits}f}"
+
+
+def column(key, text=lambda x: f"{x:g}"):
+    """A listing's column: the case's key, as text."""
+    return lambda c: text(key_of(c, key))
+
+
+BED_PROTOCOL = {("poured", 20.0, 0.0): "poured, preset's protocol", ("poured", 40.0, 2.0): "poured, fast protocol",
+                ("carved", 40.0, 2.0): "carved, fast protocol"}
+
+
+def protocol(c):
+    return BED_PROTOCOL[(c.get("bed.cavity"), c.get("bed.batch_height"), c.get("bed.relax_damping"))]
+
+
+TABLES = [
+    # ---- docs/VALIDATION.md, the small preset (60 d wide, intruder 25 d deep)
+    {"name": "small_fig5", "kind": listing, "sources": ["docs/figures/small_fig5_results.csv"],
+     "sort": lambda c: (SHAPES.index(c.get("intruder.shape")), c.get("drive.period")),
+     "columns": [("shape", column("intruder.shape", str)), ("T", column("drive.period")),
+                 ("V_y (paper rule)", column("vy", fmt(4))), ("least-squares slope", column("vy_slope", fmt(4))),
+                 ("ns/particle-step", column("ns_per_particle_step", lambda x: f"{x:.0f}")),
+                 ("wall [s]", column("wall_s", lambda x: f"{x:.0f}"))]},
+    {"name": "small_pour_protocol", "kind": pivot, "sources": ["results/pour_protocol_small"],
+     "row": "bed.pour", "col": "drive.period", "rows": ["lattice", "random"], "each": True,
+     "row_head": ["protocol"], "col_label": lambda t: f"T = {t:g}"},
+    {"name": "small_friction", "kind": pivot, "sources": ["results/small_friction_amplitude"],
+     "where": {"drive.amplitude": 3.0, "drive.period": 5.0},
+     "row": "contact.mu", "col": lambda c: (c.get("intruder.shape"), c.get("box.seed")),
+     "cols": [("disk", 1.0), ("disk", 2.0), ("square", 1.0)], "row_head": ["A = 3, T = 5"],
+     "row_label": lambda m: f"mu = {m:g}", "col_label": lambda k: f"{k[0]}, bed {k[1]:g}"},
+    {"name": "small_friction_disk", "kind": pivot, "sources": ["results/small_friction_amplitude"],
+     "where": {"intruder.shape": "disk", "drive.amplitude": 3.0, "drive.period": 5.0},
+     "row": "contact.mu", "col": lambda c: "beds 1 and 2", "row_head": ["disk, A = 3, T = 5"], "each": True,
+     "row_label": lambda m: f"mu = {m:g}"},
+    {"name": "small_amplitude", "kind": pivot, "sources": ["results/small_friction_amplitude"],
+     "where": {"intruder.shape": "disk", "contact.mu": 0.1}, "row": "drive.amplitude", "col": "drive.period",
+     "row_head": ["disk, bed 1 (A = 3: beds 1 and 2)"], "row_label": lambda a: f"A = {a:g}", "each": True,
+     "col_label": lambda t: f"T = {t:g}"},
+    # ---- docs/VALIDATION.md, at the paper's depth (configs/paper_depth.toml: 60 d wide, 105 d deep)
+    {"name": "depth_box", "kind": listing, "sources": ["results/paper_depth/box"],
+     "sort": lambda c: (c.get("box.width"), c.get("box.seed"), c.get("drive.period")),
+     "columns": [("width [d]", column("box.width")), ("grains", column("n_grains", lambda x: f"{x:,.0f}")),
+                 ("seed", column("box.seed")), ("T", column("drive.period")),
+                 ("V_y (paper's rule)", column("vy", fmt(4))), ("least-squares slope", column("vy_slope", fmt(4))),
+                 ("wall [s]", column("wall_s", lambda x: f"{x:,.0f}")),
+                 ("ns/particle-step", column("ns_per_particle_step", lambda x: f"{x:.1f}"))]},
+    {"name": "depth_box_means", "kind": pivot, "sources": ["results/paper_depth/box", "results/paper_depth/seeds"],
+     "where": {"intruder.shape": "disk"}, "row": "box.width", "col": "drive.period",
+     "row_head": ["width [d]"], "col_label": lambda t: f"T = {t:g}"},
+    {"name": "depth_below45", "kind": pivot, "sources": ["results/paper_depth/box", "results/paper_depth/below45"],
+     "where": {"box.width": 60.0}, "row": "intruder.y0", "col": "drive.period", "rows": [90.0, 45.0], "each": True,
+     "row_head": ["grains below the intruder"], "row_label": lambda y: f"{y:g} d" + (" (the preset)" if y == 90 else ""),
+     "col_label": lambda t: f"T = {t:g}"},
+    {"name": "depth_full_box", "kind": pivot,
+     "sources": ["results/paper_depth/box", "results/paper_depth/seeds", "results/paper_depth/full_box"],
+     "where": {"intruder.shape": "disk"}, "row": "box.width", "col": "drive.period", "rows": [60.0, 150.0, 300.0],
+     "value": chord(5.0, 50.0), "each": True, "row_head": ["width [d]"],
+     "col_label": lambda t: f"T = {t:g}, (y(50) - y(5)) / 45"},
+    {"name": "depth_runlength", "kind": listing, "sources": ["results/paper_depth/runlength_t300"],
+     "sort": lambda c: -c.get("drive.period"),
+     "columns": [("disk, A = 5, bed 1", column("drive.period", lambda t: f"T = {t:g}")),
+                 ("V_y to t = 100", lambda c: f"{chord(10, 100)(c):+.3f}"),
+                 ("to t = 200", lambda c: f"{chord(20, 200)(c):+.3f}"),
+                 ("to t = 300", lambda c: f"{c.get('vy'):+.3f}"),
+                 ("slope over t = 10-50, 50-100, 100-150, 150-200, 200-250, 250-300",
+                  lambda c: ", ".join(f"{slope(a, b)(c):+.3f}" for a, b in
+                                      [(10, 50), (50, 100), (100, 150), (150, 200), (200, 250), (250, 300)])),
+                 ("y at t = 0, 50, ..., 300", lambda c: ", ".join(f"{y_at(c, t):.1f}" for t in range(0, 301, 50)))]},
+    {"name": "depth_one_bed", "kind": pivot,
+     "sources": ["results/paper_depth/box", "results/paper_depth/seeds", "results/paper_depth/damped_relax"],
+     "where": {"box.width": 60.0, "intruder.shape": "disk"},
+     "row": lambda c: (c.get("bed.relax_damping"), c.get("box.seed")), "rows": [(0.0, 1.0), (2.0, 1.0), (0.0, 2.0), (0.0, 3.0)],
+     "col": "drive.period", "row_head": ["bed (60 d)"], "col_label": lambda t: f"T = {t:g}",
+     "row_label": lambda r: {(0.0, 1.0): "bed 1, relaxed by the contacts' own damping (the default)",
+                             (2.0, 1.0): "bed 1 (same pour), relaxation damped (`bed.relax_damping = 2`)",
+                             (0.0, 2.0): "another pour: bed 2", (0.0, 3.0): "another pour: bed 3"}[r]},
+    {"name": "depth_triangle", "kind": pivot, "sources": ["results/paper_depth/triangle"],
+     "row": lambda c: (c.get("intruder.surface"), c.get("bed.pour")), "col": "drive.period",
+     "rows": [("smooth", "lattice"), ("glued", "lattice"), ("smooth", "random")], "cols": [6.0, 4.0],
+     "row_head": ["triangle"], "col_label": lambda t: f"T = {t:g}",
+     "row_label": lambda r: {("smooth", "lattice"): "smooth clump, disk-area mass 25.7 (the defaults)",
+                             ("glued", "lattice"): "glued 0.5 d spheres, glued-disk mass 9.9 (the paper's construction)",
+                             ("smooth", "random"): "random pour (`bed.pour = \"random\"`)"}[r]},
+    shape_by_period("depth_table1", ["results/paper_depth/table1"], {}, True),
+    {"name": "depth_table1_beds", "kind": pivot,
+     "sources": ["results/paper_depth/table1", "results/paper_depth/table1_bed2"],
+     "row": lambda c: (c.get("intruder.shape"), c.get("drive.period")), "col": "box.seed",
+     "rows": [(s, t) for s in SHAPES[:4] for t in ((2.0, 2.5) if s == "disk" else (2.5, 3.0))],
+     "all": True, "row_head": ["shape", "T"], "row_label": lambda r: (r[0], f"{r[1]:g}"),
+     "col_label": lambda s: f"bed {s:g}"},
+    {"name": "depth_glued", "kind": pivot,
+     "sources": ["results/paper_depth/table1", "results/paper_depth/table1_bed2", "results/paper_depth/glued"],
+     "where": {"intruder.shape": "disk"}, "row": "intruder.surface", "col": "drive.period", "rows": ["smooth", "glued"],
+     "cols": [2.0, 2.5], "each": True, "row_head": ["disk, A = 5"], "col_label": lambda t: f"T = {t:g}",
+     "row_label": lambda s: {"smooth": "smooth, disk-area mass 25.7 (the defaults)",
+                             "glued": "glued 0.5 d spheres, glued-disk mass 9.9 (the paper's construction)"}[s]},
+    shape_by_period("depth_fig5", ["results/paper_depth/fig5"], {}, False),
+    {"name": "depth_fig5_beds", "kind": pivot, "sources": ["results/paper_depth/fig5", "results/paper_depth/fig5_bed2"],
+     "row": lambda c: (c.get("intruder.shape"), c.get("drive.period")), "col": "box.seed",
+     "rows": [("square", 5.0), ("square", 8.0), ("rect_wide", 5.0), ("rect_wide", 8.0), ("disk", 3.0)],
+     "all": True, "row_head": ["case, A = 3", "T"], "row_label": lambda r: (r[0], f"{r[1]:g}"),
+     "col_label": lambda s: f"bed {s:g}"},
+    # ---- docs/PERFORMANCE.md
+    {"name": "perf_bed_protocols", "kind": pivot,
+     "sources": ["results/paper_depth/box", "results/paper_depth/seeds", "results/paper_depth/table1",
+                 "results/paper_depth/table1_bed2", "results/paper_depth/bed_fast", "results/paper_depth/bed_carved"],
+     "where": {"box.width": 60.0, "drive.amplitude": 5.0, "intruder.surface": "smooth", "bed.pour": "lattice"},
+     "row": lambda c: (c.get("intruder.shape"), c.get("drive.period"), c.get("box.seed")),
+     "rows": [("disk", 3.0, 1.0), ("disk", 3.0, 2.0), ("disk", 5.0, 1.0), ("disk", 5.0, 2.0),
+              ("square", 3.0, 1.0), ("square", 3.0, 2.0)],
+     "col": protocol, "cols": list(BED_PROTOCOL.values()), "row_head": ["case"],
+     "row_label": lambda r: f"{r[0]}, T = {r[1]:g}, seed {r[2]:g}"},
+]
+
+
+# ---- the paper's findings (docs/PHYSICS.md §12), judged by a rule from comparisons of cells
+#
+# A comparison is a cell (the beds of one case: folders and a filter) against another cell or
+# against zero, with the direction the paper's finding predicts. Its difference is counted in
+# standard errors, se = sigma sqrt(1/n_a + 1/n_b) (n: beds; 1/n_b = 0 against zero), where sigma is
+# the standard deviation of one bed at that scale, measured (sigma() in paper_findings). The verdict
+# of a finding at a scale: "reproduced" if every comparison goes the paper's way by at least 2
+# standard errors (as printed, to 0.1);
+# "not reproduced" if one goes against it by at least 2; "not resolved" otherwise; "not measured"
+# if no committed result bears on it.
+
+RESOLVED = 2.0   # standard errors
+
+
+class Cell:
+    """The beds of one case: `sources` (folders), `where` (key: value)."""
+
+    def __init__(self, sources, **where):
+        self.sources, self.where = sources, {k.replace("__", "."): v for k, v in where.items()}
+
+    def values(self):
+        cases = select(self.sources, self.where)
+        return [float(c.get("vy")) for c in beds(cases, f"{self.sources} {self.where}")]
+
+
+def sigma(cells):
+    """One bed's standard deviation at a scale: the largest over the cells with three or more beds."""
+    return max(sd(c.values()) for c in cells)
+
+
+def short(where):
+    """'square, A = 5, T = 3' from a filter."""
+    names = {"drive.amplitude": "A", "drive.period": "T", "contact.mu": "mu", "box.seed": "bed"}
+    parts = [str(where["intruder.shape"])] if "intruder.shape" in where else []
+    parts += [f"{names[k]} = {v:g}" for k, v in where.items() if k in names]
+    return ", ".join(parts)
+
+
+def compare(label, a, b, direction):
+    """(label, a's values, b's values or [], direction): direction +1 when the paper has a > b; None
+    when a cell has no results."""
+    va, vb = a.values(), (b.values() if b is not None else [])
+    return (label, va, vb, direction) if va and (vb or b is None) else None
+
+
+def judged(comparison, sig):
+    """(difference a - b, standard errors in the paper's direction, 'for' / 'against' / 'within')."""
+    label, a, b, direction = comparison
+    diff = mean(a) - (mean(b) if b else 0.0)
+    se = sig * math.sqrt(1 / len(a) + (1 / len(b) if b else 0.0))
+    z = round(direction * diff / se, 1)   # judged as printed, to 0.1
+    return diff, z, "for" if z >= RESOLVED else "against" if z <= -RESOLVED else "within"
+
+
+def mean_text(values):
+    return cell_text(values) if values else "0"
+
+
+def verdict(outcomes):
+    if not outcomes:
+        return "not measured"
+    if "against" in outcomes:
+        return "not reproduced"
+    return "reproduced" if all(o == "for" for o in outcomes) else "not resolved"
+
+
+def evidence_table(spec):
+    """Every comparison of every finding: the cells, the difference and its standard errors."""
+    head = ["finding", "scale", "comparison (the paper's way)", "a", "b", "a - b", "standard errors, the paper's way"]
+    lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
+    for number, finding, scales in spec["findings"]():
+        for scale, (sig, comparisons, *_) in scales.items():
+            for c in filter(None, comparisons):
+                diff, z, _ = judged(c, sig)
+                lines.append("| " + " | ".join([str(number), scale, c[0], mean_text(c[1]), mean_text(c[2]),
+                                                  f"{diff:+.3f}", f"{z:+.1f}"]) + " |")
+    return lines, spec["sources"]
+
+
+def findings_table(spec):
+    """One row per finding: per scale, how its comparisons came out, and the verdict by the rule."""
+    scales = spec["scales"]
+    head = ["paper's finding"] + [f"{s}: comparisons" for s in scales] + [f"verdict, {s}" for s in scales]
+    lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
+    for number, finding, by_scale in spec["findings"]():
+        counts, verdicts = [], []
+        for s in scales:
+            sig, comparisons, *note = by_scale.get(s, (0.0, []))
+            comparisons = [c for c in comparisons if c]
+            outcomes = [judged(c, sig) for c in comparisons]
+            kinds = [o[2] for o in outcomes]
+            against = [f"{c[0]} ({o[1]:+.1f})" for c, o in zip(comparisons, outcomes) if o[2] == "against"]
+            n = sorted({len(c[1]) for c in comparisons} | {len(c[2]) for c in comparisons if c[2]})
+            text = (f"{len(kinds)} comparison{'s' if len(kinds) > 1 else ''} of cases of {n[0]}" + (f"-{n[-1]}" if n[-1] > n[0] else "")
+                    + f" bed{'s' if n[-1] > 1 else ''}: "
+                    f"{kinds.count('for')} the paper's way by >= {RESOLVED:g} standard errors, "
+                    f"{kinds.count('within')} within {RESOLVED:g}, {kinds.count('against')} against"
+                    + (": " + "; ".join(against) if against else "") + (f" ({note[0]})" if note else "")) \
+                if kinds else "no committed results"
+            counts.append(text)
+            verdicts.append(verdict(kinds))
+        lines.append("| " + " | ".join([f"{number}. {finding}"] + counts + verdicts) + " |")
+    sigmas = {s: v[0] for _, _, by_scale in spec["findings"]() for s, v in by_scale.items()}
+    lines += ["", "One bed's standard deviation, sigma: " + ", ".join(f"{s} {sigmas[s]:.3f}" for s in scales) + "."]
+    return lines, spec["sources"]
+
+
+DEPTH_A5 = ["results/paper_depth/table1", "results/paper_depth/table1_bed2"]
+DEPTH_A3 = ["results/paper_depth/fig5", "results/paper_depth/fig5_bed2"]
+SMALL_SESSION2 = ["docs/figures/small_fig5_results.csv"]   # disk and triangle, A = 3, bed 1, session 2's engine
+SMALL_POUR = ["results/pour_protocol_small"]
+SMALL_FRICTION = ["results/small_friction_amplitude"]
+PAPER_ORDER = ["disk", "rect_narrow", "square", "rect_wide", "triangle"]   # the paper's order of rise rates
+PAPER_RANGE = {"disk": (2.5, 3.0), "square": (3.0, 4.0), "rect_narrow": (3.0, 4.0), "rect_wide": (2.0, 3.0),
+               "triangle": (4.0, 5.0)}   # the paper's Table 1, observed (A = 5)
+
+
+def periods(sources, **where):
+    """The periods at which a cell of these sources and filter has results, in order."""
+    return sorted({c.get("drive.period") for c in select(sources, Cell(sources, **where).where)})
+
+
+def sinks_then_rises(sources, label, shapes, **where):
+    """Finding 1 for each shape: it sinks at its shortest period run and rises at the period of its
+    largest rate among the longer ones (the largest of several: a selection that favours rising)."""
+    out = []
+    for shape in shapes:
+        ts = periods(sources, intruder__shape=shape, **where)
+        if len(ts) < 2:
+            continue
+        cell = lambda t: Cell(sources, intruder__shape=shape, drive__period=t, **where)  # noqa: E731
+        top = max(ts[1:], key=lambda t: mean(cell(t).values()))
+        out.append(compare(f"{shape}, {label}: sinks at T = {ts[0]:g}, its shortest", cell(ts[0]), None, -1))
+        largest = f", its largest of T = {ts[1]:g}-{ts[-1]:g}" if len(ts) > 2 else ""
+        out.append(compare(f"{shape}, {label}: rises at T = {top:g}{largest}",
+                           cell(top), None, +1))
+    return out
+
+
+def has_maximum(sources, label, shapes, **where):
+    """Finding 2 for each shape that rises: its largest rate above its rate at the longest period run."""
+    out = []
+    for shape in shapes:
+        ts = periods(sources, intruder__shape=shape, **where)
+        cell = lambda t: Cell(sources, intruder__shape=shape, drive__period=t, **where)  # noqa: E731
+        top = max(ts, key=lambda t: mean(cell(t).values()))
+        if mean(cell(top).values()) > 0:
+            out.append(compare(f"{shape}, {label}: largest, at T = {top:g}, above T = {ts[-1]:g}, the longest",
+                               cell(top), cell(ts[-1]), +1))
+    return out
+
+
+def in_order(sources, label, ts, **where):
+    """Finding 4 at each period: every pair of neighbours in the paper's order that has results."""
+    out = []
+    for t in ts:
+        present = [s for s in PAPER_ORDER if Cell(sources, intruder__shape=s, drive__period=t, **where).values()]
+        for a, b in zip(present, present[1:]):
+            out.append(compare(f"{label}, T = {t:g}: {a} above {b}", Cell(sources, intruder__shape=a, drive__period=t, **where),
+                               Cell(sources, intruder__shape=b, drive__period=t, **where), +1))
+    return out
+
+
+def sinks(sources, label, shape, **where):
+    return [compare(f"{shape}, {label}: sinks at T = {t:g}", Cell(sources, intruder__shape=shape, drive__period=t, **where),
+                    None, -1) for t in periods(sources, intruder__shape=shape, **where)]
+
+
+def friction(sources, label, shape, **where):
+    """Finding 6: each step up in mu raises the rate."""
+    mus = sorted({c.get("contact.mu") for c in load(sources[0]) if c.get("intruder.shape") == shape})
+    cell = lambda mu: Cell(sources, intruder__shape=shape, contact__mu=mu, **where)  # noqa: E731
+    return [compare(f"{label}: mu = {b:g} above mu = {a:g}", cell(b), cell(a), +1) for a, b in zip(mus, mus[1:])]
+
+
+def table1_range(sources, **where):
+    """Finding 7 for each shape: at or below zero at the paper's lower end, rising at its upper end."""
+    out = []
+    for shape, (lo, hi) in PAPER_RANGE.items():
+        out.append(compare(f"{shape}: not rising at T = {lo:g} (the paper's lower end)",
+                           Cell(sources, intruder__shape=shape, drive__period=lo, **where), None, -1))
+        out.append(compare(f"{shape}: rising at T = {hi:g} (the paper's upper end)",
+                           Cell(sources, intruder__shape=shape, drive__period=hi, **where), None, +1))
+    return out
+
+
+_FINDINGS = []
+
+
+def paper_findings():
+    """[(number, the finding, {scale: (sigma, [comparisons])})], docs/PHYSICS.md §12."""
+    if _FINDINGS:
+        return _FINDINGS
+    depth = sigma([Cell(["results/paper_depth/box", "results/paper_depth/seeds"], intruder__shape="disk",
+                        box__width=60.0, drive__period=3.0)])
+    small = sigma([Cell(SMALL_POUR, bed__pour="lattice", drive__period=t) for t in (1.0, 5.0)])
+    lattice = {"bed__pour": "lattice"}
+    _FINDINGS.extend([
+        (1, "for A >= 3 the intruder sinks at short periods and rises at long ones", {
+            "paper's depth": (depth, sinks_then_rises(DEPTH_A5, "A = 5", SHAPES) + sinks_then_rises(DEPTH_A3, "A = 3", SHAPES)),
+            "small preset": (small, sinks_then_rises(SMALL_POUR, "A = 3", ["disk"], **lattice)
+                             + sinks_then_rises(SMALL_SESSION2, "A = 3 (session 2)", ["triangle"]))}),
+        (2, "the rise rate has a maximum in T", {
+            "paper's depth": (depth, has_maximum(DEPTH_A5, "A = 5", SHAPES) + has_maximum(DEPTH_A3, "A = 3", SHAPES)),
+            "small preset": (small, has_maximum(SMALL_SESSION2, "A = 3 (session 2)", ["disk"]))}),
+        (3, "at A = 0.5 and 1 the intruder hardly moves", {
+            "small preset": (small, [
+                compare(f"disk, T = 5: A = 3 above A = {a:g}",
+                        Cell(SMALL_FRICTION, intruder__shape="disk", drive__amplitude=3.0, drive__period=5.0, contact__mu=0.1),
+                        Cell(SMALL_FRICTION, intruder__shape="disk", drive__amplitude=a, drive__period=5.0), +1)
+                for a in (1.0, 0.5)] + [
+                compare("disk, T = 2: A = 3 (session 2) below A = 1",
+                        Cell(SMALL_SESSION2, intruder__shape="disk", drive__period=2.0),
+                        Cell(SMALL_FRICTION, intruder__shape="disk", drive__amplitude=1.0, drive__period=2.0), -1)])}),
+        (4, "rise rates order the shapes disk > narrow rectangle > square > wide rectangle > triangle", {
+            "paper's depth": (depth, in_order(DEPTH_A5, "A = 5", [3.0, 4.0, 5.0, 6.0])
+                              + in_order(DEPTH_A3, "A = 3", [3.0, 4.0, 5.0, 6.0, 8.0])),
+            "small preset": (small, in_order(SMALL_SESSION2, "A = 3 (session 2)", [3.0, 5.0, 8.0]),
+                             "the disk and the triangle only")}),
+        (5, "the triangle sinks in most of the grid", {
+            "paper's depth": (depth, sinks(DEPTH_A5, "A = 5", "triangle") + sinks(DEPTH_A3, "A = 3", "triangle")),
+            "small preset": (small, sinks(SMALL_SESSION2, "A = 3 (session 2)", "triangle"))}),
+        (6, "more friction, faster rise", {
+            "small preset": (small, friction(SMALL_FRICTION, "disk, A = 3, T = 5", "disk", drive__amplitude=3.0)
+                             + friction(SMALL_FRICTION, "square, A = 3, T = 5", "square"))}),
+        (7, "each shape starts rising where the paper's Table 1 says (A = 5)", {
+            "paper's depth": (depth, table1_range(DEPTH_A5))}),
+    ])
+    return _FINDINGS
+
+
+FINDING_SOURCES = DEPTH_A5 + DEPTH_A3 + ["results/paper_depth/box", "results/paper_depth/seeds"] + SMALL_POUR \
+    + SMALL_FRICTION + SMALL_SESSION2
+TABLES += [
+    {"name": "findings", "kind": findings_table, "findings": paper_findings, "scales": ["paper's depth", "small preset"],
+     "sources": FINDING_SOURCES},
+    {"name": "findings_evidence", "kind": evidence_table, "findings": paper_findings, "sources": FINDING_SOURCES},
+]
+
+DOCUMENTS = ["docs/VALIDATION.md", "docs/PERFORMANCE.md"]
+
+
+def render(spec):
+    """The table's lines, then the line that names its sources."""
+    lines, sources = spec["kind"](spec)
+    return lines + ["", "(made by `tools/study/vy_tables.py` from " + ", ".join(sources)
+                    + "; a cell is one bed's V_y, or the mean +- standard error of the mean over the beds it counts)"]
+
+
+def regenerate(text, tables, where):
+    """The text with every marked table replaced by `tables[name]`; and the problems found (a
+    marker without a table, a table's end marker missing)."""
+    out, problems, lines, i = [], [], text.split("\n"), 0
+    while i < len(lines):
+        line = lines[i]
+        out.append(line)
+        i += 1
+        if not (line.startswith("<!-- vy_tables: ") and line.endswith(" -->")):
+            continue
+        name = line[len("<!-- vy_tables: "):-len(" -->")]
+        end = f"<!-- /vy_tables: {name} -->"
+        if end not in lines[i:]:
+            problems.append(f"{where}: table {name} has no end marker {end}")
+            continue
+        j = lines.index(end, i)
+        if name not in tables:
+            problems.append(f"{where}: table {name} is not declared in tools/study/vy_tables.py")
+            out += lines[i:j]
+        else:
+            out += tables[name]
+            tables[name] = None   # used
+        i = j
+    return "\n".join(out), problems
+
+
+def run(check):
+    """Regenerate (or, with check, compare) every document; the problems, one line each."""
+    tables = {spec["name"]: render(spec) for spec in TABLES}
+    problems = []
+    for doc in DOCUMENTS:
+        path = os.path.join(ROOT, doc)
+        with open(path, encoding="utf-8") as f:
+            text = f.read()
+        new, found = regenerate(text, tables, doc)
+        problems += found
+        if new != text:
+            if check:
+                problems += [f"{doc}: {line}" for line in differences(text, new)]
+            else:
+                with open(path + ".tmp", "w", encoding="utf-8") as f:
+                    f.write(new)
+                os.replace(path + ".tmp", path)
+                print(f"vy_tables: {doc} rewritten")
+    problems += [f"table {name} has no markers in {', '.join(DOCUMENTS)}" for name, t in tables.items() if t is not None]
+    return problems
+
+
+def differences(old, new):
+    """The lines of old that new changes, and what new has instead (difflib's unified diff)."""
+    import difflib
+    return [d for d in difflib.unified_diff(old.split("\n"), new.split("\n"), "committed", "from results", n=0, lineterm="")
+            if d[:1] in "+-" and d[:3] not in ("+++", "---")]
+
+
+def main():
+    args = sys.argv[1:]
+    if args not in ([], ["--check"]):
+        sys.exit("usage: tools/study/vy_tables.py [--check]")
+    try:
+        problems = run(check=args == ["--check"])
+    except (OSError, KeyError, ValueError) as e:
+        problems = [f"{type(e).__name__}: {e}"]
+    for p in problems:
+        print(p)
+    if args:
+        print(f"vy_tables: {len(problems)} differences between the documents' tables and results/")
+    sys.exit(1 if problems else 0)
+
+
+if __name__ == "__main__":
+    main()
