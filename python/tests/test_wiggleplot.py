@@ -252,13 +252,57 @@ class FigureFilesTest(DataDirs):
         self.assertEqual(list(y), [25.0, 25.5, 26.0])
         self.assertEqual(len(runplots.path_until(traj, -1.0)[0]), 0)
 
-    def test_movie(self):
-        if not (shutil.which("ffmpeg") or os.path.exists("/usr/bin/ffmpeg")):
-            self.skipTest("no ffmpeg")
-        out_dir = os.path.join(self.tmp, "movie")
-        run = runplots.Run(self.run_dir, quiet_report())
+    def decoded_movie(self, run_dir, name):
+        """(frame count, (width, height), decode(k) -> RGB array of frame k) of the movie of run_dir."""
+        import subprocess
+        from matplotlib import image
+        out_dir = os.path.join(self.tmp, name)
+        run = runplots.Run(run_dir, quiet_report())
         runplots.write_movie(run, out_dir)
-        self.assert_files(out_dir, ["movie.mp4"])
+        movie = os.path.join(out_dir, "movie.mp4")
+        self.assertEqual(sorted(os.listdir(out_dir)), ["movie.mp4"])  # no temporary left
+        probe = subprocess.run(["ffprobe", "-v", "error", "-count_frames", "-select_streams", "v:0",
+                                "-show_entries", "stream=nb_read_frames,width,height", "-of", "csv=p=0", movie],
+                               capture_output=True, text=True, check=True).stdout.strip().split(",")
+        width, height, count = (int(v) for v in probe)
+
+        def decode(k):
+            png = os.path.join(out_dir, f"decoded{k}.png")
+            subprocess.run(["ffmpeg", "-v", "error", "-y", "-i", movie, "-vf", f"select=eq(n\\,{k})",
+                            "-vframes", "1", png], check=True)
+            return image.imread(png)[:, :, :3]
+        return count, (width, height), decode
+
+    def drawn_frame(self, run_dir, k):
+        from matplotlib import image
+        frames = runplots.MovieFrames(runplots.Run(run_dir, quiet_report()))
+        frames.draw(k)
+        png = os.path.join(self.tmp, f"drawn{k}.png")
+        frames.save_png(png)
+        size = frames.size
+        frames.close()
+        return size, image.imread(png)[:, :, :3]
+
+    def test_movie_holds_every_dump_frame_as_drawn(self):
+        # The movie is decoded: as many frames as the dump, of the size declared, each the picture
+        # of that frame (up to the codec's loss), not sheared stripes of mis-sized frames.
+        if runplots.find_ffmpeg() is None or not shutil.which("ffprobe"):
+            self.skipTest("no ffmpeg/ffprobe")
+        count, size, decode = self.decoded_movie(self.run_dir, "movie")
+        self.assertEqual(count, len(synthetic.DUMP_TIMES))
+        for k in (0, count - 1):
+            drawn_size, drawn = self.drawn_frame(self.run_dir, k)
+            self.assertEqual(size, drawn_size)
+            decoded = decode(k)
+            self.assertEqual(decoded.shape, drawn.shape)
+            self.assertLess(float(np.mean(np.abs(decoded - drawn))), 0.02, f"frame {k}")
+        # One dump frame makes a one-frame movie, not an ffmpeg error.
+        one = os.path.join(self.tmp, "one_frame_run")
+        synthetic.write_run(one, with_fields=False, with_dump=False)
+        synthetic.write_dump(os.path.join(one, "dumps", "dump.lammpstrj"), times=synthetic.DUMP_TIMES[:1])
+        count, size, decode = self.decoded_movie(one, "movie_one")
+        self.assertEqual(count, 1)
+        self.assertLess(float(np.mean(np.abs(decode(0) - self.drawn_frame(one, 0)[1]))), 0.02)
 
     def test_snapshot_times(self):
         out_dir = os.path.join(self.tmp, "snap")
