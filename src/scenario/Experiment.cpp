@@ -9,6 +9,7 @@
 #include <fstream>
 #include <numbers>
 #include <optional>
+#include <sstream>
 #include <nlohmann/json.hpp>
 
 #include "analysis/FieldObserver.h"
@@ -29,6 +30,17 @@
 namespace wiggle {
 
 namespace fs = std::filesystem;
+
+std::string runWarningsPath(const std::string& dir) { return dir + "/warnings.txt"; }
+
+std::vector<std::string> readRunWarnings(const std::string& dir) {
+  std::vector<std::string> lines;
+  if (!fs::exists(runWarningsPath(dir))) return lines;
+  std::istringstream in(readFile(runWarningsPath(dir)));
+  for (std::string line; std::getline(in, line);)
+    if (!line.empty()) lines.push_back(line);
+  return lines;
+}
 
 namespace {
 
@@ -95,7 +107,7 @@ void prepareRunDirectory(const std::string& dir, const RunConfig& config, const 
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec) throw Error("cannot create output directory " + dir + ": " + ec.message());
-  fs::create_directories(dir + "/dumps", ec);
+  if (config.run.dumpInterval > 0) fs::create_directories(dir + "/dumps", ec);
   const bool hasCheckpoint = fs::exists(checkpointPath(dir)) || fs::exists(previousCheckpointPath(dir));
   if (!resume && (hasCheckpoint || fs::exists(dir + "/summary.json")))
     throw Error(dir + " already holds a run: use --resume to continue it, or choose another --out");
@@ -105,12 +117,25 @@ void prepareRunDirectory(const std::string& dir, const RunConfig& config, const 
       throw Error("--resume: cannot continue the run in " + dir + ": " + why);
   }
   if (resume) removeLeftoverTemporaries(dir);  // of a run killed while writing a file
+  else fs::remove(runWarningsPath(dir), ec);   // a new run has no history
   writeFileAtomically(dir + "/config.toml", configToml);
 }
 
-// The newest checkpoint of the run in `dir` that is sound and of this config, or nothing.
+// Says `warning` on the console, in the log and in warnings.txt (hence in summary.json).
+void addRunWarning(const std::string& dir, const std::string& warning, LogFile& log) {
+  std::string text;
+  for (const std::string& w : readRunWarnings(dir)) text += w + "\n";
+  writeFileAtomically(runWarningsPath(dir), text + warning + "\n");
+  log.line("warning: " + warning);
+  std::fprintf(stderr, "wiggle: warning: %s\n", warning.c_str());
+}
+
+// The newest checkpoint of the run in `dir` that is sound and of this config, or nothing. When
+// there were checkpoints and none could be read, the run starts again from the bed: all its
+// progress is lost, which is said loudly (a warning in summary.json), not only in the log.
 std::optional<Checkpoint> newestGoodCheckpoint(const std::string& dir, const RunConfig& config,
                                                const std::string& configToml, LogFile& log) {
+  std::string refused;
   for (const std::string& path : {checkpointPath(dir), previousCheckpointPath(dir)}) {
     if (!fs::exists(path)) continue;
     try {
@@ -120,9 +145,15 @@ std::optional<Checkpoint> newestGoodCheckpoint(const std::string& dir, const Run
     } catch (const Error& e) {
       log.line(std::string("checkpoint refused: ") + e.what());
       std::fprintf(stderr, "wiggle: warning: %s; trying an older one\n", e.what());
+      refused += std::string(refused.empty() ? "" : "; ") + e.what();
     }
   }
-  log.line("no usable checkpoint: starting from the bed");
+  if (!refused.empty())
+    addRunWarning(dir, "no checkpoint could be read (" + refused +
+                           "): the run restarted from the bed at t = 0 and the time spent on it before was lost",
+                  log);
+  else
+    log.line("no checkpoint: starting from the bed");
   return std::nullopt;
 }
 
@@ -232,7 +263,7 @@ std::vector<std::string> runWarnings(const RiseRate& rate, double averagedFrom, 
   return warnings;
 }
 
-RunSummary summarise(const Case& run, const World& world, const RunState& state, const FieldObserver& fields,
+RunSummary summarise(const Case& run, const std::string& dir, const World& world, const RunState& state, const FieldObserver& fields,
                      const RiseRate& rate, double averagedFrom) {
   const RunConfig& config = run.config;
   RunSummary summary;
@@ -248,7 +279,8 @@ RunSummary summarise(const Case& run, const World& world, const RunState& state,
   summary.yStart = state.samples.front().y;
   summary.vyWindowPeriods = rate.windowPeriods;
   summary.averagedFromT = averagedFrom;
-  summary.warnings = runWarnings(rate, averagedFrom, config);
+  summary.warnings = readRunWarnings(dir);
+  for (std::string& w : runWarnings(rate, averagedFrom, config)) summary.warnings.push_back(std::move(w));
   summary.overlapMargin = world.healthMargins().overlap;
   summary.speedMargin = world.healthMargins().speed;
   summary.status = "ok";
@@ -267,8 +299,7 @@ RunSummary summarise(const Case& run, const World& world, const RunState& state,
   summary.stateHash = world.stateHash();
   const NeighbourList& list = world.neighbours();
   summary.neighbourPairs = list.pairCount();
-  for (std::uint32_t k = 0; k < list.pairCount(); ++k)
-    summary.contacts += list.forceX[k] != 0.0 || list.forceY[k] != 0.0;
+  summary.contacts = world.touchingPairs();
   summary.intruderPairs = world.intruderPairs().size();
   summary.stateBytesPerGrain = static_cast<double>(world.stateBytes()) / std::max(1u, world.grainCount());
   summary.shape = config.intruder.shape;
@@ -363,7 +394,7 @@ RunOutcome writeRunOutputs(const Case& run, const std::string& dir, const World&
   std::uint64_t accumulated = 0;
   for (const std::uint64_t n : state.phaseCount) accumulated += n;
   const double averagedFrom = static_cast<double>(world.stepCount() - accumulated) * config.run.dt;
-  const RunSummary summary = summarise(run, world, state, fields, rate, averagedFrom);
+  const RunSummary summary = summarise(run, dir, world, state, fields, rate, averagedFrom);
   writeFileAtomically(dir + "/summary.json", toJson(summary).dump(2) + "\n");
   log.line("done: vy = " + formatNumber(rate.vy) + ", slope = " + formatNumber(rate.slope) + ", " +
            formatNumber(summary.nsPerParticleStep) + " ns/particle-step, state " + world.stateHash());
@@ -411,7 +442,10 @@ RunOutcome runExperiment(const Case& run, const RunOptions& options) {
   stopOnSignal.emplace();
   if (!loaded) {
     loaded.emplace(startFromBed(run, state, log, progress));
-    std::ofstream(dumpPath, std::ios::trunc);
+    // A run without dumps leaves no dump file (not an empty one); one with dumps starts it afresh.
+    std::error_code ec;
+    if (run.steps.dumpEvery) std::ofstream(dumpPath, std::ios::trunc);
+    else fs::remove(dumpPath, ec);
     state.dumpBytes = 0;
   } else {
     // Drop dump frames written after the checkpoint: they will be written again.
