@@ -360,7 +360,7 @@ bool stepToTheEnd(const Case& run, const RunOptions& options, const std::string&
         progress.clear();
         log.line("interrupted by signal " + std::to_string(signal) + " at step " + std::to_string(step) +
                  "; checkpoint written");
-        throw Error("interrupted at t = " + formatNumber(world.time()) + "; continue with: wiggle run --out " + dir +
+        throw Interrupted(signal, "interrupted at t = " + formatNumber(world.time()) + "; continue with: wiggle run --out " + dir +
                     " --resume");
       }
       if (secondsSince(lastCheckpoint) >= run.config.run.checkpointInterval) {

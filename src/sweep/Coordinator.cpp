@@ -84,6 +84,7 @@ class Coordinator {
     while (true) {
       if (const int signal = stopSignalReceived(); signal != 0 && !stopping_) {
         stopping_ = true;
+        stopSignal_ = signal;
         monitor_.event("signal " + std::to_string(signal) + ": stopping; running cases write a checkpoint");
         runner_.signalAll(SIGTERM);
       }
@@ -241,6 +242,7 @@ class Coordinator {
     out.failed = countStatus("failed");
     out.pending = out.cases - out.ok - out.failed;
     out.interrupted = stopping_;
+    out.stopSignal = stopSignal_;
     writeResults();
     const std::string failed = " failed (error column of results.csv)";
     const std::string unfinished = " not finished (rerun the same command to resume)";
@@ -444,6 +446,7 @@ class Coordinator {
   int concurrency_ = 1;
   std::size_t bedsMade_ = 0;
   bool stopping_ = false;
+  int stopSignal_ = 0;  // the signal that set stopping_
   bool resultsDirty_ = false;
 };
 

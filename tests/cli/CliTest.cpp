@@ -4,11 +4,13 @@
 // refused before anything is written; --out creates at most its last component (issue 18).
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <sys/types.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -273,8 +275,96 @@ TEST_F(Cli, RunCheckPrintsWhatTheRunWouldBeAndWritesNothing) {
   r = wiggle("run " + quoted(config) + " --check --set drive.amplitude=40");
   expectOneLineError(r, {"box.width", "too narrow"}, "--check, amplitude 40");
   EXPECT_TRUE(workIsEmpty());
+  // An --out the run could not make or write is what --check is for: one line, exit 2 (/proc
+  // refuses a new directory even to root; a read-only directory refuses another user).
+  r = wiggle("run " + quoted(config) + " --check --out /proc/nope");
+  expectOneLineError(r, {"--out /proc/nope", "cannot create the directory"}, "--check, --out /proc/nope");
+  EXPECT_FALSE(fs::exists("/proc/nope"));
+  fs::create_directories(work_ / "existing");
+  r = wiggle("run " + quoted(config) + " --check --out existing");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(fs::is_empty(work_ / "existing"));  // the probe is gone
+  fs::remove(work_ / "existing");
 }
 
+
+// A run or sweep stopped by SIGINT or SIGTERM saves its work and exits 128 + the signal (130, 143),
+// not 2 (bad input), and not by dying of the signal: scripts and Slurm tell "resume me" from "fix
+// your input". The process is started directly (fork/exec: no shell in between to translate a
+// death by signal into 128 + N) and signalled once it has started work (its log or results exist).
+struct Stopped {
+  bool exited = false;
+  int status = -1;
+  std::string err;
+};
+
+Stopped startAndSignal(const std::vector<std::string>& args, const fs::path& startedWhen, int signal,
+                       const fs::path& errPath, const fs::path& cache) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    setenv("WIGGLE_CACHE", cache.c_str(), 1);
+    const int fd = ::open(errPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    dup2(fd, 2);
+    const int null = ::open("/dev/null", O_WRONLY);
+    dup2(null, 1);
+    std::vector<char*> argv;
+    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    execv(argv[0], argv.data());
+    _exit(127);
+  }
+  for (int i = 0; i < 600 && !fs::exists(startedWhen); ++i) usleep(100000);
+  usleep(1500000);  // past the start: the signal handlers are in place, a bed or the run is under way
+  kill(pid, signal);
+  int raw = 0;
+  waitpid(pid, &raw, 0);
+  Stopped s;
+  s.exited = WIFEXITED(raw);
+  s.status = s.exited ? WEXITSTATUS(raw) : -1;
+  s.err = slurp(errPath);
+  return s;
+}
+
+// `wiggle plot` runs the python3 that WIGGLE_PYTHON names (a virtual environment's, say), not
+// always /usr/bin/python3; one that is not there is one line naming it.
+TEST_F(Cli, PlotRunsThePythonThatWigglePythonNames) {
+  const fs::path fake = root_ / "python3";
+  std::ofstream(fake) << "#!/bin/sh\necho \"$@\" > " << quoted((root_ / "args").string()) << "\n";
+  fs::permissions(fake, fs::perms::owner_all);
+  fs::create_directories(work_ / "run");
+  Result r = wiggle("plot run", "WIGGLE_PYTHON=" + quoted(fake.string()));
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(slurp(root_ / "args"), "-m wiggleplot run --format png,pdf\n");
+  r = wiggle("plot run", "WIGGLE_PYTHON=/nonexistent/python3");
+  expectOneLineError(r, {"/nonexistent/python3", "WIGGLE_PYTHON"}, "WIGGLE_PYTHON missing");
+  fs::remove_all(work_ / "run");
+}
+
+TEST_F(Cli, InterruptedRunsAndSweepsExit128PlusTheSignal) {
+  // A bed of about 1,500 grains in its own cache: making it takes longer than the wait above.
+  const fs::path config = root_ / "slow.toml";
+  std::ofstream(config) << "[box]\nwidth = 40.0\nbed_height = 40.0\nseed = 3\n"
+                        << "[run]\nduration = 50.0\nplot = false\ndump_interval = 0.0\n[fields]\nenabled = false\n";
+  for (const auto& [signal, expected] : {std::pair{SIGINT, 130}, std::pair{SIGTERM, 143}}) {
+    const fs::path out = work_ / ("run" + std::to_string(signal));
+    const Stopped s = startAndSignal({WIGGLE_BINARY, "run", config.string(), "--out", out.string(), "--threads", "1"},
+                                     out / "log.txt", signal, logs_ / "err", root_ / ("cache" + std::to_string(signal)));
+    EXPECT_TRUE(s.exited) << "killed by the signal instead of stopping: " << s.err;
+    EXPECT_EQ(s.status, expected) << s.err;
+    EXPECT_NE(s.err.find("interrupted"), std::string::npos) << s.err;
+  }
+  const fs::path sweep = root_ / "slow-sweep.toml";
+  std::ofstream(sweep) << "[sweep]\nname = \"slow\"\n[base.box]\nwidth = 40.0\nbed_height = 40.0\nseed = 4\n"
+                       << "[base.run]\nduration = 50.0\nplot = false\ndump_interval = 0.0\n"
+                       << "[base.fields]\nenabled = false\n[grid.drive]\nperiod = [1.0, 2.0]\n";
+  const fs::path out = work_ / "sweep";
+  const Stopped s = startAndSignal({WIGGLE_BINARY, "sweep", sweep.string(), "--out", out.string(), "--jobs", "1",
+                                    "--threads", "1", "--local"},
+                                   out / "results.csv", SIGTERM, logs_ / "err", root_ / "cache-sweep");
+  EXPECT_TRUE(s.exited) << s.err;
+  EXPECT_EQ(s.status, 143) << s.err;
+  EXPECT_NE(s.err.find("rerun the same command to resume"), std::string::npos) << s.err;
+}
 }  // namespace
 
 namespace wiggle {
