@@ -17,6 +17,7 @@ if(NOT status EQUAL 0 OR NOT model MATCHES "disk")
   message(FATAL_ERROR "installed wiggle model --shape disk: status ${status}")
 endif()
 foreach(file share/wiggle/python/wiggleplot/__main__.py share/wiggle/configs/small.toml
+             share/wiggle/examples/figures.ipynb share/wiggle/results/paper_depth/fig5/results.csv
              share/wiggle/configs/paper.toml share/doc/wiggle/README.md share/doc/wiggle/CONFIG.md
              share/bash-completion/completions/wiggle share/man/man1/wiggle.1)
   if(NOT EXISTS "${PREFIX}/${file}")
@@ -40,3 +41,11 @@ foreach(command IN LISTS commands)
   endif()
 endforeach()
 file(REMOVE_RECURSE "${PREFIX}")
+# The Debian package recommends every Debian package the plotting package and its analysis API
+# import (python/README.md), and ffmpeg for movies.
+file(STRINGS "${BUILD}/CPackConfig.cmake" recommends REGEX "CPACK_DEBIAN_PACKAGE_RECOMMENDS")
+foreach(package python3-matplotlib python3-numpy python3-pandas ffmpeg)
+  if(NOT recommends MATCHES "${package}")
+    message(FATAL_ERROR "the .deb does not recommend ${package}: ${recommends}")
+  endif()
+endforeach()
