@@ -255,6 +255,12 @@ std::vector<std::string> runWarnings(const RiseRate& rate, double averagedFrom, 
                        formatNumber(rate.tInitial) + " to " + formatNumber(rate.tFinal) + "), fewer than " +
                        formatNumber(RiseRate::kMinWindowPeriods) +
                        ": it reflects the phase of the drive more than a drift; run longer (run.duration)");
+  if (rate.withinStartupTransient())
+    warnings.push_back("V_y is measured from t = " + formatNumber(rate.tInitial) + " to " +
+                       formatNumber(rate.tFinal) + ", within the start-up transient of the drive (the first " +
+                       formatNumber(RiseRate::kSettledTime) +
+                       " time units, where the whole bed is set moving): it is not a steady rise or sink; run longer "
+                       "(run.duration; the presets run to t = 100)");
   if (std::fabs(averagedFrom - rate.tInitial) > 0.5 * config.run.sampleInterval)
     warnings.push_back("phase_rates.csv and fields.csv average from t = " + formatNumber(averagedFrom) +
                        ", V_y from t = " + formatNumber(rate.tInitial) +

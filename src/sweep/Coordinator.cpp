@@ -255,6 +255,11 @@ class Coordinator {
       if (out.failed) out.summary += ", " + std::to_string(out.failed) + failed;
       if (out.pending) out.summary += ", " + std::to_string(out.pending) + unfinished;
     }
+    std::size_t warned = 0;
+    for (std::size_t c = 0; c < results_.size(); ++c) warned += counts(c) && !results_[c].warnings.empty();
+    if (warned)
+      out.summary += "; " + std::to_string(warned) + (warned > 1 ? " cases have" : " case has") +
+                     " warnings (warnings column of results.csv, wiggle status)";
     monitor_.event(out.summary);
     return out;
   }
@@ -349,6 +354,7 @@ class Coordinator {
       results_[c].status = "ok";
       monitor_.event("ok " + name + where + ": vy = " + formatNumber(o.result.vy, 4) + ", " + formatDuration(o.wallSeconds) + ", " +
                      formatNumber(o.result.nsPerParticleStep, 3) + " ns/particle-step");
+      for (const std::string& w : o.result.warnings) monitor_.event("warning " + name + ": " + w);
       return;
     }
     results_[c] = CaseResult{};

@@ -376,12 +376,16 @@ namespace {
 TEST_F(Cli, StatusSummarisesASweepDirectory) {
   const fs::path dir = root_ / "sweep";
   fs::create_directories(dir / "cases" / "b");
+  fs::create_directories(dir / "cases" / "a");
+  std::ofstream(dir / "cases" / "a" / "summary.json")
+      << R"({"status": "ok", "vy": 0.1, "warnings": ["V_y is measured over 1.5 drive periods"]})";
   std::ofstream(dir / "results.csv")
-      << "case,run_dir,status,vy,vy_slope,wall_s,drive.period,n_grains,steps,ns_per_particle_step,state_hash,error\n"
-      << "a,cases/a,ok,0.1,0.1,600,5,100,1000,50,abc,\n"
-      << "b,cases/b,running,,,,3,,,,,\n"
-      << "c,cases/c,failed,,,,1,,,,,\"box.width = 5 is too narrow, really\"\n"
-      << "d,cases/d,pending,,,,2,,,,,\n";
+      << "case,run_dir,status,vy,vy_slope,wall_s,drive.period,n_grains,steps,ns_per_particle_step,state_hash,error,"
+         "warnings\n"
+      << "a,cases/a,ok,0.1,0.1,600,5,100,1000,50,abc,,V_y is measured over 1.5 drive periods\n"
+      << "b,cases/b,running,,,,3,,,,,,\n"
+      << "c,cases/c,failed,,,,1,,,,,\"box.width = 5 is too narrow, really\",\n"
+      << "d,cases/d,pending,,,,2,,,,,,\n";
   std::ofstream(dir / "cases" / "b" / "log.txt") << "2026-11-24 10:00:00  [run] 10%  t = 10 / 100\n"
                                                   << "2026-11-24 10:00:30  [run] 25%  t = 25 / 100  ETA 1m\n";
   std::ofstream(dir / "sweep.log") << "2026-11-24 09:00:00  wiggle sweep s: 4 cases; 2 jobs x 1 threads; host h\n";
@@ -391,6 +395,7 @@ TEST_F(Cli, StatusSummarisesASweepDirectory) {
   EXPECT_NE(r.out.find("no wiggle sweep is running"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("running  b (25 % of its run)  [stale: interrupted]"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("failed   c: box.width = 5 is too narrow, really"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("warning  a: V_y is measured over 1.5 drive periods"), std::string::npos) << r.out;
   // 600 s per case x (0.75 + 1) cases left / 2 jobs = 525 s.
   EXPECT_NE(r.out.find("about 8m45s"), std::string::npos) << r.out;
 
@@ -398,6 +403,34 @@ TEST_F(Cli, StatusSummarisesASweepDirectory) {
                      "status of a non-sweep directory");
   expectOneLineError(wiggle("status " + quoted((root_ / "nowhere").string())), {"nowhere", "not a directory"},
                      "status of a missing directory");
+}
+
+// One truth for a case's state: results.csv says ok but the case's summary.json is garbage, so the
+// sweep would run it again (its --dry-run says so): `wiggle status` must not call it done. When
+// only failed cases are left, a rerun retries them: not "nothing left to run". A running case
+// whose log says its bed was loaded is not "making its bed".
+TEST_F(Cli, StatusAgreesWithTheSweepOnWhatIsLeft) {
+  const fs::path dir = root_ / "sweep";
+  for (const char* c : {"a", "b", "c"}) fs::create_directories(dir / "cases" / c);
+  std::ofstream(dir / "cases" / "a" / "summary.json") << "{garbage";
+  std::ofstream(dir / "cases" / "c" / "log.txt")
+      << "2026-11-24 10:00:00  wiggle 0.1.0 (git x) run --resume in cases/c with 1 thread, avx2 force kernels\n"
+      << "2026-11-24 10:00:01  bed loaded from /cache/bed-1.bin (200 grains, surface 12, 0.1 s)\n";
+  std::ofstream(dir / "results.csv") << "case,run_dir,status,vy,vy_slope,wall_s,drive.period,error\n"
+                                     << "a,cases/a,ok,0.1,0.1,600,5,\n"
+                                     << "b,cases/b,failed,,,,3,blew up\n"
+                                     << "c,cases/c,running,,,,2,\n";
+  Result r = wiggle("status " + quoted(dir.string()));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("3 cases: 0 done, 1 running, 1 failed, 1 pending"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("pending  a: results.csv says ok, but"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("running  c (bed loaded from the cache, run started"), std::string::npos) << r.out;
+  std::ofstream(dir / "results.csv") << "case,run_dir,status,vy,vy_slope,wall_s,drive.period,error\n"
+                                     << "b,cases/b,failed,,,,3,blew up\n";
+  r = wiggle("status " + quoted(dir.string()));
+  EXPECT_EQ(r.out.find("nothing left to run\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("nothing left to run but the 1 failed case: the same `wiggle sweep` command retries it"),
+            std::string::npos) << r.out;
 }
 
 }  // namespace
