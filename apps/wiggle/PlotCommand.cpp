@@ -106,8 +106,9 @@ std::vector<char*> pointers(std::vector<std::string>& strings) {
 int runPlotter(const std::vector<std::string>& args) {
   const std::string python = pythonInterpreter();
   if (access(python.c_str(), X_OK) != 0) {
-    throw Error("python3 not found at " + python +
-                " (install Debian's python3 and python3-matplotlib, or set WIGGLE_PYTHON to a python3 that has matplotlib)");
+    throw Error(
+        "python3 not found at " + python +
+        " (install Debian's python3 and python3-matplotlib, or set WIGGLE_PYTHON to a python3 that has matplotlib)");
   }
   std::vector<std::string> argv = {python, "-m", "wiggleplot"};
   argv.insert(argv.end(), args.begin(), args.end());

@@ -134,8 +134,10 @@ std::uint64_t World::touchingPairs() const {
   for (std::uint32_t k = 0; k < list_.pairCount(); ++k) {
     const std::uint32_t i = list_.owner[k], j = list_.partner[k];
     double dx = s.x[i] - s.x[j];
-    if (dx > halfWidth) dx -= width;
-    else if (dx < -halfWidth) dx += width;
+    if (dx > halfWidth)
+      dx -= width;
+    else if (dx < -halfWidth)
+      dx += width;
     const double dy = s.y[i] - s.y[j], reach = s.radius[i] + s.radius[j];
     touching += dx * dx + dy * dy < reach * reach;
   }

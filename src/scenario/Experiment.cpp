@@ -7,10 +7,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <numbers>
 #include <optional>
 #include <sstream>
-#include <nlohmann/json.hpp>
 
 #include "analysis/FieldObserver.h"
 #include "analysis/RiseRate.h"
@@ -117,7 +117,8 @@ void prepareRunDirectory(const std::string& dir, const RunConfig& config, const 
       throw Error("--resume: cannot continue the run in " + dir + ": " + why);
   }
   if (resume) removeLeftoverTemporaries(dir);  // of a run killed while writing a file
-  else fs::remove(runWarningsPath(dir), ec);   // a new run has no history
+  else
+    fs::remove(runWarningsPath(dir), ec);  // a new run has no history
   writeFileAtomically(dir + "/config.toml", configToml);
 }
 
@@ -149,8 +150,9 @@ std::optional<Checkpoint> newestGoodCheckpoint(const std::string& dir, const Run
     }
   }
   if (!refused.empty())
-    addRunWarning(dir, "no checkpoint could be read (" + refused +
-                           "): the run restarted from the bed at t = 0 and the time spent on it before was lost",
+    addRunWarning(dir,
+                  "no checkpoint could be read (" + refused +
+                      "): the run restarted from the bed at t = 0 and the time spent on it before was lost",
                   log);
   else
     log.line("no checkpoint: starting from the bed");
@@ -256,8 +258,8 @@ std::vector<std::string> runWarnings(const RiseRate& rate, double averagedFrom, 
                        formatNumber(RiseRate::kMinWindowPeriods) +
                        ": it reflects the phase of the drive more than a drift; run longer (run.duration)");
   if (rate.withinStartupTransient())
-    warnings.push_back("V_y is measured from t = " + formatNumber(rate.tInitial) + " to " +
-                       formatNumber(rate.tFinal) + ", within the start-up transient of the drive (the first " +
+    warnings.push_back("V_y is measured from t = " + formatNumber(rate.tInitial) + " to " + formatNumber(rate.tFinal) +
+                       ", within the start-up transient of the drive (the first " +
                        formatNumber(RiseRate::kSettledTime) +
                        " time units, where the whole bed is set moving): it is not a steady rise or sink; run longer "
                        "(run.duration; the presets run to t = 100)");
@@ -269,8 +271,8 @@ std::vector<std::string> runWarnings(const RiseRate& rate, double averagedFrom, 
   return warnings;
 }
 
-RunSummary summarise(const Case& run, const std::string& dir, const World& world, const RunState& state, const FieldObserver& fields,
-                     const RiseRate& rate, double averagedFrom) {
+RunSummary summarise(const Case& run, const std::string& dir, const World& world, const RunState& state,
+                     const FieldObserver& fields, const RiseRate& rate, double averagedFrom) {
   const RunConfig& config = run.config;
   RunSummary summary;
   summary.vy = rate.vy;
@@ -366,8 +368,8 @@ bool stepToTheEnd(const Case& run, const RunOptions& options, const std::string&
         progress.clear();
         log.line("interrupted by signal " + std::to_string(signal) + " at step " + std::to_string(step) +
                  "; checkpoint written");
-        throw Interrupted(signal, "interrupted at t = " + formatNumber(world.time()) + "; continue with: wiggle run --out " + dir +
-                    " --resume");
+        throw Interrupted(signal, "interrupted at t = " + formatNumber(world.time()) +
+                                      "; continue with: wiggle run --out " + dir + " --resume");
       }
       if (secondsSince(lastCheckpoint) >= run.config.run.checkpointInterval) {
         writeCheckpoint(dir, configToml, world, state, fields);
@@ -450,8 +452,10 @@ RunOutcome runExperiment(const Case& run, const RunOptions& options) {
     loaded.emplace(startFromBed(run, state, log, progress));
     // A run without dumps leaves no dump file (not an empty one); one with dumps starts it afresh.
     std::error_code ec;
-    if (run.steps.dumpEvery) std::ofstream(dumpPath, std::ios::trunc);
-    else fs::remove(dumpPath, ec);
+    if (run.steps.dumpEvery)
+      std::ofstream(dumpPath, std::ios::trunc);
+    else
+      fs::remove(dumpPath, ec);
     state.dumpBytes = 0;
   } else {
     // Drop dump frames written after the checkpoint: they will be written again.

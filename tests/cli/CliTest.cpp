@@ -287,7 +287,6 @@ TEST_F(Cli, RunCheckPrintsWhatTheRunWouldBeAndWritesNothing) {
   fs::remove(work_ / "existing");
 }
 
-
 // A run or sweep stopped by SIGINT or SIGTERM saves its work and exits 128 + the signal (130, 143),
 // not 2 (bad input), and not by dying of the signal: scripts and Slurm tell "resume me" from "fix
 // your input". The process is started directly (fork/exec: no shell in between to translate a
@@ -347,8 +346,9 @@ TEST_F(Cli, InterruptedRunsAndSweepsExit128PlusTheSignal) {
                         << "[run]\nduration = 50.0\nplot = false\ndump_interval = 0.0\n[fields]\nenabled = false\n";
   for (const auto& [signal, expected] : {std::pair{SIGINT, 130}, std::pair{SIGTERM, 143}}) {
     const fs::path out = work_ / ("run" + std::to_string(signal));
-    const Stopped s = startAndSignal({WIGGLE_BINARY, "run", config.string(), "--out", out.string(), "--threads", "1"},
-                                     out / "log.txt", signal, logs_ / "err", root_ / ("cache" + std::to_string(signal)));
+    const Stopped s =
+        startAndSignal({WIGGLE_BINARY, "run", config.string(), "--out", out.string(), "--threads", "1"},
+                       out / "log.txt", signal, logs_ / "err", root_ / ("cache" + std::to_string(signal)));
     EXPECT_TRUE(s.exited) << "killed by the signal instead of stopping: " << s.err;
     EXPECT_EQ(s.status, expected) << s.err;
     EXPECT_NE(s.err.find("interrupted"), std::string::npos) << s.err;
@@ -358,9 +358,9 @@ TEST_F(Cli, InterruptedRunsAndSweepsExit128PlusTheSignal) {
                        << "[base.run]\nduration = 50.0\nplot = false\ndump_interval = 0.0\n"
                        << "[base.fields]\nenabled = false\n[grid.drive]\nperiod = [1.0, 2.0]\n";
   const fs::path out = work_ / "sweep";
-  const Stopped s = startAndSignal({WIGGLE_BINARY, "sweep", sweep.string(), "--out", out.string(), "--jobs", "1",
-                                    "--threads", "1", "--local"},
-                                   out / "results.csv", SIGTERM, logs_ / "err", root_ / "cache-sweep");
+  const Stopped s = startAndSignal(
+      {WIGGLE_BINARY, "sweep", sweep.string(), "--out", out.string(), "--jobs", "1", "--threads", "1", "--local"},
+      out / "results.csv", SIGTERM, logs_ / "err", root_ / "cache-sweep");
   EXPECT_TRUE(s.exited) << s.err;
   EXPECT_EQ(s.status, 143) << s.err;
   EXPECT_NE(s.err.find("rerun the same command to resume"), std::string::npos) << s.err;
@@ -430,7 +430,8 @@ TEST_F(Cli, StatusAgreesWithTheSweepOnWhatIsLeft) {
   r = wiggle("status " + quoted(dir.string()));
   EXPECT_EQ(r.out.find("nothing left to run\n"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("nothing left to run but the 1 failed case: the same `wiggle sweep` command retries it"),
-            std::string::npos) << r.out;
+            std::string::npos)
+      << r.out;
 }
 
 }  // namespace

@@ -214,7 +214,6 @@ TEST(Experiment, CorruptCheckpointFallsBackToThePreviousOne) {
   EXPECT_NE(readFile(dir + "/log.txt").find("checksum"), std::string::npos);
 }
 
-
 TEST(Experiment, ResumingAFinishedRunRewritesTheSameSummary) {
   // --resume on a finished run rewrites its results from the last checkpoint, where the pairs'
   // forces are not held: the summary must still count the contacts of the last step.
@@ -276,7 +275,6 @@ TEST(Experiment, UnreadableCheckpointsRestartFromTheBedWithAWarning) {
   // A new run in a fresh directory has no such history.
   EXPECT_EQ(readRunWarnings(scratch("no-such-run")).size(), 0u);
 }
-
 
 TEST(Experiment, DamagedCheckpointsAndBedsAreNeverLoaded) {
   // A real checkpoint and a real cached bed, each damaged 100 ways (50 truncations at random

@@ -145,14 +145,15 @@ TEST(ResultsTable, RowsForPendingOkAndFailedCases) {
   const std::string csv = resultsCsv(spec, {"cases/a", "cases/b", "cases/c"}, results);
   const auto rows = parseCsv(csv);
   ASSERT_EQ(rows.size(), 4u);
-  const std::vector<std::string> header = {"case", "run_dir", "status", "vy", "vy_slope", "wall_s", "case_label",
-                                           "intruder.y0", "drive.period", "intruder.shape", "drive.amplitude",
-                                           "contact.mu", "box.seed", "n_grains", "steps", "ns_per_particle_step",
-                                           "state_hash", "error", "warnings"};
+  const std::vector<std::string> header = {"case",         "run_dir",        "status",          "vy",
+                                           "vy_slope",     "wall_s",         "case_label",      "intruder.y0",
+                                           "drive.period", "intruder.shape", "drive.amplitude", "contact.mu",
+                                           "box.seed",     "n_grains",       "steps",           "ns_per_particle_step",
+                                           "state_hash",   "error",          "warnings"};
   EXPECT_EQ(rows[0], header);
-  EXPECT_EQ(rows[1], (std::vector<std::string>{"deep_period=1", "cases/a", "ok", "0.125", "-0.5", "3", "deep", "20", "1",
-                                               "disk", "3", "0.1", "1", "100", "2000", "0", "abc", "",
-                                               "one, with a comma | two"}));
+  EXPECT_EQ(rows[1],
+            (std::vector<std::string>{"deep_period=1", "cases/a", "ok", "0.125", "-0.5", "3", "deep", "20", "1", "disk",
+                                      "3", "0.1", "1", "100", "2000", "0", "abc", "", "one, with a comma | two"}));
   EXPECT_EQ(rows[2][2], "failed");
   EXPECT_EQ(rows[2][3], "");
   EXPECT_EQ(rows[2][rows[2].size() - 2], "box.width = 5 is too narrow, really");
@@ -237,10 +238,10 @@ TEST_F(SweepRunnerTest, RunsEveryCaseRecordsFailuresAndResumes) {
   ASSERT_EQ(rows.size(), 6u);
   // Columns: the fixed ones, the grid keys, the always-present parameters, bookkeeping, error.
   const auto header = parseCsv(readFile(out + "/results.csv"))[0];
-  const std::vector<std::string> expected = {"case", "run_dir", "status", "vy", "vy_slope", "wall_s",
-                                             "drive.amplitude", "drive.period", "intruder.shape", "contact.mu",
-                                             "box.seed", "n_grains", "steps", "ns_per_particle_step", "state_hash", "error",
-                                             "warnings"};
+  const std::vector<std::string> expected = {
+      "case",         "run_dir",        "status",     "vy",       "vy_slope", "wall_s", "drive.amplitude",
+      "drive.period", "intruder.shape", "contact.mu", "box.seed", "n_grains", "steps",  "ns_per_particle_step",
+      "state_hash",   "error",          "warnings"};
   EXPECT_EQ(header, expected);
   // Case order is the sweep's: the last grid key varies fastest.
   const auto all = parseCsv(readFile(out + "/results.csv"));
