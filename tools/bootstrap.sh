@@ -31,7 +31,14 @@ cmake --build --preset "$preset" -j "$(nproc)"
 what="${1:-}"
 shift || true
 case "$what" in
-  run) exec "build/$preset/wiggle" run "$@" ;;
+  # Typed again (the README's first command), the default run continues in wiggle-out: an
+  # interrupted run from its checkpoint, a finished one only has its results and figures rewritten.
+  run)
+    if [ $# -eq 0 ] && [ -e wiggle-out/config.toml ]; then
+      echo "bootstrap: wiggle-out already holds a run: continuing it (wiggle run --resume; --out DIR for a new one)"
+      set -- --resume
+    fi
+    exec "build/$preset/wiggle" run "$@" ;;
   # A failing test gets one more attempt: the SIGKILL harness (label reliability) aims its kills at
   # moments measured on the machine, and a loaded machine can make a planned kill miss its window.
   # The first failure stays in the log; a test that fails twice fails the run.

@@ -45,6 +45,20 @@ void requireOutputDirectory(const std::string& flag, const std::string& path) {
   throw Error(name + ": parent " + parent.string() + " is not a directory");
 }
 
+void requireWritableOutputDirectory(const std::string& flag, const std::string& path) {
+  requireOutputDirectory(flag, path);
+  fs::path dir(path);
+  if (dir.has_relative_path() && !dir.has_filename()) dir = dir.parent_path();
+  const bool exists = fs::is_directory(dir);
+  const fs::path where = exists ? dir : dir.has_parent_path() ? dir.parent_path() : fs::path(".");
+  std::string probe = (where / ".wiggle-check-XXXXXX").string();
+  if (::mkdtemp(probe.data()) == nullptr)
+    throw Error(flag + " " + path + ": cannot " + (exists ? "write in the directory" : "create the directory") + ": " +
+                std::strerror(errno));
+  std::error_code ec;
+  fs::remove(probe, ec);
+}
+
 void requireOutputFile(const std::string& name, const std::string& path) {
   std::error_code ec;
   if (fs::is_directory(path, ec)) throw Error(name + ": is a directory, not a file");

@@ -17,6 +17,12 @@ void requireInputFile(const std::string& path, const std::string& what);
 // (the command's default) is not checked.
 void requireOutputDirectory(const std::string& flag, const std::string& path);
 
+// requireOutputDirectory, then that the directory can really be written or made: a scratch
+// directory is made in it (or, for a new one, beside it, in its parent) and removed at once, so
+// nothing stays behind. For `run --check`, which must find what the run would stumble on; access()
+// alone would not do (root passes it in /proc, where nothing can be made).
+void requireWritableOutputDirectory(const std::string& flag, const std::string& path);
+
 // An output file (`name`: "--out report.html", or the default path the command names): not a
 // directory, and its directory exists and is writable (the file is written to a temporary name
 // there and renamed), e.g. "--out /nonexistent/r.html: directory /nonexistent does not exist".

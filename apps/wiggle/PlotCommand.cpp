@@ -28,7 +28,12 @@ namespace fs = std::filesystem;
 
 // The interpreter is Debian's, which carries python3-matplotlib and python3-numpy; a pyenv or
 // venv python3 earlier on PATH usually lacks them.
-constexpr const char* kPython = "/usr/bin/python3";
+// Debian's python3, which has Debian's matplotlib, numpy and pandas; WIGGLE_PYTHON chooses another
+// interpreter (a virtual environment, a conda python) that has them.
+std::string pythonInterpreter() {
+  const char* env = std::getenv("WIGGLE_PYTHON");
+  return env != nullptr && *env != '\0' ? env : "/usr/bin/python3";
+}
 
 bool holdsPackage(const fs::path& dir) {
   std::error_code ec;
@@ -94,23 +99,25 @@ std::vector<char*> pointers(std::vector<std::string>& strings) {
 
 }  // namespace
 
-// Runs `/usr/bin/python3 -m wiggleplot ARGS...` and returns its exit status (128 + signal when it
+// Runs `PYTHON -m wiggleplot ARGS...` (pythonInterpreter()) and returns its exit status (128 + signal when it
 // was killed). Other commands (e.g. `wiggle run` drawing its figures at the end) may declare and
 // call it. Throws Error when python3 or the package is missing; the package itself reports a
 // missing matplotlib or numpy in one line and exits with status 3.
 int runPlotter(const std::vector<std::string>& args) {
-  if (access(kPython, X_OK) != 0) {
-    throw Error(std::string("python3 not found at ") + kPython +
-                " (install Debian's python3 and python3-matplotlib)");
+  const std::string python = pythonInterpreter();
+  if (access(python.c_str(), X_OK) != 0) {
+    throw Error(
+        "python3 not found at " + python +
+        " (install Debian's python3 and python3-matplotlib, or set WIGGLE_PYTHON to a python3 that has matplotlib)");
   }
-  std::vector<std::string> argv = {kPython, "-m", "wiggleplot"};
+  std::vector<std::string> argv = {python, "-m", "wiggleplot"};
   argv.insert(argv.end(), args.begin(), args.end());
   std::vector<std::string> env = childEnvironment(packageDir());
   auto argvPtr = pointers(argv);
   auto envPtr = pointers(env);
   pid_t pid = 0;
-  if (int rc = posix_spawn(&pid, kPython, nullptr, nullptr, argvPtr.data(), envPtr.data()); rc != 0) {
-    throw Error(std::string("cannot start ") + kPython + ": " + std::strerror(rc));
+  if (int rc = posix_spawn(&pid, python.c_str(), nullptr, nullptr, argvPtr.data(), envPtr.data()); rc != 0) {
+    throw Error("cannot start " + python + ": " + std::strerror(rc));
   }
   int status = 0;
   while (waitpid(pid, &status, 0) < 0) {

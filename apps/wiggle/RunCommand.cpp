@@ -86,7 +86,11 @@ void addRunCommand(CLI::App& app) {
   cmd->add_flag("--check", args->check,
                 "Check the config and print what the run would be (grains, steps, bed cached or not, "
                 "estimated cost); run nothing, write nothing");
-  cmd->footer("Config keys (TOML section.key, default, unit):\n" + configHelp());
+  cmd->footer(
+      "Exit status: 0 done, 2 bad input (one line names the problem), 130 or 143 when SIGINT (Ctrl-C) or\n"
+      "SIGTERM stopped it after a checkpoint (continue with --resume), 3 an internal error.\n\n"
+      "Config keys (TOML section.key, default, unit):\n" +
+      configHelp());
   cmd->callback([args] {
     defaultSimdLevel();  // a bad WIGGLE_SIMD is bad input before anything is written
     std::optional<std::string> path;
@@ -98,6 +102,7 @@ void addRunCommand(CLI::App& app) {
     requireOutputDirectory("--out", args->out);
     const RunConfig config = loadRunConfig(path, args->sets);
     if (args->check) {
+      requireWritableOutputDirectory("--out", args->out);
       printCheck(config, args->out, args->resume);
       return;
     }

@@ -54,7 +54,8 @@ void addSweepCommand(CLI::App& app) {
       "Each case runs in DIR/cases/<case name>/ as `wiggle run ... --resume`; DIR/results.csv is rewritten after\n"
       "every case, DIR/sweep.log records what happened. Run the same command again to resume: finished cases\n"
       "are skipped, interrupted ones continue from their checkpoints, failed ones are retried.\n"
-      "Exit status: 0 when every case is ok, 1 when some failed or did not finish, 2 for bad input.");
+      "Exit status: 0 when every case is ok, 1 when some failed or did not finish, 2 for bad input, 130 or 143\n"
+      "when SIGINT or SIGTERM stopped it (its cases checkpointed: run the same command to resume).");
   cmd->callback([args] {
     defaultSimdLevel();  // a bad WIGGLE_SIMD is bad input before anything is written
     if (!args->makeBed.empty()) {
@@ -80,6 +81,7 @@ void addSweepCommand(CLI::App& app) {
     options.onlyCase = args->onlyCase;
     const SweepOutcome outcome = runSweep(args->file, options);
     if (outcome.worker || args->dryRun) return;
+    if (outcome.interrupted) throw Interrupted(outcome.stopSignal, outcome.summary);
     if (outcome.failed || outcome.pending) {
       std::fprintf(stderr, "wiggle: %s\n", outcome.summary.c_str());
       std::fflush(nullptr);

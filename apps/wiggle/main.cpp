@@ -63,6 +63,8 @@ int main(int argc, char** argv) {
   app.footer(
       "Environment:\n"
       "  WIGGLE_CACHE     directory of cached beds (default ~/.cache/wiggle; a config's bed.cache_dir wins)\n"
+      "  WIGGLE_PYTHON    the python3 that `wiggle plot` and `report` run (default /usr/bin/python3; it needs\n"
+      "                   matplotlib and numpy); WIGGLE_PYTHONPATH: where its wiggleplot package is\n"
       "  WIGGLE_SIMD      cap the force kernels' instruction set: scalar, avx2 or avx512 (default: the widest\n"
       "                   the CPU runs; every one gives the same bits, docs/PERFORMANCE.md)\n"
       "  OMP_WAIT_POLICY  passive: OpenMP threads sleep instead of spinning at barriers (slower on a quiet\n"
@@ -84,6 +86,9 @@ int main(int argc, char** argv) {
     if (dynamic_cast<const CLI::Success*>(&e)) return app.exit(e);  // --help, --version
     std::fprintf(stderr, "%s\n", parseErrorLine(app, e).c_str());
     return 2;
+  } catch (const wiggle::Interrupted& e) {
+    std::fprintf(stderr, "wiggle: %s\n", e.what());
+    return e.exitStatus();
   } catch (const wiggle::Error& e) {
     std::fprintf(stderr, "wiggle: %s\n", e.what());
     return 2;

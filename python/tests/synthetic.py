@@ -181,6 +181,8 @@ def write_sweep(sweep_dir, with_runs=True, mus=(0.1,)):
                                      shape, a, T, mu, seed])
                         if with_runs and shape == "disk" and mu == mus[0]:
                             write_sweep_run(os.path.join(sweep_dir, run_dir), a, T, vy)
+                        # What makes a case finished (readers.case_finished): its summary says ok.
+                        write_case_summary(os.path.join(sweep_dir, run_dir), vy)
     rows.append([FAILED_CASE, "runs/case_failed", "failed", "", "", "0.5", "disk", 5.0, 4.0, mus[0], 3])
     with open(os.path.join(sweep_dir, "results.csv"), "w", newline="") as f:
         w = csv.writer(f)
@@ -188,6 +190,12 @@ def write_sweep(sweep_dir, with_runs=True, mus=(0.1,)):
                     "drive.amplitude", "drive.period", "contact.mu", "box.seed"])
         w.writerows(rows)
     return rows
+
+
+def write_case_summary(run_dir, vy, warnings=()):
+    os.makedirs(run_dir, exist_ok=True)
+    with open(os.path.join(run_dir, "summary.json"), "w") as f:
+        json.dump({"status": "ok", "vy": vy, "vy_slope": vy, "warnings": list(warnings)}, f)
 
 
 def write_sweep_run(run_dir, a, T, vy):

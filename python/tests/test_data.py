@@ -57,6 +57,42 @@ class DataTest(unittest.TestCase):
         with self.assertRaises(KeyError):
             wp.load_case(d, "no such case")
 
+    def test_frames_carry_their_units(self):
+        import wiggleplot as wp
+        d = os.path.join(self.tmp, "run")
+        synthetic.write_run(d)
+        run = wp.load_run(d)
+        units = run.trajectory.attrs["units"]
+        self.assertEqual((units["t"], units["y"], units["vy"]), ("sqrt(d/g)", "d", "sqrt(g d)"))
+        self.assertEqual(run.fields.attrs["units"]["pressure"], "rho g d^2")
+        s = os.path.join(self.tmp, "sweep")
+        synthetic.write_sweep(s)
+        units = wp.load_sweep(s).attrs["units"]
+        self.assertEqual((units["vy"], units["drive.period"], units["drive.amplitude"]), ("sqrt(g d)", "sqrt(d/g)", "d"))
+        self.assertNotIn("case", units)
+
+    def test_run_without_a_wiggle_anywhere_says_what_to_do(self):
+        # The package in a clone with nothing built and no wiggle on PATH: the package's own error
+        # naming the build command, not a raw FileNotFoundError.
+        tree = os.path.join(self.tmp, "clone")
+        shutil.copytree(os.path.join(REPO, "python", "wiggleplot"), os.path.join(tree, "python", "wiggleplot"))
+        code = ("import wiggleplot as wp\n"
+                "try:\n    wp.run('x.toml', 'out')\n"
+                "except wp.WiggleError as e:\n    print('WiggleError', e.status, e)\n")
+        done = subprocess.run(["/usr/bin/python3", "-c", code], capture_output=True, text=True, cwd=self.tmp,
+                              env={"PATH": "/nonexistent", "PYTHONPATH": os.path.join(tree, "python")})
+        self.assertEqual(done.returncode, 0, done.stderr)
+        self.assertIn("WiggleError 127", done.stdout)
+        self.assertIn("tools/bootstrap.sh build", done.stdout)
+        # Built in that clone: its build tree's binary is the one run.
+        os.makedirs(os.path.join(tree, "build", "release"))
+        binary = self._fake_wiggle("exit 0\n")
+        os.symlink(binary, os.path.join(tree, "build", "release", "wiggle"))
+        done = subprocess.run(["/usr/bin/python3", "-c", "import wiggleplot as wp; print(wp.find_wiggle())"],
+                              capture_output=True, text=True, cwd=self.tmp, env={"PATH": "/nonexistent",
+                                                                   "PYTHONPATH": os.path.join(tree, "python")})
+        self.assertEqual(done.stdout.strip(), os.path.join(tree, "build", "release", "wiggle"), done.stderr)
+
     def _fake_wiggle(self, body):
         path = os.path.join(self.tmp, "wiggle")
         with open(path, "w") as f:
@@ -98,7 +134,8 @@ class DataTest(unittest.TestCase):
     def test_example_notebook_runs_on_a_sweep(self):
         d = os.path.join(self.tmp, "sweep")
         synthetic.write_sweep(d)
-        env = dict(os.environ, WIGGLE_SWEEP_DIR=d, MPLBACKEND="Agg",
+        figures = os.path.join(self.tmp, "figures")
+        env = dict(os.environ, WIGGLE_SWEEP_DIR=d, WIGGLE_FIGURES_DIR=figures, MPLBACKEND="Agg",
                    PYTHONPATH=os.path.join(REPO, "python") + os.pathsep + os.environ.get("PYTHONPATH", ""))
         done = subprocess.run(["/usr/bin/python3", "-m", "nbconvert", "--to", "notebook", "--execute",
                                "--output-dir", self.tmp, "--ExecutePreprocessor.timeout=120",
@@ -106,7 +143,7 @@ class DataTest(unittest.TestCase):
                               env=env, capture_output=True, text=True)
         self.assertEqual(done.returncode, 0, done.stderr[-2000:])
         for name in ("rate_vs_period.png", "rate_map.png"):
-            self.assertTrue(os.path.exists(os.path.join(d, "figures", name)), name)
+            self.assertTrue(os.path.exists(os.path.join(figures, name)), name)
 
 
 if __name__ == "__main__":

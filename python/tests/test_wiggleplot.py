@@ -192,6 +192,51 @@ class SweepDataTest(DataDirs):
         self.assertTrue(math.isnan(rows["triangle"]["T_rise_model"]))  # no model.json for it
         self.assertEqual(sweep.model("disk")["amplitude"], 5.0)  # the largest amplitude's model
 
+    def test_table1_texts_fit_their_cells(self):
+        # The notes are long ("rises already at the smallest T = 1") beside short cells ("< 1"):
+        # each text must lie inside its own cell, not run over its neighbours.
+        nan = float("nan")
+        rows = [{"shape": "disk", "A": 3.0, "mu": "", "l": 3.5, "T_rise_model": 2.1, "T_rising_observed": nan,
+                 "T_below": nan, "T_above": 1.0, "note": "rises already at the smallest T = 1"},
+                {"shape": "rect_wide", "A": 3.0, "mu": "", "l": "3.1/3.3", "T_rise_model": 4.25,
+                 "T_rising_observed": 4.6, "T_below": 4.0, "T_above": 5.0,
+                 "note": "V_y > 0 also at T = 0.5, 1, 1.5, 2, 2.5"}]
+        fig = sweepplots.table1_figure(rows)
+        fig.canvas.draw()
+        renderer = fig.canvas.get_renderer()
+        table = fig.axes[0].tables[0]
+        for key, cell in table.get_celld().items():
+            text = cell.get_text().get_window_extent(renderer)
+            box = cell.get_window_extent(renderer)
+            self.assertTrue(text.x0 >= box.x0 - 0.5 and text.x1 <= box.x1 + 0.5 and text.y0 >= box.y0 - 0.5
+                            and text.y1 <= box.y1 + 0.5, f"cell {key} {cell.get_text().get_text()!r}: text "
+                            f"{text.x0:.0f}-{text.x1:.0f} x {text.y0:.0f}-{text.y1:.0f} outside its cell "
+                            f"{box.x0:.0f}-{box.x1:.0f} x {box.y0:.0f}-{box.y1:.0f}")
+        from matplotlib import pyplot
+        pyplot.close(fig)
+
+    def test_a_case_with_a_torn_summary_is_not_done(self):
+        # results.csv says ok, but the case's summary.json is garbage: the sweep would run it again
+        # (caseFinished), so the figures must not count it either.
+        d = os.path.join(self.tmp, "torn")
+        rows = synthetic.write_sweep(d, with_runs=False)
+        with open(os.path.join(d, rows[0][1], "summary.json"), "w") as f:
+            f.write("{garbage")
+        results = readers.read_results(d)
+        self.assertEqual(results["status"][0], "pending")
+        self.assertTrue(math.isnan(results["vy"][0]))
+        self.assertEqual(results["status"][1], "ok")
+        self.assertFalse(prepare.usable_rows(results)[0])
+
+    def test_report_shows_each_cases_warnings(self):
+        from wiggleplot import htmlreport
+        from wiggleplot.data import load_sweep
+        status = {"name": "s", "sweep_running": False, "eta_s": None, "text": "",
+                  "cases": [{"name": "case_001", "status": "ok", "error": "", "vy": 0.1, "wall_s": 1.0,
+                             "fraction": None, "warnings": ["V_y is measured over 0.9 drive periods"]}]}
+        page = htmlreport.render(self.sweep_dir, status, load_sweep(self.sweep_dir), [], [])
+        self.assertIn("warning: V_y is measured over 0.9 drive periods", page)
+
     def test_rate_map_grid(self):
         sweep = sweepplots.Sweep(self.sweep_dir, quiet_report())
         amps, periods, grid, counts = sweepplots.rate_map(sweep, "triangle", sweep.rows)
@@ -265,13 +310,57 @@ class FigureFilesTest(DataDirs):
         self.assertEqual(list(y), [25.0, 25.5, 26.0])
         self.assertEqual(len(runplots.path_until(traj, -1.0)[0]), 0)
 
-    def test_movie(self):
-        if not (shutil.which("ffmpeg") or os.path.exists("/usr/bin/ffmpeg")):
-            self.skipTest("no ffmpeg")
-        out_dir = os.path.join(self.tmp, "movie")
-        run = runplots.Run(self.run_dir, quiet_report())
+    def decoded_movie(self, run_dir, name):
+        """(frame count, (width, height), decode(k) -> RGB array of frame k) of the movie of run_dir."""
+        import subprocess
+        from matplotlib import image
+        out_dir = os.path.join(self.tmp, name)
+        run = runplots.Run(run_dir, quiet_report())
         runplots.write_movie(run, out_dir)
-        self.assert_files(out_dir, ["movie.mp4"])
+        movie = os.path.join(out_dir, "movie.mp4")
+        self.assertEqual(sorted(os.listdir(out_dir)), ["movie.mp4"])  # no temporary left
+        probe = subprocess.run(["ffprobe", "-v", "error", "-count_frames", "-select_streams", "v:0",
+                                "-show_entries", "stream=nb_read_frames,width,height", "-of", "csv=p=0", movie],
+                               capture_output=True, text=True, check=True).stdout.strip().split(",")
+        width, height, count = (int(v) for v in probe)
+
+        def decode(k):
+            png = os.path.join(out_dir, f"decoded{k}.png")
+            subprocess.run(["ffmpeg", "-v", "error", "-y", "-i", movie, "-vf", f"select=eq(n\\,{k})",
+                            "-vframes", "1", png], check=True)
+            return image.imread(png)[:, :, :3]
+        return count, (width, height), decode
+
+    def drawn_frame(self, run_dir, k):
+        from matplotlib import image
+        frames = runplots.MovieFrames(runplots.Run(run_dir, quiet_report()))
+        frames.draw(k)
+        png = os.path.join(self.tmp, f"drawn{k}.png")
+        frames.save_png(png)
+        size = frames.size
+        frames.close()
+        return size, image.imread(png)[:, :, :3]
+
+    def test_movie_holds_every_dump_frame_as_drawn(self):
+        # The movie is decoded: as many frames as the dump, of the size declared, each the picture
+        # of that frame (up to the codec's loss), not sheared stripes of mis-sized frames.
+        if runplots.find_ffmpeg() is None or not shutil.which("ffprobe"):
+            self.skipTest("no ffmpeg/ffprobe")
+        count, size, decode = self.decoded_movie(self.run_dir, "movie")
+        self.assertEqual(count, len(synthetic.DUMP_TIMES))
+        for k in (0, count - 1):
+            drawn_size, drawn = self.drawn_frame(self.run_dir, k)
+            self.assertEqual(size, drawn_size)
+            decoded = decode(k)
+            self.assertEqual(decoded.shape, drawn.shape)
+            self.assertLess(float(np.mean(np.abs(decoded - drawn))), 0.02, f"frame {k}")
+        # One dump frame makes a one-frame movie, not an ffmpeg error.
+        one = os.path.join(self.tmp, "one_frame_run")
+        synthetic.write_run(one, with_fields=False, with_dump=False)
+        synthetic.write_dump(os.path.join(one, "dumps", "dump.lammpstrj"), times=synthetic.DUMP_TIMES[:1])
+        count, size, decode = self.decoded_movie(one, "movie_one")
+        self.assertEqual(count, 1)
+        self.assertLess(float(np.mean(np.abs(decode(0) - self.drawn_frame(one, 0)[1]))), 0.02)
 
     def test_snapshot_times(self):
         out_dir = os.path.join(self.tmp, "snap")

@@ -24,7 +24,7 @@ For analysis (pandas from Debian: python3-pandas):
 
 import os
 
-from wiggleplot.data import RunData, WiggleError, load_case, load_run, load_sweep, run  # noqa: F401
+from wiggleplot.data import RunData, WiggleError, find_wiggle, load_case, load_run, load_sweep, run  # noqa: F401
 
 __version__ = "0.1.0"
 

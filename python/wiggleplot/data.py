@@ -18,11 +18,31 @@ def _pandas():
     return pandas
 
 
+# The unit of each column the files hold (docs/OUTPUT-FORMATS.md), put on every DataFrame as
+# df.attrs["units"] (column -> unit; columns without a unit, like counts and names, are left out).
+LENGTH, TIME, SPEED, FORCE, STRESS = "d", "sqrt(d/g)", "sqrt(g d)", "rho d^3 g", "rho g d^2"
+UNITS = {
+    "t": TIME, "x": LENGTH, "y": LENGTH, "vx": SPEED, "vy": SPEED, "fy": FORCE,
+    "phase_center": "10 phi / pi", "vy_mean": SPEED,
+    "phase": "10 phi / pi", "phi": "1 (area fraction)", "sxx": STRESS, "sxy": STRESS, "syy": STRESS,
+    "pressure": STRESS,
+    "vy_slope": SPEED, "vy_settled": SPEED, "t_settled": TIME, "wall_s": "s", "ns_per_particle_step": "ns",
+    "drive.amplitude": LENGTH, "drive.period": TIME, "contact.mu": "1", "intruder.y0": LENGTH,
+    "box.width": LENGTH, "box.bed_height": LENGTH, "run.duration": TIME, "run.dt": TIME,
+}
+
+
+def with_units(frame):
+    """`frame` with frame.attrs["units"]: the unit of each of its columns that has one."""
+    frame.attrs["units"] = {c: UNITS[c] for c in frame.columns if c in UNITS}
+    return frame
+
+
 def _frame(path):
-    """A CSV file as a DataFrame, or None when it does not exist."""
+    """A CSV file as a DataFrame (with its units in .attrs["units"]), or None when it does not exist."""
     if not os.path.exists(path):
         return None
-    return _pandas().read_csv(path)
+    return with_units(_pandas().read_csv(path))
 
 
 @dataclasses.dataclass
@@ -31,7 +51,8 @@ class RunData:
     its vertical contact force); `phase_rates`: bin, phase_center (10 phi / pi), vy_mean, samples;
     `fields`: phase, x, y, phi, vx, vy, sxx, sxy, syy, pressure, frames (or None when fields were
     off); `summary`: summary.json as a dict (None for an unfinished run); `model`: model.json (or
-    None); `config`: the run's configuration as a nested dict (config.toml)."""
+    None); `config`: the run's configuration as a nested dict (config.toml). Each DataFrame carries
+    its columns' units in .attrs["units"] (e.g. run.trajectory.attrs["units"]["vy"] == "sqrt(g d)")."""
     dir: str
     summary: dict
     trajectory: object
@@ -69,11 +90,12 @@ def load_sweep(sweep_dir):
     failed cases included (their numbers NaN): case, run_dir, status, vy, vy_slope, vy_settled,
     t_settled (the paper's t_f rule; absent from tables written before it), wall_s, one
     column per parameter named by its config key (drive.period, intruder.shape, ...), n_grains,
-    steps, ns_per_particle_step, state_hash, error. `load_case(sweep_dir, row)` reads a case's run."""
+    steps, ns_per_particle_step, state_hash, error, warnings. Units in table.attrs["units"].
+    `load_case(sweep_dir, row)` reads a case's run."""
     path = os.path.join(sweep_dir, "results.csv")
     if not os.path.exists(path):
         raise FileNotFoundError(f"{sweep_dir}: no results.csv: not a sweep directory")
-    return _pandas().read_csv(path, keep_default_na=True)
+    return with_units(_pandas().read_csv(path, keep_default_na=True))
 
 
 def load_case(sweep_dir, row):
@@ -95,12 +117,40 @@ class WiggleError(RuntimeError):
         self.status = status
 
 
-def run(config=None, out="wiggle-out", overrides=None, wiggle="wiggle", threads=None, resume=False):
+# Where this package sits: <clone>/python/wiggleplot or <prefix>/share/wiggle/python/wiggleplot.
+_PACKAGE_TREE = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+
+def find_wiggle():
+    """The `wiggle` program that goes with this package: the one installed beside it
+    (<prefix>/bin/wiggle), else the one built in its clone (build/release, then any other preset's),
+    else `wiggle` on PATH. Raises WiggleError saying what to do when there is none."""
+    import glob
+    import shutil
+    share = os.path.dirname(_PACKAGE_TREE)
+    if os.path.basename(_PACKAGE_TREE) == "wiggle" and os.path.basename(share) == "share":  # installed
+        candidates = [os.path.join(os.path.dirname(share), "bin", "wiggle")]
+    else:
+        candidates = [os.path.join(_PACKAGE_TREE, "build", "release", "wiggle")]
+        candidates += sorted(glob.glob(os.path.join(_PACKAGE_TREE, "build", "*", "wiggle")))
+    for path in candidates:
+        if os.path.isfile(path) and os.access(path, os.X_OK):
+            return path
+    on_path = shutil.which("wiggle")
+    if on_path:
+        return on_path
+    raise WiggleError(f"the wiggle program was not found: not built in {_PACKAGE_TREE}/build (run "
+                      "tools/bootstrap.sh build there), not installed beside this package, not on PATH; "
+                      "or pass wiggle=PATH", 127)
+
+
+def run(config=None, out="wiggle-out", overrides=None, wiggle=None, threads=None, resume=False):
     """Runs `wiggle run [CONFIG] --out OUT --set key=value ... --no-plot` and returns load_run(OUT).
     `overrides` maps config keys to values ({"drive.period": 5, "intruder.shape": "triangle"}); a
-    value is passed as TOML (strings quoted, lists as [a, b]). Raises WiggleError with wiggle's own
-    one-line message and exit status when the run fails or the input is refused."""
-    command = [wiggle, "run"]
+    value is passed as TOML (strings quoted, lists as [a, b]). `wiggle`: the program (default:
+    find_wiggle()). Raises WiggleError with wiggle's own one-line message and exit status when the
+    run fails or the input is refused."""
+    command = [wiggle or find_wiggle(), "run"]
     if config is not None:
         command.append(os.fspath(config))
     command += ["--out", os.fspath(out), "--no-plot"]

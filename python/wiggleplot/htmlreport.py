@@ -14,11 +14,12 @@ import math
 import os
 import tempfile
 
+from wiggleplot import prepare
+
 STATUS_ORDER = ("ok", "running", "failed", "pending")
 STATUS_WORDS = {"ok": "done", "running": "running", "failed": "failed", "pending": "pending"}
 # results.csv columns that are not parameters (docs/OUTPUT-FORMATS.md, "Sweep directory").
-NOT_PARAMETERS = {"case", "run_dir", "status", "vy", "vy_slope", "wall_s", "n_grains", "steps",
-                  "ns_per_particle_step", "state_hash", "case_label", "error"}
+NOT_PARAMETERS = prepare.NON_PARAMETERS
 
 STYLE = """
 body { font-family: sans-serif; margin: 2em; color: #222; max-width: 1150px; }
@@ -139,7 +140,7 @@ def render(sweep_dir, status, table, figures, notes):
 
     out.append("<h2>Cases</h2><table><tr><th>case</th>" + ("<th>label</th>" if has_labels else "")
                + "<th>status</th><th>V_y</th><th>slope</th>"
-               + "".join(f"<th>{e(k)}</th>" for k in varied) + "<th>wall time</th><th>error</th></tr>")
+               + "".join(f"<th>{e(k)}</th>" for k in varied) + "<th>wall time</th><th>error, warnings</th></tr>")
     for c in cases:
         row = rows_by_case.get(c["name"])
         get = (lambda key: row[key] if row is not None and key in row.index else None)
@@ -149,14 +150,16 @@ def render(sweep_dir, status, table, figures, notes):
             details = [f"{100 * c['fraction']:.0f} %"] if c.get("fraction") is not None else []
             details += [] if status["sweep_running"] else ["interrupted"]
             shown += f" ({'; '.join(details)})" if details else ""
+        cell_notes = ([c["error"]] if c.get("error") else []) + [f"warning: {w}" for w in c.get("warnings") or []]
         out.append(
             f"<tr><td>{e(c['name'])}</td>"
             + (f"<td>{e(_cell(get('case_label')))}</td>" if has_labels else "")
             + f'<td class="{e(state)}">{e(shown)}</td>'
-            + f'<td class="num">{_number(get("vy"))}</td><td class="num">{_number(get("vy_slope"))}</td>'
+            + (f'<td class="num">{_number(get("vy"))}</td><td class="num">{_number(get("vy_slope"))}</td>'
+               if state == "ok" else '<td class="num"></td><td class="num"></td>')
             + "".join(f'<td class="num">{e(_cell(get(k)))}</td>' for k in varied)
             + f'<td class="num">{e(_duration(c["wall_s"])) if c.get("wall_s") is not None else ""}</td>'
-            + f"<td>{e(c.get('error') or '')}</td></tr>")
+            + "<td>" + "<br>".join(e(t) for t in cell_notes) + "</td></tr>")
     out.append("</table>")
     if fixed:
         out.append("<p>The same for every case: " + ", ".join(

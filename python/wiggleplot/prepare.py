@@ -12,7 +12,7 @@ SHAPE, AMPLITUDE, PERIOD, MU, SEED = (
 # Columns of results.csv that are outcomes or bookkeeping, never parameters (src/sweep/ResultsTable.h;
 # case_label is a [[case]]'s name, which the figures label by already).
 NON_PARAMETERS = {"case", "run_dir", "status", "vy", "vy_slope", "vy_settled", "t_settled", "wall_s", "n_grains",
-                  "steps", "ns_per_particle_step", "state_hash", "error", "case_label"}
+                  "steps", "ns_per_particle_step", "state_hash", "error", "case_label", "warnings"}
 
 
 # --- one run ------------------------------------------------------------------------------------

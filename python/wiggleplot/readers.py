@@ -104,9 +104,30 @@ def read_model(run_dir):
     return model
 
 
+def case_finished(run_dir):
+    """Whether a sweep's case is finished: its summary.json reads whole and says "ok". The one rule
+    the sweep itself, `wiggle status` and `wiggle report` apply (caseFinished, src/sweep/ResultsTable.h):
+    a case results.csv calls ok but whose summary.json is torn or says otherwise runs again."""
+    try:
+        return read_summary(run_dir).get("status") == "ok"
+    except (OSError, ValueError, FormatError, AttributeError):
+        return False
+
+
 def read_results(sweep_dir):
+    """results.csv as {column: array}; a row that says ok but whose case is not finished
+    (case_finished) is pending, its numbers NaN, as the sweep and `wiggle status` count it."""
     path = os.path.join(sweep_dir, "results.csv")
-    return _require(read_table(path), ["case", "run_dir", "status", "vy"], path)
+    table = _require(read_table(path), ["case", "run_dir", "status", "vy"], path)
+    status = np.asarray(table["status"], dtype=object).copy()
+    for i in range(len(status)):
+        if status[i] == "ok" and not case_finished(os.path.join(sweep_dir, str(table["run_dir"][i]))):
+            status[i] = "pending"
+            for column in ("vy", "vy_slope"):
+                if column in table and table[column].dtype == float:
+                    table[column][i] = np.nan
+    table["status"] = status
+    return table
 
 
 def read_geometry(path):

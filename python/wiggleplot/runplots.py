@@ -350,52 +350,119 @@ def path_until(trajectory, t):
     return np.asarray(trajectory["x"])[shown], np.asarray(trajectory["y"])[shown]
 
 
+MOVIE_DPI = 120
+
+
+class MovieFrames:
+    """The movie's one figure, redrawn for each dump frame: the grains, the intruder's path so far
+    and the time. Its size in pixels is fixed (no tight bounding box: the style's savefig.bbox
+    would crop each frame to its contents, and ffmpeg reads raw frames of the size declared to it);
+    `draw(i)` then `save_png` gives exactly the picture the movie holds as frame i."""
+
+    def __init__(self, run):
+        self.run = run
+        self.dump = run.dump()
+        self.times = run.frame_times()
+        self.first = self.dump.frame(0)
+        self.bands = _Bands(self.first) if "id" in self.first.columns else None
+        top = float(np.max(self.first["y"] + self.first["radius"])) + 2.0
+        (xlo, xhi), (ylo, yhi) = _system_limits(self.first, top)
+        aspect = (xhi - xlo) / (yhi - ylo)
+        width = 6.4
+        # Whole pixels, even in both directions (H.264 with yuv420p needs even sizes).
+        w_px = 2 * round(width * MOVIE_DPI / 2)
+        h_px = 2 * round((width / aspect + 0.5) * MOVIE_DPI / 2)
+        self.fig, ax = plt.subplots(figsize=(w_px / MOVIE_DPI, h_px / MOVIE_DPI), dpi=MOVIE_DPI)
+        ax.set_xlim(xlo, xhi)
+        ax.set_ylim(ylo, yhi)
+        ax.set_aspect("equal")
+        ax.grid(False)
+        ax.set_xlabel(style.X_LABEL)
+        ax.set_ylabel(style.Y_LABEL)
+        self.ax = ax
+        self.coll = _discs(ax, self.first["x"], self.first["y"], self.first["radius"],
+                           _colours(self.first, self.bands), rasterize=False)
+        # The intruder's path so far, over the grains: where the drive has taken it, up or down.
+        self.trail, = ax.plot([], [], color="black", lw=0.8, zorder=5)
+        self.title = ax.set_title("")
+        self.fig.tight_layout()  # once, for the axes' place; every frame keeps the same canvas
+
+    def __len__(self):
+        return len(self.dump)
+
+    @property
+    def size(self):
+        """(width, height) in pixels of every frame."""
+        w, h = self.fig.get_size_inches() * MOVIE_DPI
+        return int(round(w)), int(round(h))
+
+    def draw(self, i):
+        frame = self.first if i == 0 else self.dump.frame(i)
+        if len(frame["x"]) != len(self.first["x"]):
+            self.coll.remove()
+            self.coll = _discs(self.ax, frame["x"], frame["y"], frame["radius"], _colours(frame, self.bands),
+                               rasterize=False)
+        else:
+            self.coll.set_offsets(np.column_stack([frame["x"], frame["y"]]))
+        if self.run.trajectory is not None:
+            self.trail.set_data(*path_until(self.run.trajectory, self.times[i]))
+        self.title.set_text(f"{self.run.label()}   $t$ = {self.times[i]:g}")
+
+    def rgb(self):
+        """The drawn frame's pixels, (height, width, 3) uint8: what is handed to ffmpeg."""
+        self.fig.canvas.draw()
+        return np.asarray(self.fig.canvas.buffer_rgba())[:, :, :3].copy()
+
+    def save_png(self, path):
+        with plt.rc_context({"savefig.bbox": "standard"}):
+            self.fig.savefig(path, dpi=MOVIE_DPI)
+
+    def close(self):
+        plt.close(self.fig)
+
+
 def write_movie(run, out_dir, fps=10):
+    """movie.mp4: every dump frame, in order, at `fps`; written to a temporary name and renamed.
+    Raises OSError when ffmpeg fails (its last message line says why)."""
+    import subprocess
     ffmpeg = find_ffmpeg()
     if ffmpeg is None:
         run.report.note("ffmpeg not found: movie skipped (apt-get install ffmpeg)")
         return
-    dump = run.dump()
-    if dump is None:
+    if run.dump() is None:
         run.report.note("no dumps/dump.lammpstrj: movie skipped")
         return
-    from matplotlib import animation
-    plt.rcParams["animation.ffmpeg_path"] = ffmpeg
-    ftimes = run.frame_times()
-    first = dump.frame(0)
-    bands = _Bands(first) if "id" in first.columns else None
-    top = float(np.max(first["y"] + first["radius"])) + 2.0
-    (xlo, xhi), (ylo, yhi) = _system_limits(first, top)
-    aspect = (xhi - xlo) / (yhi - ylo)
-    width = 6.4
-    fig, ax = plt.subplots(figsize=(width, width / aspect + 0.5))
-    ax.set_xlim(xlo, xhi)
-    ax.set_ylim(ylo, yhi)
-    ax.set_aspect("equal")
-    ax.grid(False)
-    ax.set_xlabel(style.X_LABEL)
-    ax.set_ylabel(style.Y_LABEL)
-    coll = _discs(ax, first["x"], first["y"], first["radius"], _colours(first, bands), rasterize=False)
-    # The intruder's path so far, over the grains: where the drive has taken it, up or down.
-    trail, = ax.plot([], [], color="black", lw=0.8, zorder=5)
-    title = ax.set_title("")
+    frames = MovieFrames(run)
     os.makedirs(out_dir, exist_ok=True)
     path = os.path.join(out_dir, "movie.mp4")
-    writer = animation.FFMpegWriter(fps=fps, metadata={"title": run.label()})
-    with writer.saving(fig, path, dpi=120):
-        for i in range(len(dump)):
-            frame = first if i == 0 else dump.frame(i)
-            if len(frame["x"]) != len(first["x"]):
-                coll.remove()
-                coll = _discs(ax, frame["x"], frame["y"], frame["radius"], _colours(frame, bands),
-                              rasterize=False)
-            else:
-                coll.set_offsets(np.column_stack([frame["x"], frame["y"]]))
-            if run.trajectory is not None:
-                trail.set_data(*path_until(run.trajectory, ftimes[i]))
-            title.set_text(f"{run.label()}   $t$ = {ftimes[i]:g}")
-            writer.grab_frame()
-    plt.close(fig)
+    tmp = os.path.join(out_dir, f"movie.tmp.{os.getpid()}.mp4")
+    w, h = frames.size
+    # Raw RGB frames of exactly w x h on stdin; H.264, yuv420p so that every player shows it.
+    command = [ffmpeg, "-loglevel", "error", "-y", "-f", "rawvideo", "-pix_fmt", "rgb24", "-s", f"{w}x{h}",
+               "-r", str(fps), "-i", "pipe:0", "-c:v", "libx264", "-pix_fmt", "yuv420p", "-crf", "18",
+               "-metadata", f"title={run.label()}", tmp]
+    proc = subprocess.Popen(command, stdin=subprocess.PIPE, stderr=subprocess.PIPE)
+    try:
+        for i in range(len(frames)):
+            frames.draw(i)
+            pixels = frames.rgb()
+            if pixels.shape != (h, w, 3):  # never: the canvas is fixed; a guard against garbling
+                raise ValueError(f"movie frame {i} is {pixels.shape[1]}x{pixels.shape[0]}, not {w}x{h}")
+            proc.stdin.write(pixels.tobytes())
+        proc.stdin.close()
+        err = proc.stderr.read().decode(errors="replace")
+        if proc.wait() != 0:
+            lines = err.strip().splitlines()
+            raise OSError(f"ffmpeg failed writing {path}: {lines[-1] if lines else 'exit status ' + str(proc.returncode)}")
+        os.replace(tmp, path)
+    except BaseException:
+        proc.kill()
+        proc.wait()
+        if os.path.exists(tmp):
+            os.remove(tmp)
+        raise
+    finally:
+        frames.close()
     run.report.wrote([path])
 
 

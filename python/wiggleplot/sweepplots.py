@@ -6,6 +6,7 @@ sample standard deviation."""
 import collections
 import csv
 import os
+import textwrap
 
 import numpy as np
 from matplotlib.colors import TwoSlopeNorm
@@ -298,21 +299,55 @@ def write_table1(sweep, out_dir, formats):
         for r in rows:
             w.writerow([_cell(r[c]) for c in TABLE1_COLUMNS])
     sweep.report.wrote([path])
+    sweep.report.wrote(style.save(table1_figure(rows), out_dir, "table1", formats))
+
+
+def table1_figure(rows):
+    """Table 1 drawn as a figure (rows as table1 gives them)."""
     header = ["shape", "l [d]", r"$T_{rise}$ model", r"$T_{rising}$ observed", "bracket", "note"]
     same_a = len({r["A"] for r in rows}) == 1
     cells = [[r["shape"] if same_a else f"{r['shape']} ($A$ = {r['A']:g})", _cell(r["l"]) or "-", _cell(r["T_rise_model"]) or "-",
               _cell(r["T_rising_observed"]) or "-",
               _bracket(r["T_below"], r["T_above"]), r["note"]] for r in rows]
-    fig, ax = plt.subplots(figsize=(style.FULL_WIDTH, 0.45 + 0.25 * (len(rows) + 1)))
+    # Long notes wrap onto more lines, so that every text fits its cell (fit_table).
+    cells = [[textwrap.fill(c, 34) for c in row] for row in cells]
+    lines = max(1, max(c.count("\n") + 1 for row in cells for c in row))
+    fig, ax = plt.subplots(figsize=(style.FULL_WIDTH, 0.6 + 0.22 * (len(rows) * lines + 1)))
     ax.axis("off")
     table = ax.table(cellText=cells, colLabels=header, loc="center", cellLoc="center")
     table.auto_set_font_size(False)
     table.set_fontsize(8)
-    table.scale(1.0, 1.3)
+    fit_table(fig, table)
     where = rf" ($A$ = {rows[0]['A']:g} $d$)" if same_a else ""
     ax.set_title(rf"Table 1: $T_{{rising}}$ at the largest amplitude{where}; "
                  r"times in $\sqrt{d/g}$", fontsize=9)
-    sweep.report.wrote(style.save(fig, out_dir, "table1", formats))
+    return fig
+
+
+def fit_table(fig, table, pad_px=6):
+    """Sizes a matplotlib table's columns and rows to their texts (widest text of each column, the
+    lines of the tallest text of each row, plus padding), so that no text runs over a neighbour:
+    matplotlib's own layout gives every column the same width whatever it holds."""
+    renderer = fig.canvas.get_renderer()
+    cells = table.get_celld()
+    to_axes = table.axes.transAxes.inverted()
+
+    def size(cell):  # the text's extent in axes fractions
+        box = cell.get_text().get_window_extent(renderer)
+        (x0, y0), (x1, y1) = to_axes.transform([(box.x0, box.y0), (box.x1 + pad_px, box.y1 + pad_px)])
+        return x1 - x0, y1 - y0
+
+    extents = {key: size(cell) for key, cell in cells.items()}
+    columns = {c for _, c in cells}
+    rows = {r for r, _ in cells}
+    widths = {c: max(extents[(r, c)][0] for r in rows if (r, c) in cells) for c in columns}
+    heights = {r: max(extents[(r, c)][1] for c in columns if (r, c) in cells) for r in rows}
+    scale = min(1.0, 1.0 / sum(widths.values()))  # wider than the axes: shrink the font instead
+    if scale < 1.0:
+        table.set_fontsize(8 * scale)
+    for (r, c), cell in cells.items():
+        cell.set_width(widths[c] * scale)
+        cell.set_height(heights[r] * scale)
 
 
 def _reference_amplitude(sweep, rows):

@@ -134,6 +134,10 @@ class World {
   const IntruderPairs& intruderPairs() const { return intruderPairs_; }
   const ForceKernels& kernels() const { return *kernels_; }
   double kineticEnergy() const;   // translational + rotational, grains only
+  // Listed grain pairs that overlap now: the pairs whose contact force the last step evaluated as
+  // non-zero. From the positions, not from the pair forces, so that it holds after a load too
+  // (pair forces are not saved).
+  std::uint64_t touchingPairs() const;
   const HealthMargins& healthMargins() const { return margins_; }
   double peakDriveSpeed() const;  // largest |vx| the intruder's prescribed motion reaches [sqrt(g d)]
   double speedBound() const;      // a grain faster than this is a blow-up [sqrt(g d)]

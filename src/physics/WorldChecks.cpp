@@ -128,6 +128,23 @@ double World::kineticEnergy() const {
   return energy;
 }
 
+std::uint64_t World::touchingPairs() const {
+  const ParticleStore& s = store_;
+  const double width = def_.boxWidth, halfWidth = 0.5 * width;
+  std::uint64_t touching = 0;
+  for (std::uint32_t k = 0; k < list_.pairCount(); ++k) {
+    const std::uint32_t i = list_.owner[k], j = list_.partner[k];
+    double dx = s.x[i] - s.x[j];
+    if (dx > halfWidth)
+      dx -= width;
+    else if (dx < -halfWidth)
+      dx += width;
+    const double dy = s.y[i] - s.y[j], reach = s.radius[i] + s.radius[j];
+    touching += dx * dx + dy * dy < reach * reach;
+  }
+  return touching;
+}
+
 namespace {
 template <class... Vectors>
 std::size_t arrayBytes(const Vectors&... v) {

@@ -553,8 +553,8 @@ CachedBed obtainPouredBed(const RunConfig& config, const ClumpDef& clump, const 
         saved = "; saved in " + partialPath + ": the same command continues it";
       }
       if (signal != 0)
-        throw Error("interrupted by signal " + std::to_string(signal) + " while making the bed at t = " +
-                    std::to_string(static_cast<double>(p.steps) * config.run.dt) + saved);
+        throw Interrupted(signal, "interrupted by signal " + std::to_string(signal) + " while making the bed at t = " +
+                                      std::to_string(static_cast<double>(p.steps) * config.run.dt) + saved);
     };
     return finishBed(config, clump, std::move(*start), progress, save);
   });
@@ -569,9 +569,10 @@ CachedBed obtainCarvedBed(const RunConfig& config, const ClumpDef& clump, const 
     if (!base.note.empty()) notes.add("base bed: " + base.note);
     const BedSaver stopWhenAsked = [&](const PartialBed& bed) {
       if (const int signal = stopSignalReceived(); signal != 0)
-        throw Error("interrupted by signal " + std::to_string(signal) + " while relaxing the carved bed at t = " +
-                    std::to_string(static_cast<double>(bed.steps) * config.run.dt) +
-                    " (the same command carves it again from the cached base bed)");
+        throw Interrupted(signal, "interrupted by signal " + std::to_string(signal) +
+                                      " while relaxing the carved bed at t = " +
+                                      std::to_string(static_cast<double>(bed.steps) * config.run.dt) +
+                                      " (the same command carves it again from the cached base bed)");
     };
     return carveBed(config, clump, std::move(base.world), progress, stopWhenAsked);
   });

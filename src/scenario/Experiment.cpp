@@ -7,9 +7,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <numbers>
 #include <optional>
-#include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "analysis/FieldObserver.h"
 #include "analysis/RiseRate.h"
@@ -29,6 +30,17 @@
 namespace wiggle {
 
 namespace fs = std::filesystem;
+
+std::string runWarningsPath(const std::string& dir) { return dir + "/warnings.txt"; }
+
+std::vector<std::string> readRunWarnings(const std::string& dir) {
+  std::vector<std::string> lines;
+  if (!fs::exists(runWarningsPath(dir))) return lines;
+  std::istringstream in(readFile(runWarningsPath(dir)));
+  for (std::string line; std::getline(in, line);)
+    if (!line.empty()) lines.push_back(line);
+  return lines;
+}
 
 namespace {
 
@@ -88,7 +100,7 @@ void prepareRunDirectory(const std::string& dir, const RunConfig& config, const 
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec) throw Error("cannot create output directory " + dir + ": " + ec.message());
-  fs::create_directories(dir + "/dumps", ec);
+  if (config.run.dumpInterval > 0) fs::create_directories(dir + "/dumps", ec);
   const bool hasCheckpoint = fs::exists(checkpointPath(dir)) || fs::exists(previousCheckpointPath(dir));
   if (!resume && (hasCheckpoint || fs::exists(dir + "/summary.json")))
     throw Error(dir + " already holds a run: use --resume to continue it, or choose another --out");
@@ -98,12 +110,26 @@ void prepareRunDirectory(const std::string& dir, const RunConfig& config, const 
       throw Error("--resume: cannot continue the run in " + dir + ": " + why);
   }
   if (resume) removeLeftoverTemporaries(dir);  // of a run killed while writing a file
+  else
+    fs::remove(runWarningsPath(dir), ec);  // a new run has no history
   writeFileAtomically(dir + "/config.toml", configToml);
 }
 
-// The newest checkpoint of the run in `dir` that is sound and of this config, or nothing.
+// Says `warning` on the console, in the log and in warnings.txt (hence in summary.json).
+void addRunWarning(const std::string& dir, const std::string& warning, LogFile& log) {
+  std::string text;
+  for (const std::string& w : readRunWarnings(dir)) text += w + "\n";
+  writeFileAtomically(runWarningsPath(dir), text + warning + "\n");
+  log.line("warning: " + warning);
+  std::fprintf(stderr, "wiggle: warning: %s\n", warning.c_str());
+}
+
+// The newest checkpoint of the run in `dir` that is sound and of this config, or nothing. When
+// there were checkpoints and none could be read, the run starts again from the bed: all its
+// progress is lost, which is said loudly (a warning in summary.json), not only in the log.
 std::optional<Checkpoint> newestGoodCheckpoint(const std::string& dir, const RunConfig& config,
                                                const std::string& configToml, LogFile& log) {
+  std::string refused;
   for (const std::string& path : {checkpointPath(dir), previousCheckpointPath(dir)}) {
     if (!fs::exists(path)) continue;
     try {
@@ -113,9 +139,16 @@ std::optional<Checkpoint> newestGoodCheckpoint(const std::string& dir, const Run
     } catch (const Error& e) {
       log.line(std::string("checkpoint refused: ") + e.what());
       std::fprintf(stderr, "wiggle: warning: %s; trying an older one\n", e.what());
+      refused += std::string(refused.empty() ? "" : "; ") + e.what();
     }
   }
-  log.line("no usable checkpoint: starting from the bed");
+  if (!refused.empty())
+    addRunWarning(dir,
+                  "no checkpoint could be read (" + refused +
+                      "): the run restarted from the bed at t = 0 and the time spent on it before was lost",
+                  log);
+  else
+    log.line("no checkpoint: starting from the bed");
   return std::nullopt;
 }
 
@@ -217,6 +250,12 @@ std::vector<std::string> runWarnings(const RiseRate& rate, double averagedFrom, 
                        formatNumber(rate.tInitial) + " to " + formatNumber(rate.tFinal) + "), fewer than " +
                        formatNumber(RiseRate::kMinWindowPeriods) +
                        ": it reflects the phase of the drive more than a drift; run longer (run.duration)");
+  if (rate.withinStartupTransient())
+    warnings.push_back("V_y is measured from t = " + formatNumber(rate.tInitial) + " to " + formatNumber(rate.tFinal) +
+                       ", within the start-up transient of the drive (the first " +
+                       formatNumber(RiseRate::kStartupTime) +
+                       " time units, where the whole bed is set moving): it is not a steady rise or sink; run longer "
+                       "(run.duration; the presets run to t = 100)");
   if (std::fabs(averagedFrom - rate.tInitial) > 0.5 * config.run.sampleInterval)
     warnings.push_back("phase_rates.csv and fields.csv average from t = " + formatNumber(averagedFrom) +
                        ", V_y from t = " + formatNumber(rate.tInitial) +
@@ -225,8 +264,9 @@ std::vector<std::string> runWarnings(const RiseRate& rate, double averagedFrom, 
   return warnings;
 }
 
-RunSummary summarise(const Case& run, const World& world, const RunState& state, const FieldObserver& fields,
-                     const RiseRate& rate, const SettledRate& settled, const SettleRule& rule, double averagedFrom) {
+RunSummary summarise(const Case& run, const std::string& dir, const World& world, const RunState& state,
+                     const FieldObserver& fields, const RiseRate& rate, const SettledRate& settled,
+                     const SettleRule& rule, double averagedFrom) {
   const RunConfig& config = run.config;
   RunSummary summary;
   summary.vy = rate.vy;
@@ -245,7 +285,8 @@ RunSummary summarise(const Case& run, const World& world, const RunState& state,
   summary.settled = settled.settled;
   summary.settleBand = rule.band;
   summary.averagedFromT = averagedFrom;
-  summary.warnings = runWarnings(rate, averagedFrom, config);
+  summary.warnings = readRunWarnings(dir);
+  for (std::string& w : runWarnings(rate, averagedFrom, config)) summary.warnings.push_back(std::move(w));
   summary.overlapMargin = world.healthMargins().overlap;
   summary.speedMargin = world.healthMargins().speed;
   summary.status = "ok";
@@ -264,8 +305,7 @@ RunSummary summarise(const Case& run, const World& world, const RunState& state,
   summary.stateHash = world.stateHash();
   const NeighbourList& list = world.neighbours();
   summary.neighbourPairs = list.pairCount();
-  for (std::uint32_t k = 0; k < list.pairCount(); ++k)
-    summary.contacts += list.forceX[k] != 0.0 || list.forceY[k] != 0.0;
+  summary.contacts = world.touchingPairs();
   summary.intruderPairs = world.intruderPairs().size();
   summary.stateBytesPerGrain = static_cast<double>(world.stateBytes()) / std::max(1u, world.grainCount());
   summary.shape = config.intruder.shape;
@@ -326,8 +366,8 @@ bool stepToTheEnd(const Case& run, const RunOptions& options, const std::string&
         progress.clear();
         log.line("interrupted by signal " + std::to_string(signal) + " at step " + std::to_string(step) +
                  "; checkpoint written");
-        throw Error("interrupted at t = " + formatNumber(world.time()) + "; continue with: wiggle run --out " + dir +
-                    " --resume");
+        throw Interrupted(signal, "interrupted at t = " + formatNumber(world.time()) +
+                                      "; continue with: wiggle run --out " + dir + " --resume");
       }
       if (secondsSince(lastCheckpoint) >= run.config.run.checkpointInterval) {
         writeCheckpoint(dir, configToml, world, state, fields);
@@ -363,7 +403,7 @@ RunOutcome writeRunOutputs(const Case& run, const std::string& dir, const World&
   std::uint64_t accumulated = 0;
   for (const std::uint64_t n : state.phaseCount) accumulated += n;
   const double averagedFrom = static_cast<double>(world.stepCount() - accumulated) * config.run.dt;
-  const RunSummary summary = summarise(run, world, state, fields, rate, settled, rule, averagedFrom);
+  const RunSummary summary = summarise(run, dir, world, state, fields, rate, settled, rule, averagedFrom);
   writeFileAtomically(dir + "/summary.json", toJson(summary).dump(2) + "\n");
   log.line("done: vy = " + formatNumber(rate.vy) + ", slope = " + formatNumber(rate.slope) +
            ", vy_settled = " + formatNumber(settled.vy) + " (t_settled = " + formatNumber(settled.tSettled) + "), " +
@@ -427,7 +467,12 @@ RunOutcome runExperiment(const Case& run, const RunOptions& options) {
   stopOnSignal.emplace();
   if (!loaded) {
     loaded.emplace(startFromBed(run, state, log, progress));
-    std::ofstream(dumpPath, std::ios::trunc);
+    // A run without dumps leaves no dump file (not an empty one); one with dumps starts it afresh.
+    std::error_code ec;
+    if (run.steps.dumpEvery)
+      std::ofstream(dumpPath, std::ios::trunc);
+    else
+      fs::remove(dumpPath, ec);
     state.dumpBytes = 0;
   } else {
     // Drop dump frames written after the checkpoint: they will be written again.

@@ -38,6 +38,12 @@ struct RunOutcome {
   std::string resultLine() const;
 };
 
+// A run directory's warnings.txt: the warnings about the run's history that must outlive the
+// process that met them (a checkpoint that could not be read, so the run restarted from the bed),
+// one per line; summary.json's warnings begin with them and `wiggle status` shows them.
+std::string runWarningsPath(const std::string& runDir);
+std::vector<std::string> readRunWarnings(const std::string& runDir);
+
 // Runs the case into options.outDir (or continues it there with options.resume).
 RunOutcome runExperiment(const Case& run, const RunOptions& options);
 

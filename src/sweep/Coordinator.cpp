@@ -84,6 +84,7 @@ class Coordinator {
     while (true) {
       if (const int signal = stopSignalReceived(); signal != 0 && !stopping_) {
         stopping_ = true;
+        stopSignal_ = signal;
         monitor_.event("signal " + std::to_string(signal) + ": stopping; running cases write a checkpoint");
         runner_.signalAll(SIGTERM);
       }
@@ -241,6 +242,7 @@ class Coordinator {
     out.failed = countStatus("failed");
     out.pending = out.cases - out.ok - out.failed;
     out.interrupted = stopping_;
+    out.stopSignal = stopSignal_;
     writeResults();
     const std::string failed = " failed (error column of results.csv)";
     const std::string unfinished = " not finished (rerun the same command to resume)";
@@ -253,6 +255,11 @@ class Coordinator {
       if (out.failed) out.summary += ", " + std::to_string(out.failed) + failed;
       if (out.pending) out.summary += ", " + std::to_string(out.pending) + unfinished;
     }
+    std::size_t warned = 0;
+    for (std::size_t c = 0; c < results_.size(); ++c) warned += counts(c) && !results_[c].warnings.empty();
+    if (warned)
+      out.summary += "; " + std::to_string(warned) + (warned > 1 ? " cases have" : " case has") +
+                     " warnings (warnings column of results.csv, wiggle status)";
     monitor_.event(out.summary);
     return out;
   }
@@ -347,6 +354,7 @@ class Coordinator {
       results_[c].status = "ok";
       monitor_.event("ok " + name + where + ": vy = " + formatNumber(o.result.vy, 4) + ", " + formatDuration(o.wallSeconds) + ", " +
                      formatNumber(o.result.nsPerParticleStep, 3) + " ns/particle-step");
+      for (const std::string& w : o.result.warnings) monitor_.event("warning " + name + ": " + w);
       return;
     }
     results_[c] = CaseResult{};
@@ -444,6 +452,7 @@ class Coordinator {
   int concurrency_ = 1;
   std::size_t bedsMade_ = 0;
   bool stopping_ = false;
+  int stopSignal_ = 0;  // the signal that set stopping_
   bool resultsDirty_ = false;
 };
 

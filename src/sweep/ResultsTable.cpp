@@ -52,6 +52,20 @@ std::string csvCell(const std::string& text) {
   return out + '"';
 }
 
+bool caseFinished(const std::string& runDir) {
+  try {
+    return readCaseSummary(runDir).status == "ok";
+  } catch (const Error&) {
+    return false;
+  }
+}
+
+std::string joinedWarnings(const std::vector<std::string>& warnings) {
+  std::string out;
+  for (const std::string& w : warnings) out += (out.empty() ? "" : " | ") + w;
+  return out;
+}
+
 CaseResult readCaseSummary(const std::string& runDir) {
   const std::string path = runDir + "/summary.json";
   RunSummary summary;
@@ -81,6 +95,7 @@ CaseResult readCaseSummary(const std::string& runDir) {
   const double particles = summary.particles ? static_cast<double>(summary.particles) : static_cast<double>(r.grains);
   r.particleSteps = particles * static_cast<double>(r.steps);
   r.stateHash = summary.stateHash;
+  r.warnings = summary.warnings;
   return r;
 }
 
@@ -88,7 +103,8 @@ std::vector<std::string> resultColumns(const SweepSpec& spec) {
   std::vector<std::string> columns = {"case",     "run_dir",    "status",    "vy",
                                       "vy_slope", "vy_settled", "t_settled", "wall_s"};
   for (const std::string& k : parameterKeys(spec)) columns.push_back(columnName(k));
-  for (const char* k : {"n_grains", "steps", "ns_per_particle_step", "state_hash", "error"}) columns.emplace_back(k);
+  for (const char* k : {"n_grains", "steps", "ns_per_particle_step", "state_hash", "error", "warnings"})
+    columns.emplace_back(k);
   return columns;
 }
 
@@ -119,6 +135,7 @@ std::string resultsCsv(const SweepSpec& spec, const std::vector<std::string>& ru
     row.push_back(number(r.nsPerParticleStep));
     row.push_back(ok ? r.stateHash : "");
     row.push_back(r.error);
+    row.push_back(ok ? joinedWarnings(r.warnings) : "");
     appendRow(out, row);
   }
   return out;

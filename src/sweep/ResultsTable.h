@@ -6,7 +6,8 @@
 // Columns: case,run_dir,status,vy,vy_slope,vy_settled,t_settled,wall_s, then one per parameter named by its config key
 // (the keys that vary in the sweep, then intruder.shape, drive.amplitude, drive.period, contact.mu
 // and box.seed when they do not vary, so the plots always find them), then
-// n_grains,steps,ns_per_particle_step,state_hash,error.
+// n_grains,steps,ns_per_particle_step,state_hash,error, then warnings (summary.json's, joined by
+// " | "; empty when none).
 // status: ok | failed | running | pending (not run yet, or interrupted: it resumes on a rerun).
 // Numbers of a case that is not ok are empty cells. Cells holding a comma, quote or newline are
 // quoted as RFC 4180 says.
@@ -28,7 +29,14 @@ struct CaseResult {
   std::uint64_t grains = 0, steps = 0;
   std::string stateHash;
   std::string error;                // one line; empty unless failed (or interrupted)
+  std::vector<std::string> warnings;  // summary.json's warnings (ok cases)
 };
+
+// Whether the case in runDir is finished: its summary.json reads whole and says "ok". The one rule
+// for every reader: the sweep skips such a case and reruns any other, and `wiggle status`,
+// `wiggle report` and `wiggle plot` (python/wiggleplot/readers.py) count a case as done only when
+// it holds, whatever a stale results.csv says.
+bool caseFinished(const std::string& runDir);
 
 // Reads <runDir>/summary.json into a CaseResult with status "ok" when the file says so. Throws
 // wiggle::Error when the file is missing or unreadable.
@@ -40,6 +48,9 @@ std::vector<std::string> resultColumns(const SweepSpec& spec);
 // The whole file's text. `runDirs` are relative to the sweep directory, one per case.
 std::string resultsCsv(const SweepSpec& spec, const std::vector<std::string>& runDirs,
                        const std::vector<CaseResult>& results);
+
+// Warnings in one cell: " | " between them.
+std::string joinedWarnings(const std::vector<std::string>& warnings);
 
 // One CSV cell, quoted when it must be.
 std::string csvCell(const std::string& text);

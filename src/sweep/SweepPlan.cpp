@@ -18,6 +18,7 @@
 #include "scenario/Checkpoint.h"
 #include "scenario/Experiment.h"
 #include "scenario/Shape.h"
+#include "sweep/ResultsTable.h"
 
 namespace wiggle {
 
@@ -86,14 +87,8 @@ SweepPlan makeSweepPlan(SweepSpec spec, const std::string& outDir) {
         p.error = e.what();
       }
     }
-    if (p.state != CaseState::Failed && !extends && fs::exists(p.dir + "/summary.json")) {
-      try {
-        const auto summary = nlohmann::json::parse(readFile(p.dir + "/summary.json"));
-        if (summary.value("status", "") == "ok") p.state = CaseState::Done;
-      } catch (const std::exception&) {
-        // A torn or foreign summary: the case runs again (it resumes from its final checkpoint).
-      }
-    }
+    // A torn or foreign summary: the case runs again (it resumes from its final checkpoint).
+    if (p.state != CaseState::Failed && !extends && caseFinished(p.dir)) p.state = CaseState::Done;
     p.hasCheckpoint = fs::exists(p.dir + "/checkpoint.bin") || fs::exists(p.dir + "/checkpoint.prev.bin");
 
     if (!p.bedKey.empty()) {

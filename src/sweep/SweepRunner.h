@@ -47,6 +47,7 @@ struct SweepOutcome {
   std::string outDir;
   std::size_t cases = 0, ok = 0, failed = 0, pending = 0;
   bool interrupted = false;
+  int stopSignal = 0;        // the SIGINT/SIGTERM that interrupted it (exit status 128 + it)
   bool worker = false;       // this process was an MPI worker rank (it wrote nothing)
   std::string summary;       // one line for the user
 };

@@ -14,6 +14,7 @@
 #include "core/Error.h"
 #include "core/Format.h"
 #include "io/AtomicFile.h"
+#include "scenario/Experiment.h"
 #include "sweep/ResultsTable.h"
 
 namespace wiggle {
@@ -34,18 +35,34 @@ bool lockHeld(const std::string& dir) {
   return held;
 }
 
-// "[run] 43.2%  t = 43.2 / 100 ..." -> 0.432 from the last such line of a case's log.txt.
-double runFraction(const std::string& logPath) {
-  if (!fs::exists(logPath)) return -1.0;
-  std::istringstream lines(readFile(logPath));
+// How far a running case is, from its log.txt (scenario/Experiment.cpp writes it): the fraction
+// of its run from the last "[run] 43.2%  t = ..." line (-1 when none yet: the log gets one every
+// 30 s), else what it is doing from the lines its start writes.
+struct CaseProgress {
   double fraction = -1.0;
+  std::string stage = "starting";
+};
+
+CaseProgress caseProgress(const std::string& logPath) {
+  CaseProgress p;
+  if (!fs::exists(logPath)) return p;
+  std::istringstream lines(readFile(logPath));
   for (std::string line; std::getline(lines, line);) {
-    const auto at = line.find("[run] ");
-    if (at == std::string::npos) continue;
-    double percent = 0.0;
-    if (std::sscanf(line.c_str() + at, "[run] %lf%%", &percent) == 1) fraction = percent / 100.0;
+    if (const auto at = line.find("[run] "); at != std::string::npos) {
+      double percent = 0.0;
+      if (std::sscanf(line.c_str() + at, "[run] %lf%%", &percent) == 1) p.fraction = percent / 100.0;
+    } else if (line.find(" run --resume in ") != std::string::npos || line.find(" run in ") != std::string::npos) {
+      p.stage = "making or loading its bed";  // the start line of each (re)start, before the bed
+      p.fraction = -1.0;
+    } else if (line.find("bed loaded from ") != std::string::npos) {
+      p.stage = "bed loaded from the cache, run started, no progress line yet";
+    } else if (line.find("bed made and cached") != std::string::npos) {
+      p.stage = "bed made, run started, no progress line yet";
+    } else if (line.find("resumed from ") != std::string::npos) {
+      p.stage = "resumed from its checkpoint, no progress line yet";
+    }
   }
-  return fraction;
+  return p;
 }
 
 // From sweep.log's start lines, the last of each: the jobs ("... 1 jobs x 1 threads ...") and the
@@ -98,6 +115,8 @@ SweepStatus readSweepStatus(const std::string& dir) {
   };
   const std::size_t nameAt = column("case"), dirAt = column("run_dir"), statusAt = column("status"),
                     vyAt = column("vy"), wallAt = column("wall_s"), errorAt = column("error");
+  // warnings: added after the first results.csv files; absent in theirs.
+  const auto warningsIt = std::find(header.begin(), header.end(), "warnings");
   SweepStatus s;
   s.dir = dir;
   s.sweepRunning = lockHeld(dir);
@@ -113,13 +132,27 @@ SweepStatus readSweepStatus(const std::string& dir) {
     c.name = row[nameAt];
     c.status = row[statusAt];
     c.error = row[errorAt];
+    const std::string caseDir = dir + "/" + row[dirAt];
+    if (c.status == "ok" && !caseFinished(caseDir)) {  // the sweep would run it again
+      c.status = "pending";
+      try {
+        c.error = "results.csv says ok, but " + readCaseSummary(caseDir).error;
+      } catch (const Error& e) {
+        c.error = std::string("results.csv says ok, but ") + e.what();
+      }
+    }
     if (c.status == "ok") {
+      if (warningsIt != header.end() && !row[warningsIt - header.begin()].empty())
+        c.warnings = readCaseSummary(caseDir).warnings;
       c.vy = number(row[vyAt]);
       c.wallSeconds = number(row[wallAt]);
       finishedWall += c.wallSeconds;
       ++finished;
     } else if (c.status == "running") {
-      c.fraction = runFraction(dir + "/" + row[dirAt] + "/log.txt");
+      const CaseProgress progress = caseProgress(caseDir + "/log.txt");
+      c.fraction = progress.fraction;
+      c.stage = progress.stage;
+      c.warnings = readRunWarnings(caseDir);
       casesLeft += 1.0 - std::max(0.0, c.fraction);
     } else if (c.status == "pending") {
       casesLeft += 1.0;
@@ -147,13 +180,19 @@ std::string formatSweepStatus(const SweepStatus& s) {
   for (const CaseStatus& c : s.cases) {
     if (c.status == "running")
       out << "  running  " << c.name
-          << (c.fraction >= 0 ? " (" + formatNumber(100.0 * c.fraction, 3) + " % of its run)" : std::string(" (making its bed or starting)"))
+          << (c.fraction >= 0 ? " (" + formatNumber(100.0 * c.fraction, 3) + " % of its run)" : " (" + c.stage + ")")
           << (s.sweepRunning ? "" : "  [stale: interrupted]") << "\n";
     else if (c.status == "failed")
       out << "  failed   " << c.name << ": " << c.error << "\n";
+    else if (c.status == "pending" && c.error.rfind("results.csv says ok", 0) == 0)
+      out << "  pending  " << c.name << ": " << c.error << "\n";
+    for (const std::string& w : c.warnings) out << "  warning  " << c.name << ": " << w << "\n";
   }
-  if (running + pending == 0)
-    out << "nothing left to run\n";
+  if (running + pending == 0 && failed > 0)
+    out << "nothing left to run but the " << failed << " failed case" << (failed > 1 ? "s" : "")
+        << ": the same `wiggle sweep` command retries " << (failed > 1 ? "them" : "it") << "\n";
+  else if (running + pending == 0)
+    out << "every case is done\n";
   else if (s.etaSeconds < 0)
     out << "time to go: unknown until a case has finished\n";
   else
@@ -173,7 +212,8 @@ std::string sweepStatusJson(const SweepStatus& s) {
                      {"error", c.error},
                      {"vy", ok ? json(c.vy) : json(nullptr)},
                      {"wall_s", ok ? json(c.wallSeconds) : json(nullptr)},
-                     {"fraction", c.fraction >= 0 ? json(c.fraction) : json(nullptr)}});
+                     {"fraction", c.fraction >= 0 ? json(c.fraction) : json(nullptr)},
+                     {"warnings", c.warnings}});
   }
   const json out = {{"dir", s.dir},
                     {"name", s.name},

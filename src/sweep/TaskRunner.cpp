@@ -67,6 +67,7 @@ std::string TaskOutcome::toJson() const {
   j["steps"] = result.steps;
   j["state_hash"] = result.stateHash;
   j["result_error"] = result.error;
+  j["warnings"] = result.warnings;
   return j.dump();
 }
 
@@ -91,6 +92,7 @@ TaskOutcome TaskOutcome::fromJson(const std::string& text) {
   o.result.steps = j.at("steps").get<std::uint64_t>();
   o.result.stateHash = j.at("state_hash").get<std::string>();
   o.result.error = j.at("result_error").get<std::string>();
+  o.result.warnings = j.at("warnings").get<std::vector<std::string>>();
   return o;
 }
 

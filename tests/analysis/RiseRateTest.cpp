@@ -41,6 +41,16 @@ TEST(RiseRate, AWindowOfFewerThanTwoPeriodsIsFlagged) {
   EXPECT_FALSE(measureRiseRate(sampled(100, 0.05, y), paperWindow(100), 45, 50.0).windowTooShort());  // 90 / 45 = 2
 }
 
+TEST(RiseRate, AWindowEndingInTheStartupTransientIsFlagged) {
+  // A T = 1 run of t = 5 (4.5 periods: long enough in periods) still measures only the drive's
+  // start-up transient.
+  auto y = [](double t) { return 25.0 + 0.7 * t + 0.5 * std::sin(2 * M_PI * t); };
+  const RiseRate early = measureRiseRate(sampled(5, 0.01, y), paperWindow(5), 1, 50.0);
+  EXPECT_FALSE(early.windowTooShort());
+  EXPECT_TRUE(early.withinStartupTransient());
+  EXPECT_FALSE(measureRiseRate(sampled(100, 0.05, y), paperWindow(100), 5, 200.0).withinStartupTransient());
+}
+
 TEST(RiseRate, PlateauEndsTheWindow) {
   // Rises at 0.1 until t = 400, then stays: t_f is where the plateau starts (within the averaging
   // window and tolerance: 0.5 d / 0.1 = 5 time units early at most).

@@ -4,11 +4,13 @@
 // refused before anything is written; --out creates at most its last component (issue 18).
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <sys/types.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -273,6 +275,16 @@ TEST_F(Cli, RunCheckPrintsWhatTheRunWouldBeAndWritesNothing) {
   r = wiggle("run " + quoted(config) + " --check --set drive.amplitude=40");
   expectOneLineError(r, {"box.width", "too narrow"}, "--check, amplitude 40");
   EXPECT_TRUE(workIsEmpty());
+  // An --out the run could not make or write is what --check is for: one line, exit 2 (/proc
+  // refuses a new directory even to root; a read-only directory refuses another user).
+  r = wiggle("run " + quoted(config) + " --check --out /proc/nope");
+  expectOneLineError(r, {"--out /proc/nope", "cannot create the directory"}, "--check, --out /proc/nope");
+  EXPECT_FALSE(fs::exists("/proc/nope"));
+  fs::create_directories(work_ / "existing");
+  r = wiggle("run " + quoted(config) + " --check --out existing");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(fs::is_empty(work_ / "existing"));  // the probe is gone
+  fs::remove(work_ / "existing");
 }
 
 // `wiggle rate` on a run just made: the run's own window gives the summary's vy again (from
@@ -311,6 +323,84 @@ TEST_F(Cli, RateMeasuresAFinishedRunAgainAndRecordsTheSettledRate) {
   EXPECT_NE(slurp(work_ / "run" / "summary.json").find("\"vy_settled\""), std::string::npos);
 }
 
+// A run or sweep stopped by SIGINT or SIGTERM saves its work and exits 128 + the signal (130, 143),
+// not 2 (bad input), and not by dying of the signal: scripts and Slurm tell "resume me" from "fix
+// your input". The process is started directly (fork/exec: no shell in between to translate a
+// death by signal into 128 + N) and signalled once it has started work (its log or results exist).
+struct Stopped {
+  bool exited = false;
+  int status = -1;
+  std::string err;
+};
+
+Stopped startAndSignal(const std::vector<std::string>& args, const fs::path& startedWhen, int signal,
+                       const fs::path& errPath, const fs::path& cache) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    setenv("WIGGLE_CACHE", cache.c_str(), 1);
+    const int fd = ::open(errPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    dup2(fd, 2);
+    const int null = ::open("/dev/null", O_WRONLY);
+    dup2(null, 1);
+    std::vector<char*> argv;
+    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    execv(argv[0], argv.data());
+    _exit(127);
+  }
+  for (int i = 0; i < 600 && !fs::exists(startedWhen); ++i) usleep(100000);
+  usleep(1500000);  // past the start: the signal handlers are in place, a bed or the run is under way
+  kill(pid, signal);
+  int raw = 0;
+  waitpid(pid, &raw, 0);
+  Stopped s;
+  s.exited = WIFEXITED(raw);
+  s.status = s.exited ? WEXITSTATUS(raw) : -1;
+  s.err = slurp(errPath);
+  return s;
+}
+
+// `wiggle plot` runs the python3 that WIGGLE_PYTHON names (a virtual environment's, say), not
+// always /usr/bin/python3; one that is not there is one line naming it.
+TEST_F(Cli, PlotRunsThePythonThatWigglePythonNames) {
+  const fs::path fake = root_ / "python3";
+  std::ofstream(fake) << "#!/bin/sh\necho \"$@\" > " << quoted((root_ / "args").string()) << "\n";
+  fs::permissions(fake, fs::perms::owner_all);
+  fs::create_directories(work_ / "run");
+  Result r = wiggle("plot run", "WIGGLE_PYTHON=" + quoted(fake.string()));
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(slurp(root_ / "args"), "-m wiggleplot run --format png,pdf\n");
+  r = wiggle("plot run", "WIGGLE_PYTHON=/nonexistent/python3");
+  expectOneLineError(r, {"/nonexistent/python3", "WIGGLE_PYTHON"}, "WIGGLE_PYTHON missing");
+  fs::remove_all(work_ / "run");
+}
+
+TEST_F(Cli, InterruptedRunsAndSweepsExit128PlusTheSignal) {
+  // A bed of about 1,500 grains in its own cache: making it takes longer than the wait above.
+  const fs::path config = root_ / "slow.toml";
+  std::ofstream(config) << "[box]\nwidth = 40.0\nbed_height = 40.0\nseed = 3\n"
+                        << "[run]\nduration = 50.0\nplot = false\ndump_interval = 0.0\n[fields]\nenabled = false\n";
+  for (const auto& [signal, expected] : {std::pair{SIGINT, 130}, std::pair{SIGTERM, 143}}) {
+    const fs::path out = work_ / ("run" + std::to_string(signal));
+    const Stopped s =
+        startAndSignal({WIGGLE_BINARY, "run", config.string(), "--out", out.string(), "--threads", "1"},
+                       out / "log.txt", signal, logs_ / "err", root_ / ("cache" + std::to_string(signal)));
+    EXPECT_TRUE(s.exited) << "killed by the signal instead of stopping: " << s.err;
+    EXPECT_EQ(s.status, expected) << s.err;
+    EXPECT_NE(s.err.find("interrupted"), std::string::npos) << s.err;
+  }
+  const fs::path sweep = root_ / "slow-sweep.toml";
+  std::ofstream(sweep) << "[sweep]\nname = \"slow\"\n[base.box]\nwidth = 40.0\nbed_height = 40.0\nseed = 4\n"
+                       << "[base.run]\nduration = 50.0\nplot = false\ndump_interval = 0.0\n"
+                       << "[base.fields]\nenabled = false\n[grid.drive]\nperiod = [1.0, 2.0]\n";
+  const fs::path out = work_ / "sweep";
+  const Stopped s = startAndSignal(
+      {WIGGLE_BINARY, "sweep", sweep.string(), "--out", out.string(), "--jobs", "1", "--threads", "1", "--local"},
+      out / "results.csv", SIGTERM, logs_ / "err", root_ / "cache-sweep");
+  EXPECT_TRUE(s.exited) << s.err;
+  EXPECT_EQ(s.status, 143) << s.err;
+  EXPECT_NE(s.err.find("rerun the same command to resume"), std::string::npos) << s.err;
+}
 }  // namespace
 
 namespace wiggle {
@@ -322,12 +412,16 @@ namespace {
 TEST_F(Cli, StatusSummarisesASweepDirectory) {
   const fs::path dir = root_ / "sweep";
   fs::create_directories(dir / "cases" / "b");
+  fs::create_directories(dir / "cases" / "a");
+  std::ofstream(dir / "cases" / "a" / "summary.json")
+      << R"({"status": "ok", "vy": 0.1, "warnings": ["V_y is measured over 1.5 drive periods"]})";
   std::ofstream(dir / "results.csv")
-      << "case,run_dir,status,vy,vy_slope,wall_s,drive.period,n_grains,steps,ns_per_particle_step,state_hash,error\n"
-      << "a,cases/a,ok,0.1,0.1,600,5,100,1000,50,abc,\n"
-      << "b,cases/b,running,,,,3,,,,,\n"
-      << "c,cases/c,failed,,,,1,,,,,\"box.width = 5 is too narrow, really\"\n"
-      << "d,cases/d,pending,,,,2,,,,,\n";
+      << "case,run_dir,status,vy,vy_slope,wall_s,drive.period,n_grains,steps,ns_per_particle_step,state_hash,error,"
+         "warnings\n"
+      << "a,cases/a,ok,0.1,0.1,600,5,100,1000,50,abc,,V_y is measured over 1.5 drive periods\n"
+      << "b,cases/b,running,,,,3,,,,,,\n"
+      << "c,cases/c,failed,,,,1,,,,,\"box.width = 5 is too narrow, really\",\n"
+      << "d,cases/d,pending,,,,2,,,,,,\n";
   std::ofstream(dir / "cases" / "b" / "log.txt") << "2026-11-24 10:00:00  [run] 10%  t = 10 / 100\n"
                                                   << "2026-11-24 10:00:30  [run] 25%  t = 25 / 100  ETA 1m\n";
   std::ofstream(dir / "sweep.log") << "2026-11-24 09:00:00  wiggle sweep s: 4 cases; 2 jobs x 1 threads; host h\n";
@@ -337,6 +431,7 @@ TEST_F(Cli, StatusSummarisesASweepDirectory) {
   EXPECT_NE(r.out.find("no wiggle sweep is running"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("running  b (25 % of its run)  [stale: interrupted]"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("failed   c: box.width = 5 is too narrow, really"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("warning  a: V_y is measured over 1.5 drive periods"), std::string::npos) << r.out;
   // 600 s per case x (0.75 + 1) cases left / 2 jobs = 525 s.
   EXPECT_NE(r.out.find("about 8m45s"), std::string::npos) << r.out;
 
@@ -344,6 +439,35 @@ TEST_F(Cli, StatusSummarisesASweepDirectory) {
                      "status of a non-sweep directory");
   expectOneLineError(wiggle("status " + quoted((root_ / "nowhere").string())), {"nowhere", "not a directory"},
                      "status of a missing directory");
+}
+
+// One truth for a case's state: results.csv says ok but the case's summary.json is garbage, so the
+// sweep would run it again (its --dry-run says so): `wiggle status` must not call it done. When
+// only failed cases are left, a rerun retries them: not "nothing left to run". A running case
+// whose log says its bed was loaded is not "making its bed".
+TEST_F(Cli, StatusAgreesWithTheSweepOnWhatIsLeft) {
+  const fs::path dir = root_ / "sweep";
+  for (const char* c : {"a", "b", "c"}) fs::create_directories(dir / "cases" / c);
+  std::ofstream(dir / "cases" / "a" / "summary.json") << "{garbage";
+  std::ofstream(dir / "cases" / "c" / "log.txt")
+      << "2026-11-24 10:00:00  wiggle 0.1.0 (git x) run --resume in cases/c with 1 thread, avx2 force kernels\n"
+      << "2026-11-24 10:00:01  bed loaded from /cache/bed-1.bin (200 grains, surface 12, 0.1 s)\n";
+  std::ofstream(dir / "results.csv") << "case,run_dir,status,vy,vy_slope,wall_s,drive.period,error\n"
+                                     << "a,cases/a,ok,0.1,0.1,600,5,\n"
+                                     << "b,cases/b,failed,,,,3,blew up\n"
+                                     << "c,cases/c,running,,,,2,\n";
+  Result r = wiggle("status " + quoted(dir.string()));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("3 cases: 0 done, 1 running, 1 failed, 1 pending"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("pending  a: results.csv says ok, but"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("running  c (bed loaded from the cache, run started"), std::string::npos) << r.out;
+  std::ofstream(dir / "results.csv") << "case,run_dir,status,vy,vy_slope,wall_s,drive.period,error\n"
+                                     << "b,cases/b,failed,,,,3,blew up\n";
+  r = wiggle("status " + quoted(dir.string()));
+  EXPECT_EQ(r.out.find("nothing left to run\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("nothing left to run but the 1 failed case: the same `wiggle sweep` command retries it"),
+            std::string::npos)
+      << r.out;
 }
 
 }  // namespace

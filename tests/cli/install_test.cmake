@@ -17,6 +17,7 @@ if(NOT status EQUAL 0 OR NOT model MATCHES "disk")
   message(FATAL_ERROR "installed wiggle model --shape disk: status ${status}")
 endif()
 foreach(file share/wiggle/python/wiggleplot/__main__.py share/wiggle/configs/small.toml
+             share/wiggle/examples/figures.ipynb share/wiggle/results/paper_depth/fig5/results.csv
              share/wiggle/configs/paper.toml share/doc/wiggle/README.md share/doc/wiggle/CONFIG.md
              share/bash-completion/completions/wiggle share/man/man1/wiggle.1)
   if(NOT EXISTS "${PREFIX}/${file}")
@@ -40,3 +41,25 @@ foreach(command IN LISTS commands)
   endif()
 endforeach()
 file(REMOVE_RECURSE "${PREFIX}")
+# The installed package imports without PYTHONPATH from the user site of a ~/.local-like prefix
+# (PYTHONUSERBASE is what ~/.local is by default) through wiggle.pth.
+execute_process(COMMAND ${CMAKE_COMMAND} --install "${BUILD}" --prefix "${PREFIX}" OUTPUT_QUIET)
+execute_process(COMMAND ${CMAKE_COMMAND} -E env --unset=PYTHONPATH PYTHONUSERBASE=${PREFIX}
+                        /usr/bin/python3 -c "import wiggleplot, os; print(os.path.dirname(wiggleplot.__file__))"
+                OUTPUT_VARIABLE imported OUTPUT_STRIP_TRAILING_WHITESPACE RESULT_VARIABLE status ERROR_VARIABLE why)
+file(REAL_PATH "${PREFIX}/share/wiggle/python/wiggleplot" expected)
+if(EXISTS "${imported}")
+  file(REAL_PATH "${imported}" imported)
+endif()
+file(REMOVE_RECURSE "${PREFIX}")
+if(NOT status EQUAL 0 OR NOT imported STREQUAL expected)
+  message(FATAL_ERROR "import wiggleplot from the installed prefix: status ${status}, got '${imported}' ${why}")
+endif()
+# The Debian package recommends every Debian package the plotting package and its analysis API
+# import (python/README.md), and ffmpeg for movies.
+file(STRINGS "${BUILD}/CPackConfig.cmake" recommends REGEX "CPACK_DEBIAN_PACKAGE_RECOMMENDS")
+foreach(package python3-matplotlib python3-numpy python3-pandas ffmpeg)
+  if(NOT recommends MATCHES "${package}")
+    message(FATAL_ERROR "the .deb does not recommend ${package}: ${recommends}")
+  endif()
+endforeach()

@@ -214,6 +214,67 @@ TEST(Experiment, CorruptCheckpointFallsBackToThePreviousOne) {
   EXPECT_NE(readFile(dir + "/log.txt").find("checksum"), std::string::npos);
 }
 
+TEST(Experiment, ResumingAFinishedRunRewritesTheSameSummary) {
+  // --resume on a finished run rewrites its results from the last checkpoint, where the pairs'
+  // forces are not held: the summary must still count the contacts of the last step.
+  const RunConfig config = tinyConfig(scratch(""));
+  const std::string dir = scratch("finished-resumed");
+  fs::remove_all(dir);
+  ASSERT_EQ(runExperiment(prepareCase(config), quiet(dir)).status, "ok");
+  const auto before = nlohmann::json::parse(readFile(dir + "/summary.json"));
+  RunOptions resume = quiet(dir);
+  resume.resume = true;
+  ASSERT_EQ(runExperiment(prepareCase(config), resume).status, "ok");
+  const auto after = nlohmann::json::parse(readFile(dir + "/summary.json"));
+  EXPECT_GT(before["contacts"].get<int>(), 0);
+  for (const char* key : {"contacts", "neighbour_pairs", "intruder_pairs", "state_hash", "vy", "warnings"})
+    EXPECT_EQ(after[key], before[key]) << key;
+}
+
+TEST(Experiment, NoDumpsLeaveNoDumpFile) {
+  RunConfig config = tinyConfig(scratch(""));
+  config.run.dumpInterval = 0;
+  const std::string dir = scratch("no-dumps");
+  fs::remove_all(dir);
+  ASSERT_EQ(runExperiment(prepareCase(config), quiet(dir)).status, "ok");
+  EXPECT_FALSE(fs::exists(dir + "/dumps/dump.lammpstrj"));
+  EXPECT_FALSE(fs::exists(dir + "/dumps"));
+}
+
+TEST(Experiment, UnreadableCheckpointsRestartFromTheBedWithAWarning) {
+  // Both checkpoints damaged: the run starts again from the bed, which must be said in the
+  // outcome (the console) and in summary.json, not only in log.txt; and it is kept when that
+  // restarted run is itself interrupted and resumed.
+  const RunConfig config = tinyConfig(scratch(""));
+  const std::string dir = scratch("both-corrupt");
+  fs::remove_all(dir);
+  RunOptions stop = quiet(dir);
+  stop.stopAfterSteps = 1000;
+  stop.checkpointAtStop = true;
+  runExperiment(prepareCase(config), stop);
+  RunOptions more = stop;
+  more.resume = true;
+  runExperiment(prepareCase(config), more);
+  for (const std::string& path : {checkpointPath(dir), previousCheckpointPath(dir)}) {
+    std::string bytes = readFile(path);
+    bytes[bytes.size() / 2] ^= 0x10;
+    writeFileAtomically(path, bytes);
+  }
+  runExperiment(prepareCase(config), more);  // restarts from the bed, stops again at step 1000
+  RunOptions resume = quiet(dir);
+  resume.resume = true;
+  const RunOutcome outcome = runExperiment(prepareCase(config), resume);
+  auto saysRestarted = [](const auto& warnings) {
+    int n = 0;
+    for (const auto& w : warnings) n += std::string(w).find("restarted from the bed") != std::string::npos;
+    return n;
+  };
+  EXPECT_EQ(saysRestarted(outcome.warnings), 1);
+  const auto summary = nlohmann::json::parse(readFile(dir + "/summary.json"));
+  EXPECT_EQ(saysRestarted(summary["warnings"].get<std::vector<std::string>>()), 1) << summary["warnings"];
+  // A new run in a fresh directory has no such history.
+  EXPECT_EQ(readRunWarnings(scratch("no-such-run")).size(), 0u);
+}
 
 TEST(Experiment, DamagedCheckpointsAndBedsAreNeverLoaded) {
   // A real checkpoint and a real cached bed, each damaged 100 ways (50 truncations at random

@@ -141,6 +141,7 @@ TEST(ResultsTable, RowsForPendingOkAndFailedCases) {
   results[0].grains = 100;
   results[0].steps = 2000;
   results[0].stateHash = "abc";
+  results[0].warnings = {"one, with a comma", "two"};
   results[1].status = "failed";
   results[1].error = "box.width = 5 is too narrow, really";
   const std::string csv = resultsCsv(spec, {"cases/a", "cases/b", "cases/c"}, results);
@@ -165,14 +166,34 @@ TEST(ResultsTable, RowsForPendingOkAndFailedCases) {
                                            "steps",
                                            "ns_per_particle_step",
                                            "state_hash",
-                                           "error"};
+                                           "error",
+                                           "warnings"};
   EXPECT_EQ(rows[0], header);
-  EXPECT_EQ(rows[1], (std::vector<std::string>{"deep_period=1", "cases/a", "ok",  "0.125", "-0.5", "0.25", "60", "3",
-                                               "deep",          "20",      "1",   "disk",  "3",    "0.1",  "1",  "100",
-                                               "2000",          "0",       "abc", ""}));
+  EXPECT_EQ(rows[1], (std::vector<std::string>{"deep_period=1",
+                                               "cases/a",
+                                               "ok",
+                                               "0.125",
+                                               "-0.5",
+                                               "0.25",
+                                               "60",
+                                               "3",
+                                               "deep",
+                                               "20",
+                                               "1",
+                                               "disk",
+                                               "3",
+                                               "0.1",
+                                               "1",
+                                               "100",
+                                               "2000",
+                                               "0",
+                                               "abc",
+                                               "",
+                                               "one, with a comma | two"}));
   EXPECT_EQ(rows[2][2], "failed");
   EXPECT_EQ(rows[2][3], "");
-  EXPECT_EQ(rows[2].back(), "box.width = 5 is too narrow, really");
+  EXPECT_EQ(rows[2][rows[2].size() - 2], "box.width = 5 is too narrow, really");
+  EXPECT_EQ(rows[2].back(), "");
   EXPECT_EQ(rows[3][2], "pending");
   EXPECT_EQ(rows[3][10], "3");
 }
@@ -246,6 +267,7 @@ TEST_F(SweepRunnerTest, RunsEveryCaseRecordsFailuresAndResumes) {
   EXPECT_EQ(first.cases, 6u);
   EXPECT_EQ(first.ok, 2u);
   EXPECT_EQ(first.failed, 4u);
+  EXPECT_NE(first.summary.find("2 cases have warnings"), std::string::npos) << first.summary;
   EXPECT_EQ(started.size(), 3u);  // the three amplitude-7 cases never start a process
 
   auto rows = readResults(out);
@@ -269,7 +291,8 @@ TEST_F(SweepRunnerTest, RunsEveryCaseRecordsFailuresAndResumes) {
                                              "steps",
                                              "ns_per_particle_step",
                                              "state_hash",
-                                             "error"};
+                                             "error",
+                                             "warnings"};
   EXPECT_EQ(header, expected);
   // Case order is the sweep's: the last grid key varies fastest.
   const auto all = parseCsv(readFile(out + "/results.csv"));
@@ -287,6 +310,10 @@ TEST_F(SweepRunnerTest, RunsEveryCaseRecordsFailuresAndResumes) {
     EXPECT_NE(summary.find("\"state_hash\": \"" + r.at("state_hash") + "\""), std::string::npos);
     EXPECT_EQ(r.at("steps"), "2000");
     EXPECT_FALSE(r.at("vy").empty());
+    // Its warnings too (these runs are short: within the drive's start-up transient).
+    EXPECT_NE(r.at("warnings").find("start-up transient"), std::string::npos) << r.at("warnings");
+    // ... which the sweep's console (here its log, which gets the same lines) says as the case ends.
+    EXPECT_NE(readFile(out + "/sweep.log").find(std::string("warning ") + ok + ": V_y is measured"), std::string::npos);
   }
   EXPECT_EQ(rows["amplitude=0.5_period=0.0003"].at("status"), "failed");
   EXPECT_NE(rows["amplitude=0.5_period=0.0003"].at("error").find("blew up"), std::string::npos)

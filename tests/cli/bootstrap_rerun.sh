@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# The README's first command, `tools/bootstrap.sh run`, typed twice must succeed twice (issue 27):
+# the second continues the run in wiggle-out instead of refusing it. The script is run from a copy
+# of the tree's tools/ with the build step stubbed (cmake on PATH does nothing) and the built
+# binary behind build/release/wiggle, its default case shrunk to a tiny one (--set) so that the
+# test takes seconds; the decision to refuse or continue is the real binary's.
+# Usage: bootstrap_rerun.sh SOURCE_DIR WIGGLE_BINARY
+set -euo pipefail
+src=$1
+binary=$2
+work=$(mktemp -d /tmp/wiggle-bootstrap-test-XXXXXX)
+trap 'rm -rf "$work"' EXIT
+mkdir -p "$work/tree/tools" "$work/tree/build/release" "$work/bin"
+cp "$src/tools/bootstrap.sh" "$work/tree/tools/"
+printf '#!/bin/sh\nexit 0\n' > "$work/bin/cmake"
+cat > "$work/tree/build/release/wiggle" <<WRAP
+#!/bin/sh
+exec "$binary" "\$@" --threads 1 --set box.width=20 --set box.bed_height=12 --set intruder.shape=square \
+  --set intruder.y0=6 --set drive.amplitude=0.5 --set drive.period=1 --set bed.rest_energy=1e-4 \
+  --set run.duration=0.05 --set run.sample_interval=0.005 --set run.dump_interval=0 --set fields.enabled=false --set run.plot=false
+WRAP
+chmod +x "$work/bin/cmake" "$work/tree/build/release/wiggle"
+export PATH="$work/bin:$PATH" WIGGLE_CACHE="$work/cache"
+for attempt in 1 2; do
+  if ! "$work/tree/tools/bootstrap.sh" run > "$work/out$attempt" 2>&1; then
+    echo "bootstrap_rerun: FAIL: 'tools/bootstrap.sh run' #$attempt exited non-zero:" >&2
+    cat "$work/out$attempt" >&2
+    exit 1
+  fi
+done
+grep -q "V_y = " "$work/out2" || { echo "bootstrap_rerun: FAIL: no result the second time" >&2; cat "$work/out2" >&2; exit 1; }
+echo "bootstrap_rerun: ok: run twice, both exit 0"

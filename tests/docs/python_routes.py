@@ -1,0 +1,127 @@
+#!/usr/bin/python3
+"""The documented Python routes, run exactly as the documents write them, in a fresh copy of the
+source tree (its tracked files, no build, nothing set in the environment but PATH and HOME).
+
+    python_routes.py SOURCE_DIR BUILD_DIR
+
+1. The notebook's own command, `jupyter nbconvert --to notebook --execute examples/figures.ipynb`,
+   typed at the root of the copy with nothing built: it must redraw figures 5 and 14 from the
+   committed results (results/paper_depth/fig5).
+2. python/README.md's `wp.run(...)` line, run from the root with `PYTHONPATH=python` as documented:
+   first with nothing built (it must raise the package's own WiggleError saying what to do, not a
+   raw FileNotFoundError), then with the copy built (build/release linked to BUILD_DIR): it must
+   find the build tree's wiggle and return the run.
+3. The notebook as `cmake --install` puts it (share/wiggle/examples), run where it was installed.
+Every command is taken from the documents' text (a test of the text, not of a variant of it).
+Exits 1 with a line per failure. The bed of route 2 goes to $WIGGLE_CACHE when set.
+"""
+import json
+import os
+import re
+import shlex
+import shutil
+import subprocess
+import sys
+import tempfile
+
+NOTEBOOK_COMMAND = "jupyter nbconvert --to notebook --execute examples/figures.ipynb"
+failures = []
+
+
+def check(ok, message):
+    if not ok:
+        failures.append(message)
+        print(f"python_routes: FAIL: {message}", file=sys.stderr)
+    return ok
+
+
+def documented(path, needle):
+    with open(path, encoding="utf-8") as f:
+        return needle in f.read()
+
+
+def fresh_copy(source, dest):
+    """The files a clone has: git's tracked files when SOURCE is a checkout, else the tree without build/."""
+    listed = subprocess.run(["git", "-C", source, "ls-files", "-z"], capture_output=True)
+    if listed.returncode == 0 and listed.stdout:
+        for name in listed.stdout.decode().split("\0"):
+            if name and os.path.lexists(os.path.join(source, name)):
+                os.makedirs(os.path.join(dest, os.path.dirname(name)), exist_ok=True)
+                shutil.copy2(os.path.join(source, name), os.path.join(dest, name), follow_symlinks=False)
+    else:
+        shutil.copytree(source, dest, dirs_exist_ok=True, ignore=shutil.ignore_patterns("build", "wiggle-out"))
+
+
+def shell(command, cwd, home, extra=None):
+    env = {"PATH": "/usr/bin:/bin", "HOME": home}
+    env.update(extra or {})
+    return subprocess.run(["/bin/sh", "-c", command], cwd=cwd, env=env, capture_output=True, text=True,
+                          timeout=1200)
+
+
+def executed_notebook_ok(path, what):
+    """Whether the executed notebook at `path` holds figures 5 and 14 and no error."""
+    if not check(os.path.exists(path), f"{what}: no executed notebook {path}"):
+        return
+    with open(path, encoding="utf-8") as f:
+        nb = json.load(f)
+    outputs = [o for c in nb["cells"] if c["cell_type"] == "code" for o in c.get("outputs", [])]
+    images = sum("image/png" in o.get("data", {}) for o in outputs)
+    errors = [o for o in outputs if o.get("output_type") == "error"]
+    check(not errors, f"{what}: the notebook raised {errors[:1]}")
+    check(images >= 3, f"{what}: {images} figures shown, expected figures 5, 14 and a trajectory")
+
+
+def main():
+    source, build = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
+    work = tempfile.mkdtemp(prefix="wiggle-python-routes-")
+    try:
+        home = os.path.join(work, "home")
+        os.makedirs(home)
+        tree = os.path.join(work, "clone")
+        fresh_copy(source, tree)
+
+        # 1. The notebook's own command at the root of the copy.
+        check(documented(os.path.join(tree, "python", "README.md"), NOTEBOOK_COMMAND),
+              "python/README.md no longer gives the notebook's command")
+        check(documented(os.path.join(tree, "examples", "figures.ipynb"), NOTEBOOK_COMMAND),
+              "the notebook no longer gives its command")
+        done = shell(NOTEBOOK_COMMAND, tree, home)
+        if check(done.returncode == 0, f"`{NOTEBOOK_COMMAND}` at the root: exit {done.returncode}: {done.stderr[-1500:]}"):
+            executed_notebook_ok(os.path.join(tree, "examples", "figures.nbconvert.ipynb"), "notebook at the root")
+
+        # 2. python/README.md's wp.run line, from the root with PYTHONPATH=python.
+        with open(os.path.join(tree, "python", "README.md"), encoding="utf-8") as f:
+            line = next((l for l in f if "wp.run(" in l and l.lstrip().startswith("run = ")), None)
+        if check(line is not None, "python/README.md has no `run = wp.run(...)` line"):
+            code = "import wiggleplot as wp; " + line.split("#")[0].strip() + "; print('vy', run.vy)"
+            command = f"PYTHONPATH=python /usr/bin/python3 -c {shlex.quote(code)}"
+            cache = {"WIGGLE_CACHE": os.environ["WIGGLE_CACHE"]} if os.environ.get("WIGGLE_CACHE") else {}
+            unbuilt = shell(command, tree, home, cache)
+            check(unbuilt.returncode != 0 and "WiggleError" in unbuilt.stderr and "tools/bootstrap.sh build" in unbuilt.stderr,
+                  f"wp.run with nothing built: expected the package's WiggleError naming tools/bootstrap.sh build, got "
+                  f"exit {unbuilt.returncode}: {unbuilt.stderr.strip().splitlines()[-1:]}")
+            os.makedirs(os.path.join(tree, "build"))
+            os.symlink(build, os.path.join(tree, "build", "release"))
+            built = shell(command, tree, home, cache)
+            if check(built.returncode == 0, f"wp.run built: exit {built.returncode}: {built.stderr[-1500:]}"):
+                check(re.search(r"^vy [-+0-9.e]+$", built.stdout, re.M) is not None, f"wp.run printed {built.stdout!r}")
+                check(os.path.exists(os.path.join(tree, "t5", "summary.json")), "wp.run wrote no t5/summary.json")
+
+        # 3. The installed notebook, run where it was installed.
+        prefix = os.path.join(work, "prefix")
+        installed = subprocess.run(["cmake", "--install", build, "--prefix", prefix], capture_output=True, text=True)
+        if check(installed.returncode == 0, f"cmake --install: {installed.stderr[-500:]}"):
+            examples = os.path.join(prefix, "share", "wiggle", "examples")
+            done = shell("jupyter nbconvert --to notebook --execute figures.ipynb", examples, home)
+            if check(done.returncode == 0, f"installed notebook: exit {done.returncode}: {done.stderr[-1500:]}"):
+                executed_notebook_ok(os.path.join(examples, "figures.nbconvert.ipynb"), "installed notebook")
+    finally:
+        shutil.rmtree(work, ignore_errors=True)
+    if not failures:
+        print("python_routes: ok: the notebook at the root of a fresh copy and installed, wp.run unbuilt and built")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
