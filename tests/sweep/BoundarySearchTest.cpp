@@ -60,7 +60,9 @@ void expectEdgesWithin(const BoundarySearch& s, double resolution) {
   const Probe* previous = nullptr;
   for (const Probe& p : s.probes()) {
     if (p.failed) continue;
-    if (previous && previous->verdict != p.verdict) EXPECT_LE(p.value - previous->value, resolution + 1e-12);
+    if (previous && previous->verdict != p.verdict) {
+      EXPECT_LE(p.value - previous->value, resolution + 1e-12);
+    }
     previous = &p;
   }
 }
@@ -78,7 +80,9 @@ TEST(BoundarySearch, OneCrossingIsBracketedToTheResolution) {
   expectEdgesWithin(s, 0.1);
   // Far from the crossing (|V_y| >= 0.065, 16 times the noise) two beds decide.
   for (const Probe& p : s.probes())
-    if (std::fabs(p.value - 2.7) > 1.0) EXPECT_EQ(p.vy.size(), 2u) << p.value;
+    if (std::fabs(p.value - 2.7) > 1.0) {
+      EXPECT_EQ(p.vy.size(), 2u) << p.value;
+    }
 }
 
 TEST(BoundarySearch, TwoCrossingsAreBothFound) {
@@ -123,7 +127,9 @@ TEST(BoundarySearch, AFlatStretchIsANeutralBandNotAFailure) {
   EXPECT_LE(bands[0].last, 4.5);
   expectEdgesWithin(s, 0.25);
   for (const Probe& p : s.probes())
-    if (p.verdict == Verdict::Neutral) EXPECT_EQ(p.vy.size(), 3u);
+    if (p.verdict == Verdict::Neutral) {
+      EXPECT_EQ(p.vy.size(), 3u);
+    }
 }
 
 TEST(BoundarySearch, ATouchOfZeroWithoutASignChangeIsABandButNoCrossing) {
