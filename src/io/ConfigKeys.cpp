@@ -69,182 +69,154 @@ using C = RunConfig;
 const std::vector<KeyInfo>& keyTable() {
   static const std::vector<KeyInfo> table = {
       // [box]
-      number(
-          "box.width", [](C& c) -> double& { return c.box.width; }, above(0), noBound, "d",
-          "box width W, periodic in x; a whole number"),
-      number(
-          "box.bed_height", [](C& c) -> double& { return c.box.bedHeight; }, above(0), noBound, "d",
-          "target height of the bed's free surface"),
-      integer(
-          "box.seed", [](C& c) -> std::uint64_t& { return c.box.seed; }, atLeast(0), "",
-          "seed of the grain diameters and the pouring (same seed, same bed)"),
+      number("box.width", [](C& c) -> double& { return c.box.width; }, above(0), noBound, "d",
+             "box width W, periodic in x; a whole number"),
+      number("box.bed_height", [](C& c) -> double& { return c.box.bedHeight; }, above(0), noBound,
+             "d", "target height of the bed's free surface"),
+      integer("box.seed", [](C& c) -> std::uint64_t& { return c.box.seed; }, atLeast(0), "",
+              "seed of the grain diameters and the pouring (same seed, same bed)"),
       // [grains]
-      number(
-          "grains.d_min", [](C& c) -> double& { return c.grains.dMin; }, above(0), noBound, "d",
-          "smallest grain diameter (diameters are uniform in [d_min, d_max])"),
-      number(
-          "grains.d_max", [](C& c) -> double& { return c.grains.dMax; }, above(0), noBound, "d",
-          "largest grain diameter; >= d_min"),
+      number("grains.d_min", [](C& c) -> double& { return c.grains.dMin; }, above(0), noBound, "d",
+             "smallest grain diameter (diameters are uniform in [d_min, d_max])"),
+      number("grains.d_max", [](C& c) -> double& { return c.grains.dMax; }, above(0), noBound, "d",
+             "largest grain diameter; >= d_min"),
       choice(
           "grains.mass_model", {"sphere", "disc"},
-          [](const C& c) -> std::string { return c.grains.massModel == MassModel::Sphere ? "sphere" : "disc"; },
-          [](C& c, const std::string& v) { c.grains.massModel = v == "sphere" ? MassModel::Sphere : MassModel::Disc; },
+          [](const C& c) -> std::string {
+            return c.grains.massModel == MassModel::Sphere ? "sphere" : "disc";
+          },
+          [](C& c, const std::string& v) {
+            c.grains.massModel = v == "sphere" ? MassModel::Sphere : MassModel::Disc;
+          },
           "grain mass and inertia: sphere m = (4/3) pi r^3, I = (2/5) m r^2; "
           "disc m = pi r^2, I = (1/2) m r^2"),
       // [contact]
-      number(
-          "contact.kn", [](C& c) -> double& { return c.contact.kn; }, above(0), noBound, "m g / d^2",
-          "normal stiffness K_n of the Hertz law"),
-      number(
-          "contact.kt", [](C& c) -> double& { return c.contact.kt; }, above(0), noBound, "m g / d^2",
-          "tangential stiffness K_t"),
-      number(
-          "contact.gamma_n", [](C& c) -> double& { return c.contact.gammaN; }, atLeast(0), noBound, "1/(d sqrt(d/g))",
-          "normal viscoelastic damping gamma_n"),
-      number(
-          "contact.gamma_t", [](C& c) -> double& { return c.contact.gammaT; }, atLeast(0), noBound, "1/(d sqrt(d/g))",
-          "tangential viscoelastic damping gamma_t"),
-      number(
-          "contact.mu", [](C& c) -> double& { return c.contact.mu; }, atLeast(0), noBound, "",
-          "Coulomb friction coefficient"),
+      number("contact.kn", [](C& c) -> double& { return c.contact.kn; }, above(0), noBound,
+             "m g / d^2", "normal stiffness K_n of the Hertz law"),
+      number("contact.kt", [](C& c) -> double& { return c.contact.kt; }, above(0), noBound,
+             "m g / d^2", "tangential stiffness K_t"),
+      number("contact.gamma_n", [](C& c) -> double& { return c.contact.gammaN; }, atLeast(0),
+             noBound, "1/(d sqrt(d/g))", "normal viscoelastic damping gamma_n"),
+      number("contact.gamma_t", [](C& c) -> double& { return c.contact.gammaT; }, atLeast(0),
+             noBound, "1/(d sqrt(d/g))", "tangential viscoelastic damping gamma_t"),
+      number("contact.mu", [](C& c) -> double& { return c.contact.mu; }, atLeast(0), noBound, "",
+             "Coulomb friction coefficient"),
       // [intruder]
       choice(
           "intruder.shape", {"disk", "square", "rect_narrow", "rect_wide", "triangle", "polygon"},
           [](C& c) -> std::string& { return c.intruder.shape; },
           "outline: the paper's OS1..OS5 (docs/SHAPES.md) or \"polygon\" given by intruder.vertices"),
-      pointList(
-          "intruder.vertices", [](C& c) -> Points& { return c.intruder.vertices; }, "d",
-          "outer outline for shape = \"polygon\": at least 3 [x, y] pairs; "
-          "empty for the other shapes"),
-      number(
-          "intruder.angle", [](C& c) -> double& { return c.intruder.angle; }, noBound, noBound, "degrees",
-          "rotation of the outline, counter-clockwise"),
-      number(
-          "intruder.y0", [](C& c) -> double& { return c.intruder.y0; }, above(0), noBound, "d",
-          "centre height at t = 0 (x0 is the box centre); < box.bed_height"),
-      number(
-          "intruder.mass", [](C& c) -> double& { return c.intruder.mass; }, atLeast(0), noBound, "rho d^3",
-          "intruder mass; 0 = the one intruder.mass_rule gives"),
+      pointList("intruder.vertices", [](C& c) -> Points& { return c.intruder.vertices; }, "d",
+                "outer outline for shape = \"polygon\": at least 3 [x, y] pairs; "
+                "empty for the other shapes"),
+      number("intruder.angle", [](C& c) -> double& { return c.intruder.angle; }, noBound, noBound,
+             "degrees", "rotation of the outline, counter-clockwise"),
+      number("intruder.y0", [](C& c) -> double& { return c.intruder.y0; }, above(0), noBound, "d",
+             "centre height at t = 0 (x0 is the box centre); < box.bed_height"),
+      number("intruder.mass", [](C& c) -> double& { return c.intruder.mass; }, atLeast(0), noBound,
+             "rho d^3", "intruder mass; 0 = the one intruder.mass_rule gives"),
       choice(
-          "intruder.mass_rule", {"disk_area", "glued_disk"}, [](C& c) -> std::string& { return c.intruder.massRule; },
+          "intruder.mass_rule", {"disk_area", "glued_disk"},
+          [](C& c) -> std::string& { return c.intruder.massRule; },
           "the mass when intruder.mass = 0, the same for every shape: disk_area = the disk outline's area x "
           "the grains' mass per area (docs/PHYSICS.md, section 6); glued_disk = the disk built of touching "
           "0.5 d spheres at grain density (docs/SHAPES.md)"),
       choice(
-          "intruder.surface", {"smooth", "glued"}, [](C& c) -> std::string& { return c.intruder.surface; },
+          "intruder.surface", {"smooth", "glued"},
+          [](C& c) -> std::string& { return c.intruder.surface; },
           "the clump's atoms: smooth = neighbours at most 0.35 d apart; glued = touching (0.5 d apart), a "
           "rough surface like the paper's glued spheres (docs/SHAPES.md)"),
       // [drive]
-      number(
-          "drive.amplitude", [](C& c) -> double& { return c.drive.amplitude; }, atLeast(0), noBound, "d",
-          "A in x(t) = x0 + A sin(2 pi t / T); with drive.form = \"velocity\" a speed [sqrt(g d)]: "
-          "vx(t) = A sin(2 pi t / T)"),
-      number(
-          "drive.period", [](C& c) -> double& { return c.drive.period; }, above(0), noBound, "sqrt(d/g)",
-          "T in x(t) = x0 + A sin(2 pi t / T); a whole number of run.dt steps"),
-      integer(
-          "drive.ramp_periods", [](C& c) -> std::uint64_t& { return c.drive.rampPeriods; }, atLeast(0), "",
-          "periods over which the amplitude grows linearly from 0 to A, so the drive starts from rest "
-          "(0 = no ramp: x0 + A sin(2 pi t / T) from t = 0, at full speed; docs/PHYSICS.md, section 7)"),
+      number("drive.amplitude", [](C& c) -> double& { return c.drive.amplitude; }, atLeast(0),
+             noBound, "d",
+             "A in x(t) = x0 + A sin(2 pi t / T); with drive.form = \"velocity\" a speed [sqrt(g d)]: "
+             "vx(t) = A sin(2 pi t / T)"),
+      number("drive.period", [](C& c) -> double& { return c.drive.period; }, above(0), noBound,
+             "sqrt(d/g)", "T in x(t) = x0 + A sin(2 pi t / T); a whole number of run.dt steps"),
+      integer("drive.ramp_periods", [](C& c) -> std::uint64_t& { return c.drive.rampPeriods; }, atLeast(0), "",
+              "periods over which the amplitude grows linearly from 0 to A, so the drive starts from rest "
+              "(0 = no ramp: x0 + A sin(2 pi t / T) from t = 0, at full speed; docs/PHYSICS.md, section 7)"),
       choice(
-          "drive.form", {"displacement", "velocity"}, [](C& c) -> std::string& { return c.drive.form; },
+          "drive.form", {"displacement", "velocity"},
+          [](C& c) -> std::string& { return c.drive.form; },
           "how the paper's drive is read (docs/PHYSICS.md, section 7): displacement = x(t) = x0 + A sin(2 pi t / T); "
           "velocity = vx(t) = A sin(2 pi t / T), the paper's formula read as a velocity: x(t) = x0 + (A T / 2 pi)"
           "(1 - cos(2 pi t / T)), from rest, swinging A T / pi to one side"),
       // [bed]
-      number(
-          "bed.batch_height", [](C& c) -> double& { return c.bed.batchHeight; }, above(0), noBound, "d",
-          "height of each poured layer"),
+      number("bed.batch_height", [](C& c) -> double& { return c.bed.batchHeight; }, above(0),
+             noBound, "d", "height of each poured layer"),
       choice(
-          "bed.pour", {"lattice", "random"}, [](C& c) -> std::string& { return c.bed.pour; },
+          "bed.pour", {"lattice", "random"},
+          [](C& c) -> std::string& { return c.bed.pour; },
           "how each batch is placed (docs/PHYSICS.md, section 8): lattice = a loose lattice with small random "
           "velocities; random = grains at random non-overlapping positions, as LAMMPS's fix pour"),
       choice(
-          "bed.cavity", {"poured", "carved"}, [](C& c) -> std::string& { return c.bed.cavity; },
+          "bed.cavity", {"poured", "carved"},
+          [](C& c) -> std::string& { return c.bed.cavity; },
           "how the intruder gets its place in the bed (docs/PHYSICS.md, section 8): poured = the grains are poured "
           "around the held intruder; carved = the seed's bed is poured once without an intruder (shared by every "
           "shape and y0), the grains the intruder overlaps are removed and the bed relaxes to rest around it"),
-      number(
-          "bed.pour_fraction", [](C& c) -> double& { return c.bed.pourFraction; }, above(0), atMost(0.6), "",
-          "pour = \"random\" only: area fraction of grains a batch fills in its insertion region "
-          "(box.width x bed.batch_height, one d_max above the highest grain; fix pour's vol)"),
-      number(
-          "bed.pour_speed", [](C& c) -> double& { return c.bed.pourSpeed; }, atLeast(0), noBound, "sqrt(g d)",
-          "pour = \"random\" only: downward speed at the top of the insertion region; a grain "
-          "lower in it starts as if it had fallen from there (fix pour's vel; vx = 0)"),
-      number(
-          "bed.settle_speed", [](C& c) -> double& { return c.bed.settleSpeed; }, above(0), noBound, "sqrt(g d)",
-          "the next batch is poured when the rms grain speed is below this"),
-      number(
-          "bed.rest_energy", [](C& c) -> double& { return c.bed.restEnergy; }, above(0), noBound, "m g d",
-          "final relaxation ends when the kinetic energy per grain, averaged over one time unit, is below this"),
-      number(
-          "bed.relax_damping", [](C& c) -> double& { return c.bed.relaxDamping; }, atLeast(0), atMost(100), "sqrt(g/d)",
-          "while the levelled bed relaxes, its grains' velocities decay as exp(-rate t) besides the "
-          "contacts' own damping (applied every 1000 steps), so it comes to rest sooner; 0 = off"),
-      number(
-          "bed.max_time", [](C& c) -> double& { return c.bed.maxTime; }, above(0), noBound, "sqrt(d/g)",
-          "give up making the bed after this much simulated time"),
-      text(
-          "bed.file", [](C& c) -> std::string& { return c.bed.file; },
-          "run on the bed in this file (a cached bed-KEY.bin) instead of the config's own, e.g. one bed for a whole "
-          "friction or time-step study; it must have this box width, mass model and intruder (clump, mass, y0); "
-          "contact, run.dt and engine keys are this config's (\"\" = the config's own bed)"),
-      text(
-          "bed.cache_dir", [](C& c) -> std::string& { return c.bed.cacheDir; },
-          "directory of cached beds (\"\" = $WIGGLE_CACHE or ~/.cache/wiggle)"),
+      number("bed.pour_fraction", [](C& c) -> double& { return c.bed.pourFraction; }, above(0), atMost(0.6),
+             "", "pour = \"random\" only: area fraction of grains a batch fills in its insertion region "
+             "(box.width x bed.batch_height, one d_max above the highest grain; fix pour's vol)"),
+      number("bed.pour_speed", [](C& c) -> double& { return c.bed.pourSpeed; }, atLeast(0), noBound,
+             "sqrt(g d)", "pour = \"random\" only: downward speed at the top of the insertion region; a grain "
+             "lower in it starts as if it had fallen from there (fix pour's vel; vx = 0)"),
+      number("bed.settle_speed", [](C& c) -> double& { return c.bed.settleSpeed; }, above(0),
+             noBound, "sqrt(g d)", "the next batch is poured when the rms grain speed is below this"),
+      number("bed.rest_energy", [](C& c) -> double& { return c.bed.restEnergy; }, above(0), noBound,
+             "m g d", "final relaxation ends when the kinetic energy per grain, averaged over one time unit, is below this"),
+      number("bed.relax_damping", [](C& c) -> double& { return c.bed.relaxDamping; }, atLeast(0), atMost(100),
+             "sqrt(g/d)", "while the levelled bed relaxes, its grains' velocities decay as exp(-rate t) besides the "
+             "contacts' own damping (applied every 1000 steps), so it comes to rest sooner; 0 = off"),
+      number("bed.max_time", [](C& c) -> double& { return c.bed.maxTime; }, above(0), noBound,
+             "sqrt(d/g)", "give up making the bed after this much simulated time"),
+      text("bed.file", [](C& c) -> std::string& { return c.bed.file; },
+           "run on the bed in this file (a cached bed-KEY.bin) instead of the config's own, e.g. one bed for a whole "
+           "friction or time-step study; it must have this box width, mass model and intruder (clump, mass, y0); "
+           "contact, run.dt and engine keys are this config's (\"\" = the config's own bed)"),
+      text("bed.cache_dir", [](C& c) -> std::string& { return c.bed.cacheDir; },
+           "directory of cached beds (\"\" = $WIGGLE_CACHE or ~/.cache/wiggle)"),
       // [run]
-      number(
-          "run.dt", [](C& c) -> double& { return c.run.dt; }, above(0), noBound, "sqrt(d/g)", "time step"),
-      number(
-          "run.duration", [](C& c) -> double& { return c.run.duration; }, above(0), noBound, "sqrt(d/g)",
-          "simulated time t_total of the run; >= run.dt"),
-      number(
-          "run.sample_interval", [](C& c) -> double& { return c.run.sampleInterval; }, above(0), noBound, "sqrt(d/g)",
-          "trajectory sampling interval; a whole number of run.dt steps"),
-      number(
-          "run.checkpoint_interval", [](C& c) -> double& { return c.run.checkpointInterval; }, above(0), noBound, "s",
-          "wall-clock time between checkpoints (of the run, and of a bed being made)"),
-      number(
-          "run.dump_interval", [](C& c) -> double& { return c.run.dumpInterval; }, atLeast(0), noBound, "sqrt(d/g)",
-          "interval of LAMMPS text dump frames (0 = none); a whole number of run.dt steps. The default 9.7 "
-          "is no whole number of any period from 0.25 to 8, so the frames catch the drive at different "
-          "phases (a multiple of T would show the intruder at the same place in every frame)"),
-      boolean(
-          "run.plot", [](C& c) -> bool& { return c.run.plot; }, "draw the run's figures at the end"),
-      boolean(
-          "run.bed_history", [](C& c) -> bool& { return c.run.keepBedHistory; },
-          "start from the bed's contact history (false: every tangential spring unloaded, as an exported "
-          "LAMMPS deck starts; for comparisons with LAMMPS)"),
+      number("run.dt", [](C& c) -> double& { return c.run.dt; }, above(0), noBound, "sqrt(d/g)",
+             "time step"),
+      number("run.duration", [](C& c) -> double& { return c.run.duration; }, above(0), noBound,
+             "sqrt(d/g)", "simulated time t_total of the run; >= run.dt"),
+      number("run.sample_interval", [](C& c) -> double& { return c.run.sampleInterval; }, above(0),
+             noBound, "sqrt(d/g)", "trajectory sampling interval; a whole number of run.dt steps"),
+      number("run.checkpoint_interval", [](C& c) -> double& { return c.run.checkpointInterval; },
+             above(0), noBound, "s", "wall-clock time between checkpoints (of the run, and of a bed being made)"),
+      number("run.dump_interval", [](C& c) -> double& { return c.run.dumpInterval; }, atLeast(0),
+             noBound, "sqrt(d/g)",
+             "interval of LAMMPS text dump frames (0 = none); a whole number of run.dt steps. The default 9.7 "
+             "is no whole number of any period from 0.25 to 8, so the frames catch the drive at different "
+             "phases (a multiple of T would show the intruder at the same place in every frame)"),
+      boolean("run.plot", [](C& c) -> bool& { return c.run.plot; },
+              "draw the run's figures at the end"),
+      boolean("run.bed_history", [](C& c) -> bool& { return c.run.keepBedHistory; },
+              "start from the bed's contact history (false: every tangential spring unloaded, as an exported "
+              "LAMMPS deck starts; for comparisons with LAMMPS)"),
       // [fields]
-      boolean(
-          "fields.enabled", [](C& c) -> bool& { return c.fields.enabled; },
-          "measure the coarse-grained fields (area fraction, velocity, stress)"),
-      numberList(
-          "fields.phases", [](C& c) -> std::vector<double>& { return c.fields.phases; }, atLeast(0), below(20),
-          "10 phi / pi", "drive phases at which fields are averaged, each in [0, 20)"),
-      number(
-          "fields.radius", [](C& c) -> double& { return c.fields.radius; }, above(0), noBound, "d",
-          "half-size of the field grid around the intruder centre"),
-      number(
-          "fields.spacing", [](C& c) -> double& { return c.fields.spacing; }, above(0), noBound, "d",
-          "field grid spacing"),
-      number(
-          "fields.width", [](C& c) -> double& { return c.fields.width; }, above(0), noBound, "d",
-          "width w of the Gaussian coarse-graining function"),
-      boolean(
-          "fields.kinetic", [](C& c) -> bool& { return c.fields.kinetic; },
-          "add the kinetic stress to the contact stress"),
+      boolean("fields.enabled", [](C& c) -> bool& { return c.fields.enabled; },
+              "measure the coarse-grained fields (area fraction, velocity, stress)"),
+      numberList("fields.phases", [](C& c) -> std::vector<double>& { return c.fields.phases; },
+                 atLeast(0), below(20), "10 phi / pi",
+                 "drive phases at which fields are averaged, each in [0, 20)"),
+      number("fields.radius", [](C& c) -> double& { return c.fields.radius; }, above(0), noBound,
+             "d", "half-size of the field grid around the intruder centre"),
+      number("fields.spacing", [](C& c) -> double& { return c.fields.spacing; }, above(0), noBound,
+             "d", "field grid spacing"),
+      number("fields.width", [](C& c) -> double& { return c.fields.width; }, above(0), noBound, "d",
+             "width w of the Gaussian coarse-graining function"),
+      boolean("fields.kinetic", [](C& c) -> bool& { return c.fields.kinetic; },
+              "add the kinetic stress to the contact stress"),
       // [engine]
-      number(
-          "engine.skin", [](C& c) -> double& { return c.engine.skin; }, above(0), noBound, "d",
-          "Verlet skin of the grain neighbour list"),
-      number(
-          "engine.intruder_skin", [](C& c) -> double& { return c.engine.intruderSkin; }, above(0), noBound, "d",
-          "Verlet skin of the intruder's neighbour list"),
-      integer(
-          "engine.sort_interval", [](C& c) -> std::uint64_t& { return c.engine.sortInterval; }, atLeast(1), "steps",
-          "steps between spatial re-sorts of the grains"),
+      number("engine.skin", [](C& c) -> double& { return c.engine.skin; }, above(0), noBound, "d",
+             "Verlet skin of the grain neighbour list"),
+      number("engine.intruder_skin", [](C& c) -> double& { return c.engine.intruderSkin; },
+             above(0), noBound, "d", "Verlet skin of the intruder's neighbour list"),
+      integer("engine.sort_interval", [](C& c) -> std::uint64_t& { return c.engine.sortInterval; },
+              atLeast(1), "steps", "steps between spatial re-sorts of the grains"),
   };
   return table;
 }

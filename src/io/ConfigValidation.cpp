@@ -97,6 +97,10 @@ void checkShapeKeys(const RunConfig& c) {
     throw Error("intruder.y0 = " + num(c.intruder.y0) + ": must be < box.bed_height (" +
                 num(c.box.bedHeight) + ")");
   }
+  if (c.drive.form == "velocity" && c.drive.rampPeriods > 0) {
+    throw Error("drive.ramp_periods = " + std::to_string(c.drive.rampPeriods) +
+                ": only with drive.form = \"displacement\" (the velocity form starts from rest already)");
+  }
 }
 
 void requireWholeSteps(const char* key, double interval, double dt, const char* must) {

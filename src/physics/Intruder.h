@@ -35,6 +35,10 @@ struct ClumpMotion {
                            // continuous where the ramp ends, since sin(2 pi t_ramp / T) = 0 there
 
   double omega() const { return 2.0 * std::numbers::pi / period; }  // angular frequency of the sinusoids
+  bool sinusoidal() const {  // one of the drives with a period
+    return kind == HorizontalMotion::Sinusoid || kind == HorizontalMotion::RampedSinusoid ||
+           kind == HorizontalMotion::VelocitySinusoid;
+  }
 
   struct Position {
     double x = 0.0;   // [d]

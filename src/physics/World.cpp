@@ -141,9 +141,7 @@ void World::setIntruder(const ClumpDef& clump, double x, double y) {
 
 void World::setIntruderMotion(const ClumpMotion& motion) {
   if (!hasIntruder_) throw Error("set an intruder before its motion");
-  const bool sinusoid = motion.kind == HorizontalMotion::Sinusoid || motion.kind == HorizontalMotion::RampedSinusoid ||
-                        motion.kind == HorizontalMotion::VelocitySinusoid;
-  if (sinusoid && !(motion.period > 0)) throw Error("drive period must be > 0");
+  if (motion.sinusoidal() && !(motion.period > 0)) throw Error("drive period must be > 0");
   if (motion.kind == HorizontalMotion::RampedSinusoid && !(motion.rampTime > 0 && std::isfinite(motion.rampTime)))
     throw Error("drive ramp time must be > 0 and finite");
   requireFinite(motion.x0, "drive centre");

@@ -26,12 +26,7 @@ std::uint64_t stepsOf(double interval, double dt, const char* key) {
 }  // namespace
 
 HorizontalMotion driveKind(const DriveDef& drive) {
-  if (drive.form == "velocity") {
-    if (drive.rampPeriods > 0)
-      throw Error("drive.ramp_periods = " + std::to_string(drive.rampPeriods) +
-                  " needs drive.form = \"displacement\": the velocity form starts from rest already");
-    return HorizontalMotion::VelocitySinusoid;
-  }
+  if (drive.form == "velocity") return HorizontalMotion::VelocitySinusoid;  // a ramp is refused by validation
   return drive.rampPeriods > 0 ? HorizontalMotion::RampedSinusoid : HorizontalMotion::Sinusoid;
 }
 

@@ -48,7 +48,8 @@ struct Case {
 Case prepareCase(const RunConfig& config);
 
 // The drive's horizontal motion once the run starts (docs/PHYSICS.md §7): the sinusoid of
-// drive.form, ramped when drive.ramp_periods > 0 (displacement form only).
+// drive.form, ramped when drive.ramp_periods > 0 (displacement form only: io/Config's validation
+// refuses a ramp with the velocity form).
 HorizontalMotion driveKind(const DriveDef& drive);
 
 // How far the intruder swings either side of the centre of its motion at drive period `period`:

@@ -191,9 +191,7 @@ std::string lammpsInput(const World& world, const RunConfig& config, const RunSc
 LammpsDeck makeLammpsDeck(const World& world, const Case& run) {
   if (!world.hasIntruder()) throw Error("export-lammps: the world has no intruder");
   const ClumpMotion& motion = world.intruderMotion();
-  const bool sinusoid = motion.kind == HorizontalMotion::Sinusoid || motion.kind == HorizontalMotion::RampedSinusoid ||
-                        motion.kind == HorizontalMotion::VelocitySinusoid;
-  if (!sinusoid || !motion.verticalFree)
+  if (!motion.sinusoidal() || !motion.verticalFree)
     throw Error("export-lammps: the intruder must be driven sinusoidally with y free");
   if (world.stepCount() != 0) throw Error("export-lammps: the world's clock must be at t = 0");
   LammpsDeck deck;

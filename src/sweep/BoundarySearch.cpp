@@ -52,8 +52,12 @@ BoundarySearch::BoundarySearch(const BoundaryOptions& options) : options_(option
   }
 }
 
+double BoundarySearch::sameValueTolerance() const {
+  return 1e-12 * std::max(1.0, std::fabs(options_.hi - options_.lo));
+}
+
 Probe& BoundarySearch::probeAt(double value) {
-  const double tolerance = 1e-12 * std::max(1.0, std::fabs(options_.hi - options_.lo));
+  const double tolerance = sameValueTolerance();
   for (Probe& p : probes_)
     if (std::fabs(p.value - value) <= tolerance) return p;
   throw Error("boundary search: internal error: no probe at " + formatNumber(value, 17));
@@ -100,7 +104,7 @@ void BoundarySearch::refine() {
   // it is, the failures reported).
   // The closure does not depend on the order results arrive in: each verdict is a function of its
   // own probe's results only.
-  const double tolerance = 1e-12 * std::max(1.0, std::fabs(options_.hi - options_.lo));
+  const double tolerance = sameValueTolerance();
   for (;;) {
     std::optional<double> split;
     const Probe* previous = nullptr;

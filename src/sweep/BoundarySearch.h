@@ -25,9 +25,7 @@
 // resolution of what can be found at all, and is reported.
 // A run that fails is recorded as such: its probe is set aside (reported, never decided) and its
 // neighbours are compared across it.
-#include <cstddef>
 #include <optional>
-#include <string>
 #include <vector>
 
 namespace wiggle {
@@ -102,6 +100,7 @@ class BoundarySearch {
   std::vector<NeutralBand> neutralBands() const;
 
  private:
+  double sameValueTolerance() const;  // two values this close are one probe
   Probe& probeAt(double value);
   void decide(Probe& probe) const;
   void refine();
