@@ -24,15 +24,16 @@ Remeasured remeasureRun(const std::string& runDir, const RemeasureRequest& reque
   Remeasured r;
   r.period = run.config.drive.period;
   const double end = samples.back().t;
-  r.window.to = request.to.value_or(run.config.run.duration);
-  r.window.from = request.from.value_or(paperWindow(r.window.to).from);
-  if (r.window.to > end + 1e-9 * std::max(1.0, end))
-    throw Error("--to " + formatNumber(r.window.to) + " is past the end of " + trajectoryPath +
+  RateWindow window;
+  window.to = request.to.value_or(run.config.run.duration);
+  window.from = request.from.value_or(paperWindow(window.to).from);
+  if (window.to > end + 1e-9 * std::max(1.0, end))
+    throw Error("--to " + formatNumber(window.to) + " is past the end of " + trajectoryPath +
                 " (t = " + formatNumber(end) + ")");
-  if (r.window.from < samples.front().t)
-    throw Error("--from " + formatNumber(r.window.from) + " is before the start of " + trajectoryPath);
-  r.rate = measureRiseRate(samples, r.window, r.period, run.surfacedHeight);
-  r.settled = measureSettledRate(samples, r.window, r.period, r.rate, request.rule);
+  if (window.from < samples.front().t)
+    throw Error("--from " + formatNumber(window.from) + " is before the start of " + trajectoryPath);
+  r.rate = measureRiseRate(samples, window, r.period, run.surfacedHeight);
+  r.settled = measureSettledRate(samples, window, r.period, r.rate, request.rule);
   return r;
 }
 

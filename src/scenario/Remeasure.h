@@ -17,8 +17,7 @@ struct RemeasureRequest {
 
 struct Remeasured {
   double period = 0.0;
-  RateWindow window;
-  RiseRate rate;
+  RiseRate rate;  // its tInitial and tFinal are the window measured
   SettledRate settled;
 };
 
