@@ -173,7 +173,7 @@ class SweepDataTest(DataDirs):
     def test_t_rising_interpolates_the_zero_crossing(self):
         self.assertAlmostEqual(prepare.t_rising([1, 2, 4, 8], [-0.02, -0.01, 0.03, 0.05])[0], 2.5)
         t, lo, hi, note = prepare.t_rising([1, 2, 4, 8], [-0.04, -0.03, -0.02, -0.01])
-        self.assertTrue(math.isnan(t) and lo == 8 and note == "never rises")
+        self.assertTrue(math.isnan(t) and lo == 8 and note == "V_y <= 0 at the largest T = 8")
         t, lo, hi, note = prepare.t_rising([1, 2], [0.01, 0.02])
         self.assertTrue(math.isnan(t) and hi == 1)
         # The last crossing counts: V_y > 0 at a small T followed by sinking is a transient, not rising.

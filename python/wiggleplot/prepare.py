@@ -301,7 +301,7 @@ def t_rising(periods, vy):
         return math.nan, math.nan, float(T[0]), f"rises already at the smallest T = {T[0]:g}"
     i = int(not_rising[-1])
     if i == len(T) - 1:
-        return math.nan, float(T[-1]), math.nan, "never rises"
+        return math.nan, float(T[-1]), math.nan, f"V_y <= 0 at the largest T = {T[-1]:g}"
     t_star = T[i] + (0.0 - v[i]) * (T[i + 1] - T[i]) / (v[i + 1] - v[i])
     early = [f"{t:g}" for t in T[:i][v[:i] > 0]]
     note = f"V_y > 0 also at T = {', '.join(early)}" if early else ""

@@ -378,6 +378,11 @@ TABLES = [
      "rows": [("square", 5.0), ("square", 8.0), ("rect_wide", 5.0), ("rect_wide", 8.0), ("disk", 3.0)],
      "all": True, "row_head": ["case, A = 3", "T"], "row_label": lambda r: (r[0], f"{r[1]:g}"),
      "col_label": lambda s: f"bed {s:g}"},
+    # Table 1 by three clocks, from the same t = 1000 runs: the preset's t = 100 window (t = 10-100),
+    # the paper's window (t = 100-1000, `vy` of a t = 1000 run) and the paper's t_f rule (`vy_settled`)
+    shape_by_period("depth_t1000_window100", ["results/paper_depth/table1_t1000"], {}, True, value=chord(10, 100)),
+    shape_by_period("depth_t1000_window1000", ["results/paper_depth/table1_t1000"], {}, True),
+    shape_by_period("depth_t1000_settled", ["results/paper_depth/table1_t1000"], {}, True, value="vy_settled"),
     # ---- docs/PERFORMANCE.md
     {"name": "perf_bed_protocols", "kind": pivot,
      "sources": ["results/paper_depth/box", "results/paper_depth/seeds", "results/paper_depth/table1",
