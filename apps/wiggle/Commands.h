@@ -15,6 +15,7 @@ void addExportLammpsCommand(CLI::App& app);
 void addStatusCommand(CLI::App& app);
 void addReportCommand(CLI::App& app);
 void addRateCommand(CLI::App& app);
+void addBoundaryCommand(CLI::App& app);
 
 // Runs the plotting package (`/usr/bin/python3 -m wiggleplot ARGS...`, PlotCommand.cpp) and returns
 // its exit status.

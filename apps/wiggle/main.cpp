@@ -77,6 +77,7 @@ int main(int argc, char** argv) {
   wiggle::cli::addStatusCommand(app);
   wiggle::cli::addReportCommand(app);
   wiggle::cli::addRateCommand(app);
+  wiggle::cli::addBoundaryCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -2,6 +2,7 @@
 each figure first, then that every figure file is written and non-empty."""
 import contextlib
 import io
+import json
 import math
 import os
 import shutil
@@ -301,6 +302,36 @@ class FigureFilesTest(DataDirs):
         figures = os.path.join(self.run_dir, "figures")
         self.assert_files(figures, [f"{n}.{e}" for n in ("trajectory", "snapshots", "phase_rates", "fields")
                                     for e in ("png", "pdf")])
+
+    def test_boundary_map_of_two_searches(self):
+        """A boundary.json as `wiggle boundary` writes it (tests/sweep/BoundaryStudyTest checks the
+        writer): the map is drawn, one row per --over value."""
+        from wiggleplot import boundaryplots
+        probe = lambda v, verdict, m, n: {"value": v, "verdict": verdict, "vy": [m] * n, "beds": n, "mean": m,
+                                          "standard_error": 0.001}
+        search = lambda over, lo, hi: {"over": over, "finished": True,
+                                       "probes": [probe(1.0, "sinking", -0.1, 2), probe(lo, "sinking", -0.01, 3),
+                                                  probe(hi, "rising", 0.01, 4), probe(5.0, "rising", 0.1, 2),
+                                                  {"value": 4.0, "verdict": "failed", "vy": [], "beds": 0,
+                                                   "errors": ["the simulation blew up"]}],
+                                       "crossings": [{"below": lo, "above": hi, "from": "sinking", "to": "rising",
+                                                      "neutral": None}],
+                                       "neutral_bands": [], "cost": {"runs": 11, "wall_s": 1.0},
+                                       "grid": {"spacing": 0.25, "points": 17, "beds": 4, "cases": 68}}
+        b = {"key": "drive.period", "over_key": "drive.amplitude", "rate": "paper",
+             "searches": [search(3.0, 3.25, 3.5), search(5.0, 2.25, 2.5)]}
+        d = os.path.join(self.tmp, "boundary")
+        os.makedirs(d, exist_ok=True)
+        with open(os.path.join(d, "boundary.json"), "w") as f:
+            json.dump(b, f)
+        report = quiet_report()
+        boundaryplots.plot_boundary(d, os.path.join(d, "figures"), ["png"], report)
+        self.assert_files(os.path.join(d, "figures"), ["boundary.png"])
+        b["over_key"], b["searches"] = "", b["searches"][:1]   # one search: the map and V_y(T)
+        with open(os.path.join(d, "boundary.json"), "w") as f:
+            json.dump(b, f)
+        boundaryplots.plot_boundary(d, os.path.join(d, "one"), ["png"], report)
+        self.assert_files(os.path.join(d, "one"), ["boundary.png"])
 
     def test_movie_trail_is_the_path_so_far(self):
         traj = {"t": np.array([0.0, 0.5, 1.0, 1.5]), "x": np.array([30.0, 31.0, 30.0, 29.0]),

@@ -11,7 +11,7 @@ import textwrap
 import numpy as np
 from matplotlib.colors import TwoSlopeNorm
 
-from wiggleplot import prepare, readers, style
+from wiggleplot import boundaryplots, prepare, readers, style
 from wiggleplot.prepare import AMPLITUDE, MU, PERIOD
 from wiggleplot.style import plt
 
@@ -493,6 +493,7 @@ SWEEP_FIGURES = (
 
 def plot_sweep(sweep_dir, out_dir, formats, report):
     style.apply()
+    boundaryplots.plot_boundary(sweep_dir, out_dir, formats, report)  # a `wiggle boundary` directory
     sweep = Sweep(sweep_dir, report)
     if not sweep.panels:
         report.note("results.csv has no usable case: nothing to draw")

@@ -116,6 +116,17 @@ std::string configValueString(const RunConfig& config, std::string_view key) {
   return valueText(*k, config, false);
 }
 
+std::string configValueToml(const RunConfig& config, std::string_view key) {
+  const KeyInfo* k = findKey(key);
+  if (!k) throw Error("unknown key '" + std::string(key) + "'" + didYouMean(suggestConfigKey(key)));
+  return valueText(*k, config, true);
+}
+
+bool isRealKey(std::string_view key) {
+  const KeyInfo* k = findKey(key);
+  return k && k->kind == Kind::Number;
+}
+
 void applySetting(RunConfig& config, const std::string& key, const toml::node& value,
                   const std::string& where) {
   const KeyInfo* k = findKey(key);

@@ -67,6 +67,14 @@ std::vector<std::string> configKeys();
 // columns and case names. Throws wiggle::Error for an unknown key.
 std::string configValueString(const RunConfig& config, std::string_view key);
 
+// A key's current value as TOML text ("2.5", "\"disk\"", "[0.0, 5.0]"), as toToml writes it: for
+// files that set a few keys (a sweep's [[case]]). Throws wiggle::Error for an unknown key.
+std::string configValueToml(const RunConfig& config, std::string_view key);
+
+// True for a key whose value is a real number (not a whole number, a word or a list): a value a
+// search may take anywhere in a range.
+bool isRealKey(std::string_view key);
+
 // Exact equality of every key (doubles compared bit for bit via ==; no NaN survives validation).
 bool sameRunConfig(const RunConfig& a, const RunConfig& b);
 // The first key (table order) whose value differs between a and b, leaving out `ignored`; "" when

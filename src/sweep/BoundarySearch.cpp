@@ -2,17 +2,31 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "core/Error.h"
 #include "core/Format.h"
 
 namespace wiggle {
 
+namespace {
+// A finer lattice is a typo: 100,000 values would be a grid no one runs.
+constexpr int maxLatticeIntervals = 100000;
+}  // namespace
+
 void checkBoundaryOptions(const BoundaryOptions& o) {
   if (!std::isfinite(o.lo) || !std::isfinite(o.hi) || !(o.hi > o.lo))
     throw Error("the range must be LO:HI with LO < HI (it is " + formatNumber(o.lo) + ":" + formatNumber(o.hi) + ")");
   if (o.points < 2) throw Error("the coarse scan needs at least 2 points (it is " + std::to_string(o.points) + ")");
-  if (!(o.resolution > 0)) throw Error("the resolution must be positive (it is " + formatNumber(o.resolution) + ")");
+  if (!(o.resolution > 0) || !std::isfinite(o.resolution))
+    throw Error("the resolution must be positive (it is " + formatNumber(o.resolution) + ")");
+  const double intervals = (o.hi - o.lo) / o.resolution;
+  if (intervals > maxLatticeIntervals)
+    throw Error("the resolution " + formatNumber(o.resolution) + " is finer than the range / " +
+                std::to_string(maxLatticeIntervals));
+  if (intervals < (o.points - 1) * (1 - 1e-9))
+    throw Error("the resolution " + formatNumber(o.resolution) + " is coarser than the scan's spacing " +
+                formatNumber((o.hi - o.lo) / (o.points - 1)) + ": fewer points, or a finer resolution");
   if (o.minBeds < 2)
     throw Error("at least 2 beds per probe are needed for a standard error (minimum " + std::to_string(o.minBeds) +
                 ")");
@@ -21,6 +35,16 @@ void checkBoundaryOptions(const BoundaryOptions& o) {
                 ")");
   if (!(o.knownScatter >= 0) || !std::isfinite(o.knownScatter))
     throw Error("the known scatter must be zero or positive (it is " + formatNumber(o.knownScatter) + ")");
+}
+
+std::size_t latticeIntervals(const BoundaryOptions& o) {
+  // A range of 10.0000000001 resolutions is 10 of them, not 11 with a last one of 1e-10.
+  return static_cast<std::size_t>(std::ceil((o.hi - o.lo) / o.resolution - 1e-6));
+}
+
+double latticeValue(const BoundaryOptions& o, std::size_t index) {
+  if (index >= latticeIntervals(o)) return o.hi;
+  return std::stod(formatNumber(o.lo + static_cast<double>(index) * o.resolution, 12));
 }
 
 double studentT975(int dof) {
@@ -44,11 +68,12 @@ const char* verdictName(Verdict verdict) {
 
 BoundarySearch::BoundarySearch(const BoundaryOptions& options) : options_(options) {
   checkBoundaryOptions(options_);
+  const std::size_t n = latticeIntervals(options_);
   for (int k = 0; k < options_.points; ++k) {
     Probe p;
-    p.value =
-        k + 1 == options_.points ? options_.hi : options_.lo + (options_.hi - options_.lo) * k / (options_.points - 1);
-    probes_.push_back(p);
+    p.index = static_cast<std::size_t>(std::llround(static_cast<double>(k) * n / (options_.points - 1)));
+    p.value = latticeValue(options_, p.index);
+    if (probes_.empty() || probes_.back().index != p.index) probes_.push_back(p);
   }
 }
 
@@ -63,12 +88,26 @@ Probe& BoundarySearch::probeAt(double value) {
   throw Error("boundary search: internal error: no probe at " + formatNumber(value, 17));
 }
 
+int BoundarySearch::bedsAsked(const Probe& p) const {
+  // A new probe's first minBeds beds are independent: all are asked for at once; past them, one at
+  // a time, as each decides whether the next is needed.
+  return std::max(static_cast<int>(p.vy.size()) + 1, options_.minBeds);
+}
+
 void BoundarySearch::record(const BoundaryRun& run, double vy) {
   Probe& p = probeAt(run.value);
-  if (p.verdict != Verdict::Undecided || run.seed != static_cast<int>(p.vy.size()) + 1)
+  if (p.failed) return;  // set aside: another bed of it failed in the same round
+  if (p.verdict != Verdict::Undecided || run.seed <= static_cast<int>(p.vy.size()) || run.seed > bedsAsked(p) ||
+      waiting_.count({p.index, run.seed}))
     throw Error("boundary search: internal error: bed " + std::to_string(run.seed) + " at " + formatNumber(run.value) +
                 " was not asked for");
-  p.vy.push_back(vy);
+  waiting_[{p.index, run.seed}] = vy;
+  // Beds join their probe in seed order, so what it decides does not depend on the order they arrive in.
+  for (auto it = waiting_.find({p.index, static_cast<int>(p.vy.size()) + 1}); it != waiting_.end();
+       it = waiting_.find({p.index, static_cast<int>(p.vy.size()) + 1})) {
+    p.vy.push_back(it->second);
+    waiting_.erase(it);
+  }
   decide(p);
   refine();
 }
@@ -104,18 +143,18 @@ void BoundarySearch::refine() {
   // it is, the failures reported).
   // The closure does not depend on the order results arrive in: each verdict is a function of its
   // own probe's results only.
-  const double tolerance = sameValueTolerance();
   for (;;) {
-    std::optional<double> split;
+    std::optional<std::size_t> split;
     const Probe* previous = nullptr;
     for (const Probe& p : probes_) {
       if (p.failed) continue;
       if (previous && previous->verdict != Verdict::Undecided && p.verdict != Verdict::Undecided &&
-          previous->verdict != p.verdict && p.value - previous->value > options_.resolution) {
-        for (const double f : {0.5, 0.25, 0.75}) {  // past a failed midpoint, its quarters
-          const double at = previous->value + f * (p.value - previous->value);
-          if (std::none_of(probes_.begin(), probes_.end(),
-                           [&](const Probe& q) { return std::fabs(q.value - at) <= tolerance; })) {
+          previous->verdict != p.verdict && p.index - previous->index > 1) {
+        const std::size_t a = previous->index, gap = p.index - a;
+        for (const std::size_t at :
+             {a + gap / 2, a + gap / 4, a + (3 * gap) / 4}) {  // past a failed midpoint, its quarters
+          if (at > a && at < p.index &&
+              std::none_of(probes_.begin(), probes_.end(), [&](const Probe& q) { return q.index == at; })) {
             split = at;
             break;
           }
@@ -126,17 +165,20 @@ void BoundarySearch::refine() {
     }
     if (!split) return;
     Probe middle;
-    middle.value = *split;
-    probes_.insert(
-        std::lower_bound(probes_.begin(), probes_.end(), *split, [](const Probe& q, double v) { return q.value < v; }),
-        middle);
+    middle.index = *split;
+    middle.value = latticeValue(options_, *split);
+    probes_.insert(std::lower_bound(probes_.begin(), probes_.end(), *split,
+                                    [](const Probe& q, std::size_t i) { return q.index < i; }),
+                   middle);
   }
 }
 
 std::vector<BoundaryRun> BoundarySearch::next() const {
   std::vector<BoundaryRun> runs;
   for (const Probe& p : probes_)
-    if (!p.failed && p.verdict == Verdict::Undecided) runs.push_back({p.value, static_cast<int>(p.vy.size()) + 1});
+    if (!p.failed && p.verdict == Verdict::Undecided)
+      for (int seed = static_cast<int>(p.vy.size()) + 1; seed <= bedsAsked(p); ++seed)
+        if (!waiting_.count({p.index, seed})) runs.push_back({p.value, seed});
   return runs;
 }
 

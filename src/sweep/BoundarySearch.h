@@ -5,9 +5,14 @@
 // in a resumable sweep directory continues where it stopped with the same decisions.
 //
 // The rule:
-//   1. Probes: a coarse scan of `points` values evenly over [lo, hi], both ends included.
-//   2. At each probe, beds (box.seed 1, 2, ...) are run until its sign is decided: at least
-//      `minBeds` beds and the mean V_y distinguishable from zero at 95 % (two-sided): |mean| >
+//   0. Values: a search probes only the lattice lo, lo + resolution, lo + 2 resolution, ..., hi
+//      (each rounded to 12 significant digits, so 2.7 is 2.7 and not 2.7000000000000002): with
+//      lo and resolution whole numbers of a key's quantum (run.dt for drive.period), every probe
+//      is a valid value, and bisection ends exactly at the resolution.
+//   1. Probes: a coarse scan of `points` lattice values as evenly spread over [lo, hi] as the
+//      lattice allows, both ends included.
+//   2. At each probe, beds (box.seed 1, 2, ...) are run until its sign is decided (the first
+//      `minBeds` at once, then one at a time): at least `minBeds` beds and the mean V_y distinguishable from zero at 95 % (two-sided): |mean| >
 //      t x standard error, with the beds' own scatter (standard error = sample standard deviation /
 //      sqrt(n), t = Student's quantile for n - 1 degrees of freedom: 12.7 at 2 beds, 4.30 at 3,
 //      3.18 at 4, 2.78 at 5; a fixed "2 standard errors" with a scatter estimated from 2 or 3 beds
@@ -16,7 +21,8 @@
 //      After `maxBeds` beds without that, the probe is neutral: V_y indistinguishable from zero
 //      there, a result, not a failure.
 //   3. Once every probe is decided, each pair of neighbouring probes whose verdicts differ (rising,
-//      sinking or neutral) wider than `resolution` gets a probe at its midpoint; repeat.
+//      sinking or neutral) more than one lattice step apart gets a probe at the lattice value
+//      nearest its midpoint; repeat.
 //   4. The verdicts in order of the value: a change from sinking to rising (or back) between two
 //      signed probes is a crossing, bracketed by them; a run of neutral probes is a neutral band,
 //      bracketed by the signed probes on either side (or the range's ends), inside a crossing or not.
@@ -24,8 +30,11 @@
 // crossings closer together than the scan's spacing) is not seen: the scan's spacing is the
 // resolution of what can be found at all, and is reported.
 // A run that fails is recorded as such: its probe is set aside (reported, never decided) and its
-// neighbours are compared across it.
+// neighbours are compared across it (past a failed midpoint, at the quarter points).
+#include <cstddef>
+#include <map>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace wiggle {
@@ -33,10 +42,15 @@ namespace wiggle {
 struct BoundaryOptions {
   double lo = 0.0, hi = 0.0;  // the range of the varied value
   int points = 5;             // the coarse scan, ends included (>= 2)
-  double resolution = 0.0;    // bisect until neighbours with different verdicts are at most this far apart (> 0)
+  double resolution = 0.0;    // the lattice step: bisection ends with neighbours this far apart (> 0)
   int minBeds = 2, maxBeds = 4;
   double knownScatter = 0.0;  // one bed's standard deviation of V_y, when known; 0: from the beds themselves
 };
+
+// The lattice of a search's values (rule 0): latticeIntervals(o) + 1 values, the last one hi (the
+// last interval is shorter when the resolution does not divide the range).
+std::size_t latticeIntervals(const BoundaryOptions& options);
+double latticeValue(const BoundaryOptions& options, std::size_t index);
 
 // Student's t quantile at 0.975 for `dof` degrees of freedom (>= 1; the normal's 1.96 beyond 30).
 double studentT975(int dof);
@@ -48,6 +62,7 @@ enum class Verdict { Undecided, Rising, Sinking, Neutral, Failed };
 const char* verdictName(Verdict verdict);
 
 struct Probe {
+  std::size_t index = 0;  // on the lattice
   double value = 0.0;
   std::vector<double> vy;  // by bed: vy[k] is box.seed k + 1
   bool failed = false;     // a run of this probe failed
@@ -101,12 +116,14 @@ class BoundarySearch {
 
  private:
   double sameValueTolerance() const;  // two values this close are one probe
+  int bedsAsked(const Probe& probe) const;  // next() asks for beds up to this one
   Probe& probeAt(double value);
   void decide(Probe& probe) const;
   void refine();
 
   BoundaryOptions options_;
   std::vector<Probe> probes_;  // sorted by value
+  std::map<std::pair<std::size_t, int>, double> waiting_;  // (probe index, seed): a bed recorded before an earlier one
 };
 
 }  // namespace wiggle

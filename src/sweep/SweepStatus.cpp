@@ -175,7 +175,8 @@ std::string formatSweepStatus(const SweepStatus& s) {
   out << "sweep " << s.dir << ": " << s.cases.size() << " cases: " << ok << " done, " << running << " running, "
       << failed << " failed, " << pending << " pending; "
       << (s.sweepRunning ? "a wiggle sweep is running in it"
-                         : "no wiggle sweep is running in it (run the same `wiggle sweep` command to continue)")
+                         : "no wiggle sweep is running in it (run the same `wiggle sweep` or `wiggle boundary` command "
+                           "to continue)")
       << "\n";
   for (const CaseStatus& c : s.cases) {
     if (c.status == "running")

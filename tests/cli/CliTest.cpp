@@ -120,7 +120,7 @@ TEST_F(Cli, HelpAndVersionExitZero) {
   // The release and the git revision the binary was built from (unknown outside a checkout).
   EXPECT_EQ(r.out.rfind(std::string("wiggle ") + WIGGLE_VERSION + " (git ", 0), 0u) << r.out;
   EXPECT_EQ(r.out.substr(r.out.size() - 2), ")\n") << r.out;
-  for (const char* sub : {"run", "sweep", "model", "plot", "export-lammps", "status", "report"}) {
+  for (const char* sub : {"run", "sweep", "boundary", "model", "plot", "export-lammps", "status", "report", "rate"}) {
     r = wiggle(std::string(sub) + " --help");
     EXPECT_EQ(r.status, 0) << sub << ": " << r.err;
     EXPECT_NE(r.out.find(std::string("wiggle ") + sub), std::string::npos) << r.out;
@@ -156,6 +156,42 @@ TEST_F(Cli, ParseErrorsAreOneLineNamingTheArgumentWithStatus2) {
     expectOneLineError(r, c.words, std::string("wiggle ") + c.args);
     EXPECT_EQ(r.out, "") << c.args;
   }
+  EXPECT_TRUE(workIsEmpty());
+}
+
+TEST_F(Cli, BoundaryRefusesBadInputInOneLineBeforeAnythingIsWritten) {
+  struct Case {
+    const char* args;
+    std::vector<std::string> words;
+  };
+  const std::vector<Case> cases = {
+      {"boundary --resolution 0.1 --out o", {"--range LO:HI is required"}},
+      {"boundary --range 1-5 --resolution 0.1 --out o", {"--range 1-5", "LO:HI"}},
+      {"boundary --range 1:x --resolution 0.1 --out o", {"--range", "'x' is not a number"}},
+      {"boundary --range 1:5 --out o", {"--resolution", "required"}},
+      {"boundary --range 5:1 --resolution 0.1 --out o", {"range", "LO < HI"}},
+      {"boundary --range 1:5 --resolution 0.1", {"--out DIR is required"}},
+      {"boundary --range 1:5 --resolution 0.1 --vary box.seed --out o", {"--vary box.seed", "not a real-valued key"}},
+      {"boundary --range 1:5 --resolution 0.1 --vary drive.perod --out o",
+       {"--vary drive.perod", "no such config key"}},
+      {"boundary --range 1:5 --resolution 0.00015 --out o", {"drive.period = 1.00015", "whole number of run.dt"}},
+      {"boundary --range 1:5 --resolution 0.1 --over drive.amplitude --out o", {"--over", "KEY=V1,V2"}},
+      {"boundary --range 1:5 --resolution 0.1 --over drive.amplitude=1,1 --out o", {"given twice"}},
+      {"boundary --range 1:5 --resolution 0.1 --rate fast --out o", {"--rate fast", "paper or settled"}},
+      {"boundary --range 1:5 --resolution 0.1 --beds 1:3 --out o", {"2 beds"}},
+      {"boundary --range 1:5 --resolution 0.1 --points 1 --out o", {"--points"}},
+  };
+  for (const Case& c : cases) {
+    const Result r = wiggle(c.args);
+    expectOneLineError(r, c.words, std::string("wiggle ") + c.args);
+    EXPECT_EQ(r.out, "") << c.args;
+  }
+  EXPECT_TRUE(workIsEmpty());
+  // --dry-run lists the first round (5 values x 2 beds) and writes nothing.
+  const Result r = wiggle("boundary --range 1:5 --resolution 0.25 --dry-run");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("first round: 10 runs"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("drive.period = 3, box.seed = 2"), std::string::npos) << r.out;
   EXPECT_TRUE(workIsEmpty());
 }
 

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -20,6 +21,7 @@
 
 #include "io/AtomicFile.h"
 #include "io/SweepSpec.h"
+#include "sweep/BoundaryStudy.h"
 #include "sweep/ResultsTable.h"
 #include "sweep/SweepPlan.h"
 #include "sweep/SweepRunner.h"
@@ -466,6 +468,51 @@ TEST_F(SweepRunnerTest, ArrayTaskEndsWhenItsCaseIsDoneThoughOtherCasesBedsAreNot
   EXPECT_EQ(results["seed=1"]["status"], "ok");
   EXPECT_EQ(results["seed=2"]["status"], "pending");
   EXPECT_FALSE(fs::exists(out + "/cases/seed=2"));
+}
+
+// `wiggle boundary` on real runs (its decisions on a stand-in: BoundaryStudyTest): every run is a
+// case of the sweep in its directory, and running it again finds them all finished and reaches the
+// same probes and verdicts without starting a process.
+TEST_F(SweepRunnerTest, BoundaryRunsAsASweepAndResumesWithTheSameDecisions) {
+  const std::string out = *root_ + "/boundary";
+  BoundarySpec spec;
+  spec.base = loadSweepSpec(sweepFile("boundary_base", "")).cases[0].config;
+  spec.options.lo = 1.0;
+  spec.options.hi = 2.0;
+  spec.options.points = 2;
+  spec.options.resolution = 0.5;
+  spec.options.minBeds = spec.options.maxBeds = 2;
+  int started = 0;
+  SweepOptions options = quietOptions(out);
+  options.onTaskStarted = [&](const SweepTask& t, pid_t) { started += t.kind == SweepTask::Kind::Case; };
+  SweepBoundaryRunner runner(options);
+  const BoundaryResult first = runBoundary(spec, runner, out);
+  ASSERT_GE(first.outcomes.size(), 4u);
+  EXPECT_EQ(static_cast<std::size_t>(started), first.outcomes.size());
+  const SweepSpec sweep = loadSweepSpec(out + "/boundary.toml");
+  ASSERT_EQ(sweep.cases.size(), first.cases.size());
+  const auto rows = readResults(out);
+  for (std::size_t i = 0; i < first.cases.size(); ++i) {
+    const auto& row = rows.at(sweep.cases[i].name);
+    EXPECT_EQ(row.at("status"), "ok") << sweep.cases[i].name << ": " << row.at("error");
+    EXPECT_TRUE(first.outcomes[i].ok);
+    EXPECT_NEAR(std::stod(row.at("vy")), first.outcomes[i].vy, 1e-9 * (1 + std::fabs(first.outcomes[i].vy)));
+    EXPECT_EQ(row.at("box.seed"), std::to_string(first.cases[i].run.seed));
+  }
+  EXPECT_TRUE(fs::exists(out + "/boundary.json"));
+  EXPECT_TRUE(fs::exists(out + "/boundary.csv"));
+
+  started = 0;
+  SweepBoundaryRunner again(options);
+  const BoundaryResult second = runBoundary(spec, again, out);
+  EXPECT_EQ(started, 0);
+  ASSERT_EQ(second.searches[0].probes().size(), first.searches[0].probes().size());
+  for (std::size_t k = 0; k < first.searches[0].probes().size(); ++k) {
+    const Probe &a = first.searches[0].probes()[k], &b = second.searches[0].probes()[k];
+    EXPECT_EQ(a.value, b.value);
+    EXPECT_EQ(a.vy, b.vy);
+    EXPECT_EQ(a.verdict, b.verdict);
+  }
 }
 
 }  // namespace

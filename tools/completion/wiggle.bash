@@ -3,7 +3,7 @@
 _wiggle() {
   local cur prev words cword
   _init_completion || return
-  local commands="run sweep model plot export-lammps status report"
+  local commands="run sweep boundary model plot export-lammps status report rate"
   if [[ $cword -eq 1 ]]; then
     COMPREPLY=($(compgen -W "$commands --help --version" -- "$cur"))
     return
@@ -29,6 +29,8 @@ _wiggle() {
     model) options="--shape --vertices --angle --format --periods --amplitude --geometry --clump --help" ;;
     plot) options="--format --movie --times --out --geometry --help" ;;
     export-lammps) options="--set --out --threads --help" ;;
+    boundary) options="--set --vary --range --points --resolution --beds --scatter --over --rate --out --jobs --threads --dry-run --help" ;;
+    rate) options="--from --to --band --write --help" ;;
     status) options="--help" ;;
     report) options="--out --help" ;;
   esac
