@@ -9,6 +9,7 @@ cd "$(dirname "$0")/.."
 packages=(build-essential cmake libgtest-dev libgmock-dev libbenchmark-dev libtomlplusplus-dev libcli11-dev
           nlohmann-json3-dev libomp-dev libopenmpi-dev openmpi-bin python3 python3-matplotlib python3-numpy
           python3-pandas jupyter-nbconvert python3-ipykernel python3-nbformat   # the analysis API and its notebook
+          python3-dev python3-pybind11  # the engine as a Python module (import wiggle)
           clang-14 libclang-rt-14-dev   # clang: the fuzz and tsan presets (docs/RELIABILITY.md)
           ffmpeg                        # wiggle plot --movie
           chromium)                     # wiggle report's test opens the page in a headless browser

@@ -159,7 +159,7 @@ World startFromBed(const Case& run, RunState& state, LogFile& log, ProgressLine&
   const auto bedStart = Clock::now();
   std::optional<CachedBed> obtained;
   try {
-    obtained.emplace(obtainBed(config, run.clump, [&](const BedStatus& s) {
+    obtained.emplace(startRun(run, [&](const BedStatus& s) {
       progress.update(bedStatusLine(s, config.box.bedHeight) + ", " + formatDuration(secondsSince(bedStart)) +
                       " elapsed");
     }));
@@ -180,10 +180,7 @@ World startFromBed(const Case& run, RunState& state, LogFile& log, ProgressLine&
   log.line(std::string(bed.fromCache ? "bed loaded from " : "bed made and cached at ") + bed.path + " (" +
            std::to_string(bed.world.grainCount()) + " grains, surface " + formatNumber(freeSurfaceHeight(bed.world)) +
            ", " + formatNumber(state.bedWallSeconds) + " s)");
-  World world = std::move(bed.world);
-  if (!config.run.keepBedHistory) world.clearContactHistory();
-  startDrive(world, run);
-  return world;
+  return std::move(bed.world);
 }
 
 // What the step loop feeds: after every step, the phase bins (after t_i) and the trajectory
@@ -434,6 +431,13 @@ std::string RunOutcome::resultLine() const {
     line += text;
   }
   return line + "; summary in " + summaryPath;
+}
+
+CachedBed startRun(const Case& run, const BedProgress& progress) {
+  CachedBed bed = obtainBed(run.config, run.clump, progress);
+  if (!run.config.run.keepBedHistory) bed.world.clearContactHistory();
+  startDrive(bed.world, run);
+  return bed;
 }
 
 RunOutcome runExperiment(const Case& run, const RunOptions& options) {

@@ -10,6 +10,7 @@
 #include "io/RunConfig.h"
 #include "physics/Intruder.h"
 #include "physics/World.h"
+#include "scenario/BedMaker.h"
 #include "scenario/Case.h"
 
 namespace wiggle {
@@ -43,6 +44,11 @@ struct RunOutcome {
 // one per line; summary.json's warnings begin with them and `wiggle status` shows them.
 std::string runWarningsPath(const std::string& runDir);
 std::vector<std::string> readRunWarnings(const std::string& runDir);
+
+// A run's start: its bed (obtainBed: cached or made now), the bed's contact history kept or cleared
+// (run.bed_history), the drive started (startDrive, t = 0). `wiggle run` and the Python module both
+// step from here, after World::evaluateForces. Throws wiggle::Error as obtainBed does.
+CachedBed startRun(const Case& run, const BedProgress& progress = {});
 
 // Runs the case into options.outDir (or continues it there with options.resume).
 RunOutcome runExperiment(const Case& run, const RunOptions& options);

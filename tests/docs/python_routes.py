@@ -11,7 +11,9 @@ source tree (its tracked files, no build, nothing set in the environment but PAT
    first with nothing built (it must raise the package's own WiggleError saying what to do, not a
    raw FileNotFoundError), then with the copy built (build/release linked to BUILD_DIR): it must
    find the build tree's wiggle and return the run.
-3. The notebook as `cmake --install` puts it (share/wiggle/examples), run where it was installed.
+3. docs/PYTHON.md's `import wiggle` line, at the root of the built copy (when the module is built).
+4. The notebook as `cmake --install` puts it (share/wiggle/examples), run where it was installed,
+   and `import wiggle` from where the install puts the module (PYTHONPATH=PREFIX/share/wiggle/python).
 Every command is taken from the documents' text (a test of the text, not of a variant of it).
 Exits 1 with a line per failure. The bed of route 2 goes to $WIGGLE_CACHE when set.
 """
@@ -108,7 +110,18 @@ def main():
                 check(re.search(r"^vy [-+0-9.e]+$", built.stdout, re.M) is not None, f"wp.run printed {built.stdout!r}")
                 check(os.path.exists(os.path.join(tree, "t5", "summary.json")), "wp.run wrote no t5/summary.json")
 
-        # 3. The installed notebook, run where it was installed.
+        # 3. docs/PYTHON.md's `import wiggle` line in the built copy (when the module was built).
+        if os.path.isdir(os.path.join(build, "python")):
+            with open(os.path.join(tree, "docs", "PYTHON.md"), encoding="utf-8") as f:
+                engine_line = next((l.strip() for l in f if l.startswith("PYTHONPATH=build/release/python ")), None)
+            if check(engine_line is not None, "docs/PYTHON.md has no `PYTHONPATH=build/release/python ...` line"):
+                cache = {"WIGGLE_CACHE": os.environ["WIGGLE_CACHE"]} if os.environ.get("WIGGLE_CACHE") else {}
+                done = shell(engine_line, tree, home, cache)
+                if check(done.returncode == 0, f"docs/PYTHON.md's line: exit {done.returncode}: {done.stderr[-1500:]}"):
+                    check(re.search(r"^1\.0 [-+0-9.e]+ [0-9a-f]{16}$", done.stdout, re.M) is not None,
+                          f"docs/PYTHON.md's line printed {done.stdout!r}")
+
+        # 4. The installed notebook, run where it was installed; `import wiggle` from the installed tree.
         prefix = os.path.join(work, "prefix")
         installed = subprocess.run(["cmake", "--install", build, "--prefix", prefix], capture_output=True, text=True)
         if check(installed.returncode == 0, f"cmake --install: {installed.stderr[-500:]}"):
@@ -116,10 +129,16 @@ def main():
             done = shell("jupyter nbconvert --to notebook --execute figures.ipynb", examples, home)
             if check(done.returncode == 0, f"installed notebook: exit {done.returncode}: {done.stderr[-1500:]}"):
                 executed_notebook_ok(os.path.join(examples, "figures.nbconvert.ipynb"), "installed notebook")
+            if os.path.isdir(os.path.join(build, "python")):
+                package = os.path.join(prefix, "share", "wiggle", "python")
+                done = shell("/usr/bin/python3 -c 'import wiggle; print(wiggle.__version__)'", work, home,
+                             {"PYTHONPATH": package})
+                check(done.returncode == 0, f"import wiggle from {package}: exit {done.returncode}: {done.stderr[-500:]}")
     finally:
         shutil.rmtree(work, ignore_errors=True)
     if not failures:
-        print("python_routes: ok: the notebook at the root of a fresh copy and installed, wp.run unbuilt and built")
+        print("python_routes: ok: the notebook at the root of a fresh copy and installed, wp.run unbuilt and built, "
+              "import wiggle built and installed")
     return 1 if failures else 0
 
 
