@@ -37,7 +37,8 @@ void printCheck(const RunConfig& c, const std::string& out, bool resume) {
   const ClumpDef clump = prepareCase(c).clump;
   const std::string key = bedKey(c, clump);
   const std::string bedPath = bedCachePath(c, key);
-  const double ns = CostModel::nsPerParticleStep;
+  const SpeedBasis speed = speedBasis(c);
+  const double ns = speed.ns;
   const auto steps = static_cast<std::uint64_t>(std::llround(c.run.duration / c.run.dt));
   std::printf("config ok: %s intruder at y0 = %g (%g d below the surface), A = %g, T = %g, mu = %g\n",
               c.intruder.shape.c_str(), c.intruder.y0, c.box.bedHeight - c.intruder.y0, c.drive.amplitude,
@@ -57,10 +58,9 @@ void printCheck(const RunConfig& c, const std::string& out, bool resume) {
   } else
     std::printf("bed %s: not cached, making it takes about %s on one core (estimate)\n", key.c_str(),
                 formatDuration(estimatedBedSeconds(c, ns)).c_str());
-  std::printf("run: %llu steps (t = %g at dt = %g), about %s on one core at %g ns per particle-step "
-              "(estimate: docs/PERFORMANCE.md has this machine's figures)\n",
+  std::printf("run: %llu steps (t = %g at dt = %g), about %s on one core at %.3g ns per particle-step (%s)\n",
               static_cast<unsigned long long>(steps), c.run.duration, c.run.dt,
-              formatDuration(estimatedRunSeconds(c, ns)).c_str(), ns);
+              formatDuration(estimatedRunSeconds(c, ns)).c_str(), ns, speed.source.c_str());
   const bool finished = std::filesystem::exists(out + "/summary.json");
   const bool started = std::filesystem::exists(checkpointPath(out));
   std::printf("out: %s (%s)\n", out.c_str(),

@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "analysis/FieldObserver.h"
+#include "analysis/LammpsDump.h"
 #include "analysis/RiseRate.h"
 #include "core/Console.h"
 #include "core/Error.h"
@@ -21,11 +22,11 @@
 #include "core/Version.h"
 #include "io/AtomicFile.h"
 #include "io/Config.h"
-#include "analysis/LammpsDump.h"
 #include "model/CavityModel.h"
 #include "scenario/BedMaker.h"
 #include "scenario/Checkpoint.h"
 #include "scenario/RunSummary.h"
+#include "scenario/SpeedRecord.h"
 
 namespace wiggle {
 
@@ -402,6 +403,9 @@ RunOutcome writeRunOutputs(const Case& run, const std::string& dir, const World&
   const double averagedFrom = static_cast<double>(world.stepCount() - accumulated) * config.run.dt;
   const RunSummary summary = summarise(run, dir, world, state, fields, rate, settled, rule, averagedFrom);
   writeFileAtomically(dir + "/summary.json", toJson(summary).dump(2) + "\n");
+  // For the cost estimates (scenario/SpeedRecord.h); runs under 10^4 steps say more about start-up
+  // than about the step.
+  if (summary.steps >= 10000) recordRunSpeed(config, static_cast<int>(summary.threads), summary.nsPerParticleStep);
   log.line("done: vy = " + formatNumber(rate.vy) + ", slope = " + formatNumber(rate.slope) +
            ", vy_settled = " + formatNumber(settled.vy) + " (t_settled = " + formatNumber(settled.tSettled) + "), " +
            formatNumber(summary.nsPerParticleStep) + " ns/particle-step, state " + world.stateHash());

@@ -333,13 +333,14 @@ std::string boundaryPlanListing(const BoundarySpec& spec) {
   std::ostringstream out;
   out << "first round: " << first.size() << " runs\n";
   double run = 0.0, bed = 0.0;
+  const SpeedBasis speed = speedBasis(spec.base);
   std::map<std::string, bool> beds;
   for (const BoundaryCase& c : first) {
     const RunConfig config = boundaryCaseConfig(spec, c);
-    run += estimatedRunSeconds(config, CostModel::nsPerParticleStep);
+    run += estimatedRunSeconds(config, speed.ns);
     // A bed per seed and --over value at most (fewer when the --over key does not change the bed).
     const std::string bedId = std::to_string(c.search) + "/" + std::to_string(config.box.seed);
-    if (!beds[bedId]) bed += estimatedBedSeconds(config, CostModel::nsPerParticleStep);
+    if (!beds[bedId]) bed += estimatedBedSeconds(config, speed.ns);
     beds[bedId] = true;
     out << "  " << (spec.overKey.empty() ? "" : spec.overKey + " = " + formatNumber(spec.overValues[c.search]) + ", ")
         << spec.key << " = " << formatNumber(c.run.value) << ", box.seed = " << config.box.seed << '\n';
@@ -348,8 +349,8 @@ std::string boundaryPlanListing(const BoundarySpec& spec) {
   const double steps = static_cast<double>(latticeIntervals(o)) / (o.points - 1);
   const int bisections = static_cast<int>(std::ceil(std::log2(std::max(1.0, steps))));
   out << "estimated cost of the first round: " << formatDuration(run) << " of runs and up to " << formatDuration(bed)
-      << " of beds (less for beds already cached), on one core at " << CostModel::nsPerParticleStep
-      << " ns per particle-step\n"
+      << " of beds (less for beds already cached), on one core at " << formatNumber(speed.ns, 3)
+      << " ns per particle-step: " << speed.source << "\n"
       << "then: more beds (up to " << o.maxBeds << ") where the sign is not decided, and about " << bisections
       << " bisections of each change of verdict, " << o.minBeds << "-" << o.maxBeds << " beds each\n";
   return out.str();

@@ -401,7 +401,7 @@ class Coordinator {
       wall += r.runWallSeconds;
       work += r.particleSteps;
     }
-    return work > 0.0 ? 1e9 * wall / work : CostModel::nsPerParticleStep;
+    return work > 0.0 ? 1e9 * wall / work : plan_.speed.ns;
   }
 
   std::string statusLine() const {
@@ -422,7 +422,7 @@ class Coordinator {
     }
     for (std::size_t b = 0; b < plan_.beds.size(); ++b) {
       if (bedState_[b] == BedState::Waiting || bedState_[b] == BedState::Running) {
-        remaining += plan_.beds[b].estimatedSeconds * ns / CostModel::nsPerParticleStep;  // planned at that speed
+        remaining += plan_.beds[b].estimatedSeconds * ns / plan_.speed.ns;  // planned at that speed
       }
     }
     std::string line = "[sweep] " + std::to_string(countStatus("ok")) + " done, " + std::to_string(running) +
@@ -430,7 +430,7 @@ class Coordinator {
     if (!plan_.beds.empty())
       line += ", beds " + std::to_string(bedsMade_) + "/" + std::to_string(plan_.beds.size());
     line += "  ETA " + formatDuration(remaining / concurrency_) + " (" + formatNumber(ns, 3) + " ns/particle-step" +
-            (ns == CostModel::nsPerParticleStep ? ", assumed)" : ")");
+            (countStatus("ok") == 0 ? ", estimated)" : ")");
     return line;
   }
 

@@ -18,6 +18,7 @@
 #include "scenario/Checkpoint.h"
 #include "scenario/Experiment.h"
 #include "scenario/Shape.h"
+#include "scenario/SpeedRecord.h"
 #include "sweep/ResultsTable.h"
 
 namespace wiggle {
@@ -29,6 +30,18 @@ namespace {
 // Grains plus the frozen base row (one per unit of width); the intruder's atoms are negligible.
 double estimatedParticles(const RunConfig& config) { return estimatedGrains(config) + config.box.width; }
 }  // namespace
+
+SpeedBasis speedBasis(const RunConfig& config) {
+  SpeedBasis basis;
+  if (const std::optional<MeasuredSpeed> m = measuredSpeed(config)) {
+    basis.ns = m->nsPerParticleStep;
+    basis.source = "the median of this machine's last " + std::to_string(m->runs) + " one-thread run" +
+                   (m->runs == 1 ? "" : "s") + " (" + m->path + ")";
+  } else {
+    basis.source = "no run recorded on this machine yet, so the reference machine's figure, docs/SWEEPS.md";
+  }
+  return basis;
+}
 
 double estimatedRunSeconds(const RunConfig& config, double nsPerParticleStep) {
   const double steps = std::round(config.run.duration / config.run.dt);
@@ -52,6 +65,7 @@ SweepPlan makeSweepPlan(SweepSpec spec, const std::string& outDir) {
   SweepPlan plan;
   plan.spec = std::move(spec);
   plan.outDir = outDir;
+  if (!plan.spec.cases.empty()) plan.speed = speedBasis(plan.spec.cases.front().config);  // its cache's speed log
   std::map<std::string, int> bedIndex;      // key -> index in plan.beds (beds to make)
   std::map<std::string, bool> keySeen;
   std::set<std::string> basesToPour;        // base beds of carved beds, counted in the estimate once
@@ -107,7 +121,7 @@ SweepPlan makeSweepPlan(SweepSpec spec, const std::string& outDir) {
           const std::string base = baseBedKey(c.config);
           const bool baseToPour = c.config.bed.cavity == "carved" && !fs::exists(bedCachePath(c.config, base)) &&
                                   basesToPour.insert(base).second;
-          bed.estimatedSeconds = estimatedBedSeconds(c.config, CostModel::nsPerParticleStep, baseToPour);
+          bed.estimatedSeconds = estimatedBedSeconds(c.config, plan.speed.ns, baseToPour);
           plan.beds.push_back(bed);
         }
         p.bedTask = it->second;
@@ -120,7 +134,7 @@ SweepPlan makeSweepPlan(SweepSpec spec, const std::string& outDir) {
 }
 
 std::string dryRunListing(const SweepPlan& plan, int jobs, int threads) {
-  const double ns = CostModel::nsPerParticleStep;
+  const double ns = plan.speed.ns;
   std::ostringstream out;
   out << "sweep " << plan.spec.settings.name << " -> " << plan.outDir << "\n";
   out << "  #  case                                       state     grains      steps   est. run\n";
@@ -156,9 +170,9 @@ std::string dryRunListing(const SweepPlan& plan, int jobs, int threads) {
   const double total = (bedPhase + runSeconds / std::max(1, jobs)) / std::max(1, threads);
   out << plan.cases.size() << " cases: " << toRun << " to run, " << done << " done, " << failed << " failed; "
       << plan.beds.size() << " of " << plan.distinctBeds << " distinct beds to make\n";
-  out << "estimated cost: " << formatDuration(total) << " wall on " << jobs << " jobs x " << threads << " threads (runs "
-      << formatDuration(runSeconds) << " + beds " << formatDuration(bedSeconds) << " of single-core time at " << formatNumber(ns, 3)
-      << " ns per particle-step, CostModel in src/sweep/SweepPlan.h"
+  out << "estimated cost: " << formatDuration(total) << " wall on " << jobs << " jobs x " << threads
+      << " threads (runs " << formatDuration(runSeconds) << " + beds " << formatDuration(bedSeconds)
+      << " of single-core time at " << formatNumber(ns, 3) << " ns per particle-step: " << plan.speed.source
       << (threads > 1 ? "; assumes threads scale perfectly" : "") << ")\n";
   return out.str();
 }

@@ -38,6 +38,15 @@ struct CostModel {
   static constexpr double dampedRelaxTime = 6.0;
 };
 
+// The ns per particle-step the estimates use, and where it comes from: the median of this machine's
+// last one-thread runs (scenario/SpeedRecord.h) when it has recorded any on this CPU, else
+// CostModel::nsPerParticleStep (the reference machine's figure).
+struct SpeedBasis {
+  double ns = CostModel::nsPerParticleStep;
+  std::string source;  // for people: "the median of this machine's last 9 one-thread runs (PATH)"
+};
+SpeedBasis speedBasis(const RunConfig& config);
+
 // Estimated wall seconds of a case's run phase (bed excluded) at `nsPerParticleStep`.
 double estimatedRunSeconds(const RunConfig& config, double nsPerParticleStep);
 // Estimated wall seconds of making the case's bed at `nsPerParticleStep`; for a carved bed, the
@@ -69,7 +78,7 @@ struct PlannedBed {
   std::string configPath;     // <outDir>/beds/bed-<key>.toml: the config the bed task reads
   std::size_t firstCase = 0;  // the case whose config makes the bed
   std::string cachePath;      // where obtainBed keeps it
-  double estimatedSeconds = 0.0;  // at CostModel::nsPerParticleStep
+  double estimatedSeconds = 0.0;  // at SweepPlan::speed
 };
 
 struct SweepPlan {
@@ -78,6 +87,7 @@ struct SweepPlan {
   std::vector<PlannedCase> cases;   // same order as spec.cases
   std::vector<PlannedBed> beds;     // beds to make (not cached yet, needed by a pending case)
   std::size_t distinctBeds = 0;     // bed keys among all cases (cached or not)
+  SpeedBasis speed;                 // what the estimates (beds, dry run, ETA before a case ends) use
 };
 
 // Expands the plan: for each case its directory and state (reads summary.json and config.toml of

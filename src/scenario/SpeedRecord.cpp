@@ -1,0 +1,81 @@
+#include "scenario/SpeedRecord.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "core/Format.h"
+#include "core/Machine.h"
+#include "scenario/BedMaker.h"
+
+namespace wiggle {
+
+namespace {
+
+constexpr std::size_t lastRuns = 9;
+
+std::string speedLogPath(const RunConfig& config) { return bedCacheDir(config) + "/speed.log"; }
+
+}  // namespace
+
+std::string cpuModel() {
+  std::ifstream in("/proc/cpuinfo");
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("model name", 0) != 0) continue;
+    const auto colon = line.find(':');
+    if (colon == std::string::npos) break;
+    std::string name = line.substr(colon + 1);
+    name.erase(0, name.find_first_not_of(' '));
+    std::replace(name.begin(), name.end(), '\t', ' ');
+    return name;
+  }
+  return "";
+}
+
+void recordRunSpeed(const RunConfig& config, int threads, double nsPerParticleStep) {
+  if (!(nsPerParticleStep > 0)) return;
+  const std::string line = cpuModel() + "\t" + std::to_string(threads) + "\t" + formatNumber(nsPerParticleStep, 6) +
+                           "\t" + formatNumber(loadAverage(), 3) + "\n";
+  std::error_code ec;
+  std::filesystem::create_directories(bedCacheDir(config), ec);
+  // O_APPEND and one write(): concurrent runs' lines do not interleave.
+  const int fd = ::open(speedLogPath(config).c_str(), O_WRONLY | O_APPEND | O_CREAT | O_CLOEXEC, 0644);
+  if (fd < 0) return;
+  [[maybe_unused]] const ssize_t written = ::write(fd, line.data(), line.size());
+  ::close(fd);
+}
+
+std::optional<MeasuredSpeed> measuredSpeed(const RunConfig& config) {
+  std::ifstream in(speedLogPath(config));
+  if (!in) return std::nullopt;
+  const std::string cpu = cpuModel();
+  std::vector<double> speeds;
+  for (std::string line; std::getline(in, line);) {
+    std::istringstream fields(line);
+    std::string model, threads, ns;
+    if (!std::getline(fields, model, '\t') || !std::getline(fields, threads, '\t') || !std::getline(fields, ns, '\t'))
+      continue;  // a line cut short (a full disk) or foreign: skipped
+    if (model != cpu || threads != "1") continue;
+    try {
+      const double v = std::stod(ns);
+      if (v > 0 && v < 1e6) speeds.push_back(v);
+    } catch (const std::exception&) {
+    }
+  }
+  if (speeds.empty()) return std::nullopt;
+  if (speeds.size() > lastRuns) speeds.erase(speeds.begin(), speeds.end() - lastRuns);
+  std::sort(speeds.begin(), speeds.end());
+  const std::size_t n = speeds.size();
+  MeasuredSpeed m;
+  m.nsPerParticleStep = n % 2 ? speeds[n / 2] : 0.5 * (speeds[n / 2 - 1] + speeds[n / 2]);
+  m.runs = n;
+  m.path = speedLogPath(config);
+  return m;
+}
+
+}  // namespace wiggle

@@ -1,0 +1,66 @@
+// The speed log behind the cost estimates (scenario/SpeedRecord.h): what counts, the median of the
+// last runs, and a record written by one run read back by the next estimate.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "io/AtomicFile.h"
+#include "io/Config.h"
+#include "scenario/SpeedRecord.h"
+#include "sweep/SweepPlan.h"
+
+namespace wiggle {
+namespace {
+
+namespace fs = std::filesystem;
+
+class SpeedRecordTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path().string() + "/wiggle-speed-test-" + std::to_string(::getpid());
+    fs::remove_all(dir_);
+    config_ = loadRunConfig(std::nullopt, {"bed.cache_dir=\"" + dir_ + "\""});
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string dir_;
+  RunConfig config_;
+};
+
+TEST_F(SpeedRecordTest, NoLogMeansTheReferenceFigure) {
+  EXPECT_FALSE(measuredSpeed(config_));
+  const SpeedBasis basis = speedBasis(config_);
+  EXPECT_EQ(basis.ns, CostModel::nsPerParticleStep);
+  EXPECT_NE(basis.source.find("no run recorded"), std::string::npos) << basis.source;
+}
+
+TEST_F(SpeedRecordTest, TheMedianOfTheLastNineOneThreadRunsOnThisCpu) {
+  fs::create_directories(dir_);
+  std::ofstream log(dir_ + "/speed.log");
+  const std::string cpu = cpuModel();
+  for (int k = 1; k <= 12; ++k) log << cpu << "\t1\t" << 10 * k << "\t0.5\n";  // 10 ... 120: the last 9 are 40 ... 120
+  log << "Another CPU\t1\t1\t0\n" << cpu << "\t2\t1\t0\n" << cpu << "\t1\tnot-a-number\t0\n" << cpu << "\t1";
+  log.close();
+  const auto m = measuredSpeed(config_);
+  ASSERT_TRUE(m);
+  EXPECT_EQ(m->runs, 9u);
+  EXPECT_DOUBLE_EQ(m->nsPerParticleStep, 80.0);
+  EXPECT_EQ(speedBasis(config_).ns, 80.0);
+  EXPECT_NE(speedBasis(config_).source.find("last 9 one-thread runs"), std::string::npos);
+}
+
+TEST_F(SpeedRecordTest, ARecordedRunIsReadBack) {
+  recordRunSpeed(config_, 1, 23.5);
+  recordRunSpeed(config_, 2, 15.0);  // two threads: not a one-thread figure
+  recordRunSpeed(config_, 1, 24.5);
+  const auto m = measuredSpeed(config_);
+  ASSERT_TRUE(m);
+  EXPECT_EQ(m->runs, 2u);
+  EXPECT_DOUBLE_EQ(m->nsPerParticleStep, 24.0);
+  EXPECT_EQ(m->path, dir_ + "/speed.log");
+}
+
+}  // namespace
+}  // namespace wiggle
