@@ -120,11 +120,35 @@ TEST_F(Cli, HelpAndVersionExitZero) {
   // The release and the git revision the binary was built from (unknown outside a checkout).
   EXPECT_EQ(r.out.rfind(std::string("wiggle ") + WIGGLE_VERSION + " (git ", 0), 0u) << r.out;
   EXPECT_EQ(r.out.substr(r.out.size() - 2), ")\n") << r.out;
-  for (const char* sub : {"run", "sweep", "boundary", "model", "plot", "export-lammps", "status", "report", "rate"}) {
-    r = wiggle(std::string(sub) + " --help");
+  // Every subcommand has a help of its own and is offered by the bash completion.
+  std::ifstream completionFile(std::string(WIGGLE_SOURCE_DIR) + "/tools/completion/wiggle.bash");
+  std::stringstream completion;
+  completion << completionFile.rdbuf();
+  const std::string text = completion.str();
+  const auto listStart = text.find("local commands=\"");
+  ASSERT_NE(listStart, std::string::npos);
+  const std::string offered = " " + text.substr(listStart + 16, text.find('"', listStart + 16) - listStart - 16) + " ";
+  // The subcommands the main help lists (the indented names under "Subcommands:").
+  std::vector<std::string> subcommands;
+  {
+    std::istringstream help(wiggle("--help").out);
+    bool listing = false;
+    for (std::string line; std::getline(help, line);) {
+      if (line == "Subcommands:")
+        listing = true;
+      else if (listing && line.rfind("  ", 0) == 0 && line.size() > 2 && line[2] != ' ')
+        subcommands.push_back(line.substr(2, line.find(' ', 2) - 2));
+      else if (listing && line.empty())
+        break;
+    }
+  }
+  EXPECT_GE(subcommands.size(), 9u);
+  for (const std::string& sub : subcommands) {
+    r = wiggle(sub + " --help");
     EXPECT_EQ(r.status, 0) << sub << ": " << r.err;
-    EXPECT_NE(r.out.find(std::string("wiggle ") + sub), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("wiggle " + sub), std::string::npos) << r.out;
     EXPECT_EQ(r.err, "") << sub;
+    EXPECT_NE(offered.find(" " + sub + " "), std::string::npos) << sub << " is not in the completion's list";
   }
 }
 
