@@ -1,6 +1,7 @@
 // `wiggle boundary [CONFIG.toml] --range LO:HI --out DIR [--vary KEY] [--points N] [--resolution R]
 // [--beds MIN:MAX] [--scatter S] [--over KEY=V1,V2,...] [--rate paper|settled] [--jobs N]
 // [--threads T] [--set ...] [--dry-run]` (docs/SWEEPS.md, "Finding a boundary").
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <sstream>
@@ -41,6 +42,12 @@ double parseNumber(const std::string& text, const std::string& what) {
   return v;
 }
 
+int parseCount(const std::string& text, const std::string& what) {
+  const double v = parseNumber(text, what);
+  if (v != std::floor(v) || v < 0 || v > 1000) throw Error(what + ": '" + text + "' is not a whole number of beds");
+  return static_cast<int>(v);
+}
+
 // "A:B" -> {A, B}.
 std::pair<std::string, std::string> split(const std::string& text, char sep, const std::string& what,
                                           const std::string& form) {
@@ -61,8 +68,8 @@ BoundarySpec specOf(const BoundaryArgs& a) {
   if (!(a.resolution > 0)) throw Error("--resolution R is required (the step of the values searched: LO + k R)");
   spec.options.resolution = a.resolution;
   const auto [bedMin, bedMax] = split(a.beds, ':', "--beds", "MIN:MAX");
-  spec.options.minBeds = static_cast<int>(parseNumber(bedMin, "--beds"));
-  spec.options.maxBeds = static_cast<int>(parseNumber(bedMax, "--beds"));
+  spec.options.minBeds = parseCount(bedMin, "--beds");
+  spec.options.maxBeds = parseCount(bedMax, "--beds");
   spec.options.knownScatter = a.scatter;
   if (!a.over.empty()) {
     const auto [key, values] = split(a.over, '=', "--over", "KEY=V1,V2,...");

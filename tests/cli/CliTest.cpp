@@ -203,6 +203,7 @@ TEST_F(Cli, BoundaryRefusesBadInputInOneLineBeforeAnythingIsWritten) {
       {"boundary --range 1:5 --resolution 0.1 --over drive.amplitude=1,1 --out o", {"given twice"}},
       {"boundary --range 1:5 --resolution 0.1 --rate fast --out o", {"--rate fast", "paper or settled"}},
       {"boundary --range 1:5 --resolution 0.1 --beds 1:3 --out o", {"2 beds"}},
+      {"boundary --range 1:5 --resolution 0.1 --beds 2.5:4 --out o", {"--beds", "'2.5' is not a whole number"}},
       {"boundary --range 1:5 --resolution 0.1 --points 1 --out o", {"--points"}},
   };
   for (const Case& c : cases) {
