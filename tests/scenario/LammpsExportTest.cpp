@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -95,7 +96,7 @@ TEST(LammpsExport, DataFileCarriesTheStateBitForBit) {
   const auto atoms = parseData(deck.data);
   ASSERT_EQ(atoms.size(), deck.atoms);
   for (std::uint32_t i = 0; i < s.size(); ++i) {
-    const DataAtom& a = atoms.at(i + 1);
+    const DataAtom& a = atoms.at(s.tag[i] + 1);  // wiggle's ids, as its dumps name the grains
     EXPECT_EQ(a.type, i < s.grainCount ? 1 : 2);
     EXPECT_EQ(0.5 * a.diameter, s.radius[i]);  // LAMMPS's radius, to the bit
     EXPECT_EQ(a.x, s.x[i]);
@@ -111,8 +112,9 @@ TEST(LammpsExport, DataFileCarriesTheStateBitForBit) {
     }
   }
   const ClumpState& c = world.intruder();
+  const long maxTag = *std::max_element(s.tag.begin(), s.tag.end());
   for (std::size_t k = 0; k < clumpAtoms; ++k) {
-    const DataAtom& a = atoms.at(static_cast<long>(s.size() + k + 1));
+    const DataAtom& a = atoms.at(maxTag + 2 + static_cast<long>(k));  // after the largest id
     EXPECT_EQ(a.type, 3);
     EXPECT_EQ(0.5 * a.diameter, world.clump().atomRadius);
     EXPECT_EQ(a.x, c.x + world.clump().offsetX[k]);
