@@ -18,7 +18,12 @@ a quarter of a row of grains (width / 4 centres) above it, which only the bulk r
 DIR/dump.lammpstrj holds the bed at the end (the format wiggle's dumps have): compare it with
 wiggle's beds by tools/validation/bed_statistics.py --dump. DIR/data.lammps is the same bed as a
 data file (write_data): `wiggle run --set bed.file=DIR/data.lammps` runs it (types 1 grains, 2 base,
-3 the intruder's atoms, which wiggle replaces by its own intruder: bed.lammps_types' default). Differences from wiggle that remain: fix pour's own random numbers (not wiggle's stream),
+3 the intruder's atoms, which wiggle replaces by its own intruder: bed.lammps_types' default).
+--drive DECK continues the same LAMMPS session with the drive of DECK (an in.wiggle that
+`wiggle export-lammps --set bed.file=DIR/data.lammps` wrote for this bed), so that the drive
+starts with the contact history the pour built, which a data file cannot carry: DECK's lines but
+those that set up the box, read the data or define the pair style (a new pair style would drop the
+history), after the pour's dump, hold and gravity are removed and the clock is reset to 0. Differences from wiggle that remain: fix pour's own random numbers (not wiggle's stream),
 its placement that rejects only overlaps with grains near the band, fixed settle and relax times
 instead of wiggle's speed and energy thresholds, and fix pour's heights: it draws each grain's height
 as top - u^2 (top - bottom), crowding the top of the band, and stops a batch when its attempts (100
@@ -84,6 +89,13 @@ def deck(args, atoms):
         "run 0",
         "write_data data.lammps",
     ]
+    if args.drive:
+        setup = ("units", "dimension", "atom_style", "boundary", "processors", "comm_modify", "read_data",
+                 "pair_style", "pair_coeff")
+        with open(args.drive) as f:
+            drive = [line.rstrip("\n") for line in f if not line.startswith(setup + ("# Contact history",))]
+        lines += ["# the drive of " + args.drive + ", with the pour's contact history",
+                  "undump bed", "unfix hold", "unfix fall", "reset_timestep 0"] + drive
     return "\n".join(lines) + "\n"
 
 
@@ -102,6 +114,7 @@ def main():
     p.add_argument("--relax", type=float, default=20.0, help="time units after levelling")
     p.add_argument("--level", choices=["highest", "row"], default="highest",
                    help="when the pour stops: the highest grain, or a quarter row of grains, above --bed-height")
+    p.add_argument("--drive", help="an exported in.wiggle of this bed: run its drive after the pour, history kept")
     p.add_argument("--wiggle", default=os.path.join(ROOT, "build", "release", "wiggle"))
     p.add_argument("--lmp", default="lmp")
     args = p.parse_args()
