@@ -12,6 +12,7 @@
 // (validateRunConfig). Geometric checks that need the intruder's shape (box too narrow, intruder
 // too near the top or bottom, self-intersecting polygon) belong to the scenario code, not here.
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -45,6 +46,13 @@ void applySetting(RunConfig& config, const std::string& key, const toml::node& v
 // Every range check and every cross-key check that needs only the config. Throws wiggle::Error
 // whose message starts with the key, e.g. "drive.period = -1: must be > 0".
 void validateRunConfig(const RunConfig& config);
+
+// What an atom type of a LAMMPS data file is in wiggle's bed (bed.lammps_types).
+enum class LammpsRole { Grain, Base, Drop };
+
+// bed.lammps_types read: "TYPE=ROLE ..." (roles grain, base, drop; each type once), as type -> role.
+// Throws wiggle::Error starting with the key.
+std::map<int, LammpsRole> lammpsTypeRoles(const std::string& text);
 
 // The number of run.dt steps in `interval`, or 0 when it is not a whole number of them (to 1e-9
 // relative): the one rule for every interval that must fall on a step (drive.period,

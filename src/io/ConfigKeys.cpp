@@ -174,7 +174,14 @@ const std::vector<KeyInfo>& keyTable() {
       text("bed.file", [](C& c) -> std::string& { return c.bed.file; },
            "run on the bed in this file (a cached bed-KEY.bin) instead of the config's own, e.g. one bed for a whole "
            "friction or time-step study; it must have this box width, mass model and intruder (clump, mass, y0); "
-           "contact, run.dt and engine keys are this config's (\"\" = the config's own bed)"),
+           "contact, run.dt and engine keys are this config's (\"\" = the config's own bed). Or a LAMMPS data file "
+           "(atom_style sphere, as write_data and wiggle export-lammps write it; bed.lammps_types): its grains and base "
+           "with this config's intruder at the box centre and intruder.y0, no contact history (docs/PHYSICS.md, "
+           "section 8)"),
+      text("bed.lammps_types", [](C& c) -> std::string& { return c.bed.lammpsTypes; },
+           "when bed.file is a LAMMPS data file: what each atom type is, as TYPE=ROLE items (grain = a grain, "
+           "base = a frozen base particle, drop = left out: the intruder's atoms, replaced by this config's "
+           "intruder); a type not listed is refused. The default is the types wiggle export-lammps writes"),
       text("bed.cache_dir", [](C& c) -> std::string& { return c.bed.cacheDir; },
            "directory of cached beds (\"\" = $WIGGLE_CACHE or ~/.cache/wiggle)"),
       // [run]

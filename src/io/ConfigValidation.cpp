@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <sstream>
 #include <string>
 
 #include "core/Error.h"
@@ -97,11 +98,37 @@ void checkShapeKeys(const RunConfig& c) {
     throw Error("intruder.y0 = " + num(c.intruder.y0) + ": must be < box.bed_height (" +
                 num(c.box.bedHeight) + ")");
   }
+  lammpsTypeRoles(c.bed.lammpsTypes);  // its syntax, whether bed.file is a LAMMPS data file or not
   if (c.drive.form == "velocity" && c.drive.rampPeriods > 0) {
     throw Error("drive.ramp_periods = " + std::to_string(c.drive.rampPeriods) +
                 ": only with drive.form = \"displacement\" (the velocity form starts from rest already)");
   }
 }
+
+}  // namespace
+
+std::map<int, LammpsRole> lammpsTypeRoles(const std::string& text) {
+  const std::string what = "bed.lammps_types = \"" + text + "\": ";
+  std::map<int, LammpsRole> roles;
+  std::istringstream in(text);
+  for (std::string item; in >> item;) {
+    const std::size_t eq = item.find('=');
+    const std::string type = item.substr(0, eq == std::string::npos ? item.size() : eq);
+    const std::string role = eq == std::string::npos ? "" : item.substr(eq + 1);
+    if (type.empty() || type.size() > 9 || type.find_first_not_of("0123456789") != std::string::npos ||
+        std::stoi(type) < 1)
+      throw Error(what + "\"" + item + "\" is not TYPE=ROLE with TYPE a LAMMPS atom type (1, 2, ...)");
+    static const std::map<std::string, LammpsRole> kRoles = {
+        {"grain", LammpsRole::Grain}, {"base", LammpsRole::Base}, {"drop", LammpsRole::Drop}};
+    const auto r = kRoles.find(role);
+    if (r == kRoles.end()) throw Error(what + "\"" + item + "\": the role must be grain, base or drop");
+    if (!roles.emplace(std::stoi(type), r->second).second) throw Error(what + "type " + type + " is given twice");
+  }
+  if (roles.empty()) throw Error(what + "no types given (e.g. \"1=grain 2=base 3=drop\")");
+  return roles;
+}
+
+namespace {
 
 void requireWholeSteps(const char* key, double interval, double dt, const char* must) {
   if (!wholeStepsIn(interval, dt))

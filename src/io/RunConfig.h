@@ -53,6 +53,9 @@ struct BedDef {
   double maxTime = 2000.0;     // bed.max_time: give up making the bed after this simulated time
   std::string cacheDir;        // bed.cache_dir: where beds are cached ("" = $WIGGLE_CACHE or ~/.cache/wiggle)
   std::string file;            // bed.file: run on the bed in this file instead of the config's own ("" = own)
+  // bed.lammps_types: when bed.file is a LAMMPS data file, the role of each atom type; the default
+  // is the types `wiggle export-lammps` writes (and tools/validation/lammps_fix_pour.py pours).
+  std::string lammpsTypes = "1=grain 2=base 3=drop";
 };
 
 struct RunDef {

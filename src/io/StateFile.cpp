@@ -38,9 +38,12 @@ std::string readStateFile(const std::string& path, const std::string& kind) {
   return parseStateFile(readFile(path), path, kind);
 }
 
+bool isStateFile(const std::string& file) {
+  return file.size() >= sizeof kMagic && std::memcmp(file.data(), kMagic, sizeof kMagic) == 0;
+}
+
 std::string parseStateFile(const std::string& file, const std::string& path, const std::string& kind) {
-  if (file.size() < sizeof kMagic || std::memcmp(file.data(), kMagic, sizeof kMagic) != 0)
-    throw Error(path + ": not a wiggle state file");
+  if (!isStateFile(file)) throw Error(path + ": not a wiggle state file");
   if (file.size() < kHeaderSize + sizeof(std::uint64_t)) throw Error(path + " is truncated");
   if (file.compare(sizeof kMagic, kKindSize, paddedKind(kind)) != 0)
     throw Error(path + ": not a wiggle " + kind + " file");

@@ -16,6 +16,8 @@ void writeStateFile(const std::string& path, const std::string& kind, const std:
 // The payload; throws wiggle::Error ("<path>: not a wiggle <kind> file", "... is truncated",
 // "... fails its checksum", "... was written by format version N, this wiggle reads M").
 std::string readStateFile(const std::string& path, const std::string& kind);
+// Whether a file's bytes start as a wiggle state file does (its magic): to tell one from another format.
+bool isStateFile(const std::string& file);
 // The same checks on a file's bytes already in memory; `name` starts every error message.
 std::string parseStateFile(const std::string& file, const std::string& name, const std::string& kind);
 

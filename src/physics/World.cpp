@@ -153,6 +153,19 @@ void World::setIntruderMotion(const ClumpMotion& motion) {
   prepared_ = false;  // the drive velocity enters the contact forces: re-evaluate them
 }
 
+void World::adoptParticleIds(const std::vector<std::uint32_t>& tags) {
+  if (tags.size() != store_.size()) throw Error("adoptParticleIds: one id per particle is needed");
+  std::vector<std::uint32_t> sorted = tags;
+  std::sort(sorted.begin(), sorted.end());
+  if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
+    throw Error("adoptParticleIds: ids must be unique");
+  if (!sorted.empty() && sorted.back() == std::numeric_limits<std::uint32_t>::max())
+    throw Error("adoptParticleIds: an id is too large");
+  store_.tag = tags;
+  nextTag_ = sorted.empty() ? 0 : sorted.back() + 1;
+  keepOrderAtFirstBuild_ = true;
+}
+
 void World::removeGrains(const std::vector<bool>& remove) {
   if (remove.size() != store_.grainCount) throw Error("removeGrains: one flag per grain expected");
   invalidate();
@@ -317,7 +330,7 @@ void World::rebuildNeighbours() {
 
   // Spatial re-sort of the grains (cells of about one diameter, row by row) keeps contact
   // partners close in memory. Done at deterministic steps only, so results stay reproducible.
-  if (rebuilds_ == 0 || step_ >= lastSortStep_ + def_.sortInterval) {
+  if ((rebuilds_ == 0 && !keepOrderAtFirstBuild_) || step_ >= lastSortStep_ + def_.sortInterval) {
     const double cell = 1.0;
     const auto columns = static_cast<std::uint64_t>(std::max(1.0, std::floor(width / cell)));
     std::vector<std::uint64_t> key(s.grainCount);

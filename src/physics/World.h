@@ -80,6 +80,12 @@ class World {
   void addFrozen(double x, double y, double radius);
   void setIntruder(const ClumpDef& clump, double x, double y);
   void setIntruderMotion(const ClumpMotion& motion);
+  // For a bed read from a file that names its particles (a LAMMPS data file's atom ids): `tags` (one
+  // per particle, in store order, unique) become the particles' ids, and the particles keep the
+  // order they were added in until the first scheduled re-sort, as the bed the file was written from
+  // keeps its own (a new world otherwise re-sorts at its first list build). So a bed written out and
+  // read back runs to the same bits as the bed itself. Call it after the last add.
+  void adoptParticleIds(const std::vector<std::uint32_t>& tags);
   // Removes the grains whose index is flagged; contact history of the others is kept.
   void removeGrains(const std::vector<bool>& remove);
   // Time and step count back to zero: t = 0 of the drive. Forces are recomputed at the next step.
@@ -185,6 +191,10 @@ class World {
   std::uint64_t rebuilds_ = 0;
   std::uint64_t lastSortStep_ = 0;
   std::uint32_t nextTag_ = 0;
+  // adoptParticleIds: no re-sort at the first list build. Not saved (World::save): a run builds its
+  // lists at t = 0, before its first checkpoint, and a saved world that has built them never re-sorts
+  // at its first build after loading anyway (rebuilds_ > 0).
+  bool keepOrderAtFirstBuild_ = false;
   bool prepared_ = false;
   bool listsStale_ = true;
   bool grainsStarted_ = false;  // inside run(): this step's first half kick and drift are done already

@@ -15,6 +15,7 @@
 #include "io/AtomicFile.h"
 #include "io/FileLock.h"
 #include "io/StateFile.h"
+#include "scenario/LammpsExport.h"
 
 namespace wiggle {
 
@@ -405,11 +406,22 @@ BedFile readBedFile(const std::string& file, const std::string& name) {
 }
 
 // bed.file: the bed in that file fitted to this config. What the particles and the intruder were
-// made with must be this config's; the rest (contact, time step, engine) is set anew.
+// made with must be this config's; the rest (contact, time step, engine) is set anew. A file that is
+// not a wiggle state file is read as a LAMMPS data file (readLammpsBed), which holds particles only:
+// this config's intruder goes in, and every contact starts with zero shear.
 CachedBed pinnedBed(const RunConfig& config, const ClumpDef& clump) {
   const std::string& path = config.bed.file;
   if (!std::filesystem::is_regular_file(path)) throw Error("bed.file = " + path + ": no such file");
-  BedFile bed = readBedFile(readFile(path), path);
+  const std::string file = readFile(path);
+  if (!isStateFile(file)) {
+    World world = readLammpsBed(file, "bed.file = " + path, config, clump);
+    Hasher h;  // the key names the file's contents (summary.json's bed_key)
+    h.addBytes(file.data(), file.size());
+    return CachedBed{std::move(world), "lammps-" + h.hex(), path, true,
+                     "bed.file: a LAMMPS data file, read with bed.lammps_types = \"" + config.bed.lammpsTypes +
+                         "\"; it has no contact history: every contact starts with zero shear"};
+  }
+  BedFile bed = readBedFile(file, path);
   World& world = bed.world;
   const WorldDef& made = world.def();
   const std::string what = "bed.file = " + path + ": ";

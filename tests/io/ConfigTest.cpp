@@ -72,6 +72,7 @@ std::vector<std::string> differingFields(const RunConfig& a, const RunConfig& b)
   num("bed.maxTime", a.bed.maxTime, b.bed.maxTime);
   other("bed.cacheDir", a.bed.cacheDir == b.bed.cacheDir);
   other("bed.file", a.bed.file == b.bed.file);
+  other("bed.lammpsTypes", a.bed.lammpsTypes == b.bed.lammpsTypes);
   num("run.dt", a.run.dt, b.run.dt);
   num("run.duration", a.run.duration, b.run.duration);
   num("run.sampleInterval", a.run.sampleInterval, b.run.sampleInterval);
@@ -131,6 +132,7 @@ const std::vector<std::tuple<std::string, std::string, std::string>>& everyKey()
       {"bed.max_time", "500", "bed.maxTime"},
       {"bed.cache_dir", "/tmp/beds", "bed.cacheDir"},
       {"bed.file", "/tmp/bed.bin", "bed.file"},
+      {"bed.lammps_types", "\"1=grain 2=base 3=drop 4=base\"", "bed.lammpsTypes"},
       {"run.dt", "2e-4", "run.dt"},
       {"run.duration", "10", "run.duration"},
       {"run.sample_interval", "0.1", "run.sampleInterval"},
@@ -168,7 +170,7 @@ TEST(Config, KeyListIsExactlyTheSpecKeys) {
   std::set<std::string> expected;
   for (const auto& [key, value, field] : everyKey()) expected.insert(key);
   const std::vector<std::string> keys = configKeys();
-  EXPECT_EQ(keys.size(), 49u);
+  EXPECT_EQ(keys.size(), 50u);
   EXPECT_EQ(std::set<std::string>(keys.begin(), keys.end()), expected);
 }
 

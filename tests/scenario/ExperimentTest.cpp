@@ -20,6 +20,7 @@
 #include "scenario/BedMaker.h"
 #include "scenario/Checkpoint.h"
 #include "scenario/Experiment.h"
+#include "scenario/LammpsExport.h"
 #include "scenario/RunSummary.h"
 
 namespace wiggle {
@@ -488,6 +489,83 @@ TEST(Experiment, PinnedBedServesAnotherFrictionAndRefusesAnotherGeometry) {
   RunConfig missing = own;
   missing.bed.file = root + "/nope.bin";
   EXPECT_THROW(obtainBed(missing, prepareCase(missing).clump), Error);
+  fs::remove_all(root);
+}
+
+// bed.file = a LAMMPS data file. The case exported by export-lammps and read back runs to the very
+// state (hash, trajectory) that the original run reaches from its bed with run.bed_history = false:
+// the data file carries every particle's bits and id, and nothing of the contact history.
+TEST(Experiment, ExportedBedReadBackRunsAsTheBedWithoutHistory) {
+  const std::string root = scratch("lammps-round-trip");
+  RunConfig own = tinyConfig(scratch(""));  // the bed shared with the other tests
+  own.run.keepBedHistory = false;
+  const RunOutcome reference = runExperiment(prepareCase(own), quiet(root + "/own"));
+  ASSERT_EQ(reference.status, "ok");
+  exportLammps(prepareCase(own), root + "/deck", false);
+
+  RunConfig imported = own;
+  imported.run.keepBedHistory = true;  // there is none to keep
+  imported.bed.file = root + "/deck/data.lammps";
+  imported.bed.cacheDir = root + "/empty-cache";  // nothing to be found or made there
+  const RunOutcome run = runExperiment(prepareCase(imported), quiet(root + "/imported"));
+  EXPECT_EQ(run.stateHash, reference.stateHash);
+  EXPECT_EQ(readFile(root + "/imported/trajectory.csv"), readFile(root + "/own/trajectory.csv"));
+  EXPECT_FALSE(fs::exists(root + "/empty-cache"));  // no bed was made
+  EXPECT_NE(readFile(root + "/imported/log.txt").find("every contact starts with zero shear"), std::string::npos);
+  fs::remove_all(root);
+}
+
+// A LAMMPS data file wiggle cannot map is refused in one line that says why.
+TEST(Experiment, LammpsBedFileRefusedInOneLine) {
+  const std::string root = scratch("lammps-refusals");
+  RunConfig config = tinyConfig(scratch(""));
+  exportLammps(prepareCase(config), root + "/deck", false);
+  const std::string data = readFile(root + "/deck/data.lammps");
+  auto refusal = [&](const std::string& text, const std::vector<std::string>& sets = {}) {
+    const std::string path = root + "/bad.lammps";
+    writeFileAtomically(path, text);
+    RunConfig bad = config;
+    for (const std::string& set : sets) applyOverride(bad, set);
+    bad.bed.file = path;
+    try {
+      obtainBed(bad, prepareCase(bad).clump);
+    } catch (const Error& e) {
+      const std::string what = e.what();
+      EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+      EXPECT_EQ(what.rfind("bed.file = " + path, 0), 0u) << what;
+      return what;
+    }
+    return std::string("no error");
+  };
+  auto replaced = [&](const std::string& from, const std::string& to) {
+    const std::size_t at = data.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    return data.substr(0, at) + to + data.substr(at + from.size());
+  };
+  // The data file as it is, then with the types' roles moved: it maps, or names what it cannot.
+  EXPECT_EQ(refusal(data), "no error");
+  EXPECT_NE(refusal(replaced("Atoms # sphere", "Atoms # atomic")).find("atom_style atomic"), std::string::npos);
+  EXPECT_NE(refusal(replaced("-0.5 0.5 zlo zhi\n", "-0.5 0.5 zlo zhi\n0 0 0 xy xz yz\n")).find("triclinic"),
+            std::string::npos);
+  EXPECT_NE(refusal(replaced("0 20 xlo xhi", "0 24 xlo xhi")).find("box.width = 20"), std::string::npos);
+  EXPECT_NE(refusal(data, {"bed.lammps_types=1=grain 2=base"}).find("type 3"), std::string::npos);
+  EXPECT_NE(refusal(data, {"intruder.y0=8"}).find("intruder"), std::string::npos);
+  const std::size_t firstAtom = data.find('\n', data.find("Atoms # sphere") + 16) + 1;
+  const std::string firstLine = data.substr(firstAtom, data.find('\n', firstAtom) - firstAtom);
+  std::istringstream words(firstLine);
+  std::string id, type, diameter;
+  words >> id >> type >> diameter;
+  const std::string denser = id + " " + type + " " + diameter + " 2.5" +
+                             firstLine.substr(firstLine.find(' ', id.size() + type.size() + diameter.size() + 3));
+  EXPECT_NE(refusal(replaced(firstLine, denser)).find("density 2.5"), std::string::npos);
+  std::string badNumber = firstLine;
+  badNumber.replace(badNumber.rfind(' '), std::string::npos, " 0.5x");  // z
+  EXPECT_NE(refusal(replaced(firstLine, badNumber)).find("\"0.5x\" is not a finite number"), std::string::npos);
+  EXPECT_NE(refusal(replaced(firstLine, firstLine.substr(0, firstLine.rfind(' ')) + " 0.25")).find("z = 0"),
+            std::string::npos);
+  EXPECT_NE(refusal(data.substr(0, data.find("Velocities") / 2)).find("truncated"), std::string::npos);
+  EXPECT_NE(refusal(data.substr(0, data.size() - 40)).find("truncated"), std::string::npos);
+  EXPECT_NE(refusal("not a data file\n\n12 atoms\n").find("not a LAMMPS data file"), std::string::npos);
   fs::remove_all(root);
 }
 

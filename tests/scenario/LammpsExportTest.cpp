@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -95,7 +96,7 @@ TEST(LammpsExport, DataFileCarriesTheStateBitForBit) {
   const auto atoms = parseData(deck.data);
   ASSERT_EQ(atoms.size(), deck.atoms);
   for (std::uint32_t i = 0; i < s.size(); ++i) {
-    const DataAtom& a = atoms.at(i + 1);
+    const DataAtom& a = atoms.at(s.tag[i] + 1);  // wiggle's ids, as its dumps name the grains
     EXPECT_EQ(a.type, i < s.grainCount ? 1 : 2);
     EXPECT_EQ(0.5 * a.diameter, s.radius[i]);  // LAMMPS's radius, to the bit
     EXPECT_EQ(a.x, s.x[i]);
@@ -111,8 +112,9 @@ TEST(LammpsExport, DataFileCarriesTheStateBitForBit) {
     }
   }
   const ClumpState& c = world.intruder();
+  const long maxTag = *std::max_element(s.tag.begin(), s.tag.end());
   for (std::size_t k = 0; k < clumpAtoms; ++k) {
-    const DataAtom& a = atoms.at(static_cast<long>(s.size() + k + 1));
+    const DataAtom& a = atoms.at(maxTag + 2 + static_cast<long>(k));  // after the largest id
     EXPECT_EQ(a.type, 3);
     EXPECT_EQ(0.5 * a.diameter, world.clump().atomRadius);
     EXPECT_EQ(a.x, c.x + world.clump().offsetX[k]);
@@ -186,6 +188,54 @@ TEST(LammpsExport, WithoutContactHistoryKeepsEveryParticle) {
   EXPECT_EQ(fresh.intruder().y, probe.intruder().y);
   EXPECT_EQ(fresh.intruderMotion().period, probe.intruderMotion().period);
   EXPECT_THROW(withoutContactHistory(world), Error);  // intruder moving vertically: not a run start
+}
+
+// A bed as LAMMPS's write_data writes it (image flags, Velocities, a coefficient section, ids in
+// no particular order, a box from -10 to 10): grains and base by type, ids kept, x shifted into
+// [0, W), the dropped atom replaced by the config's intruder at the box centre and intruder.y0.
+TEST(LammpsExport, ReadsABedAsWriteDataWritesIt) {
+  RunConfig config;
+  config.box.width = 20;
+  config.intruder.y0 = 9;
+  config.bed.lammpsTypes = "1=grain 2=base 4=grain 3=drop";
+  const std::string data =
+      "LAMMPS data file via write_data, version 29 Sep 2021, timestep = 2600000\n\n"
+      "6 atoms\n4 atom types\n\n-10 10 xlo xhi\n-1 40 ylo yhi\n-0.5 0.5 zlo zhi\n\n"
+      "PairIJ Coeffs # gran/hertz/history\n\n1 1\n1 2\n1 3\n1 4\n2 2\n2 3\n2 4\n3 3\n3 4\n4 4\n\n"
+      "Atoms # sphere\n\n"
+      "7 1 1.0 1.0000000000000002 -9.5 0.95 0 1 0 0\n"
+      "2 2 1.0 1.0 -9.5 0 0 0 0 0\n"
+      "3 2 1.0 1.0 -8.5 0 0 0 0 0\n"
+      "12 4 0.9 1.0 5.25 3.0 0.0 0 0 0\n"
+      "40 3 0.5 1.0 0.0 9.0 0 0 0 0\n"
+      "9 1 1.1 1.0 9.999999999999998 2.0 0 -1 0 0\n\n"
+      "Velocities\n\n7 0.5 -0.25 0 0 0 3.0\n2 0 0 0 0 0 0\n3 0 0 0 0 0 0\n12 0 0 0 0 0 -1.5\n"
+      "40 0 0 0 0 0 0\n9 0.125 0 0 0 0 0\n";
+  const ClumpDef clump = makeClump(config.intruder, config.grains.massModel, 1.0);
+  const World world = readLammpsBed(data, "bed.data", config, clump);
+  const ParticleStore& s = world.particles();
+  ASSERT_EQ(world.grainCount(), 3u);
+  ASSERT_EQ(s.size(), 5u);
+  EXPECT_EQ(s.tag, (std::vector<std::uint32_t>{6, 11, 8, 1, 2}));  // grains, then base, in file order
+  EXPECT_EQ(s.x[0], 0.5);                                          // -9.5 - xlo
+  EXPECT_EQ(s.vx[0], 0.5);
+  EXPECT_EQ(s.vy[0], -0.25);
+  EXPECT_EQ(s.omega[0], 3.0);
+  EXPECT_EQ(s.x[1], 15.25);
+  EXPECT_EQ(s.radius[1], 0.45);
+  EXPECT_EQ(s.omega[1], -1.5);
+  EXPECT_EQ(s.radius[3], 0.5);
+  EXPECT_EQ(world.intruder().x, 10.0);
+  EXPECT_EQ(world.intruder().y, 9.0);
+  EXPECT_EQ(world.clump().offsetX, clump.offsetX);
+  // Each role's absence or excess is named: here type 4 without a role.
+  config.bed.lammpsTypes = "1=grain 2=base 3=drop";
+  try {
+    readLammpsBed(data, "bed.data", config, clump);
+    ADD_FAILURE() << "type 4 accepted without a role";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("atom 12 has type 4"), std::string::npos) << e.what();
+  }
 }
 
 // ---------------------------------------------------------------- against LAMMPS

@@ -1,14 +1,15 @@
 #!/usr/bin/python3
 """y(t) of several runs of the same case in one figure, with the rise rate of each.
 
-    tools/validation/compare_trajectories.py --out FIG.png [--title T] LABEL=DIR [LABEL=DIR ...]
+    tools/validation/compare_trajectories.py --out FIG.png [--title T] [--csv TABLE.csv] LABEL=DIR [LABEL=DIR ...]
 
 DIR is a `wiggle run` directory or a directory where an exported LAMMPS deck ran (`wiggle
 export-lammps`: the deck writes the same trajectory.csv columns). Prints, per run, V_y by the
 paper's chord rule over [t_i, t_f] = [0.1 t_end, t_end], the least-squares slope over the same
 window and the final height. The chord here has no plateau rule (summary.json's vy has one): use it
 only for runs whose intruder did not reach the free surface, and compare with summary.json when
-there is one (printed beside it).
+there is one (printed beside it). --csv writes the same rows as a table (label, dir, vy_chord,
+vy_slope, y_end, summary_vy; summary_vy empty for a LAMMPS run).
 """
 import argparse
 import json
@@ -37,6 +38,7 @@ def main():
     parser.add_argument("runs", nargs="+", metavar="LABEL=DIR")
     parser.add_argument("--out", required=True)
     parser.add_argument("--title", default="")
+    parser.add_argument("--csv", help="also write the rows to this CSV file")
     args = parser.parse_args()
     style.apply()
     import matplotlib.pyplot as plt
@@ -44,6 +46,7 @@ def main():
     many = len(args.runs) > 6  # then the legend goes beside the axes, where it hides no curve
     fig, ax = plt.subplots(figsize=(9, 4) if many else (7, 4))
     print(f"{'run':24} {'V_y chord':>10} {'LSQ slope':>10} {'y_end':>8} {'summary vy':>11}")
+    rows = []
     for spec in args.runs:
         label, sep, path = spec.partition("=")
         if not sep:
@@ -56,7 +59,15 @@ def main():
         summary_vy = json.load(open(summary_path)).get("vy") if os.path.exists(summary_path) else None
         shown = f"{summary_vy:+.4f}" if summary_vy is not None else "-"
         print(f"{label:24} {chord:+10.4f} {slope:+10.4f} {y_end:8.2f} {shown:>11}")
+        rows.append([label, path, f"{chord:.6f}", f"{slope:.6f}", f"{y_end:.4f}",
+                     "" if summary_vy is None else f"{summary_vy:.6f}"])
         ax.plot(traj["t"], np.asarray(traj["y"]) - traj["y"][0], lw=0.8, label=f"{label}: V_y = {chord:+.3f}")
+    if args.csv:
+        import csv
+        with open(args.csv, "w", newline="") as f:
+            w = csv.writer(f)
+            w.writerow(["label", "dir", "vy_chord", "vy_slope", "y_end", "summary_vy"])
+            w.writerows(rows)
     ax.axhline(0.0, color="0.6", lw=0.5)
     ax.set_xlabel("t [sqrt(d/g)]")
     ax.set_ylabel("y - y(0) [d]")

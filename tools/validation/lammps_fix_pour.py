@@ -3,7 +3,7 @@
 
     tools/validation/lammps_fix_pour.py --out DIR [--seed 1] [--width 60] [--bed-height 50] [--y0 25]
                                         [--shape disk] [--fraction 0.3] [--speed 1] [--batch 20]
-                                        [--settle 30] [--relax 20] [--wiggle BIN] [--lmp lmp]
+                                        [--settle 30] [--relax 20] [--level highest|row] [--wiggle BIN] [--lmp lmp]
 
 Writes DIR/in.pour and runs it with `lmp`: a 2D box periodic in x, the frozen base row and the held
 intruder's atoms (from `wiggle model --geometry`), the contact law of configs/small.toml, and then,
@@ -11,9 +11,19 @@ batch after batch, a `fix pour` into a band from one d_max above the highest gra
 filled to the area fraction --fraction, grains thrown down at --speed (fix pour adds the speed of a
 fall from the band's top, as wiggle's random pour does), each batch followed by --settle time
 units; once the surface passes --bed-height the grains above it are deleted (as wiggle levels a
-bed) and the bed relaxes for --relax time units. DIR/dump.lammpstrj holds the bed at the end (the
-format wiggle's dumps have): compare it with wiggle's beds by tools/validation/bed_statistics.py
---dump. Differences from wiggle that remain: fix pour's own random numbers (not wiggle's stream),
+bed) and the bed relaxes for --relax time units. "Passes" is, with --level highest (the default,
+the rule of the committed pour_protocol_small decks), the highest grain above --bed-height, which a
+single grain thrown up can satisfy early (that study's seed 2 stopped 5 d low); with --level row,
+a quarter of a row of grains (width / 4 centres) above it, which only the bulk reaches.
+DIR/dump.lammpstrj holds the bed at the end (the format wiggle's dumps have): compare it with
+wiggle's beds by tools/validation/bed_statistics.py --dump. DIR/data.lammps is the same bed as a
+data file (write_data): `wiggle run --set bed.file=DIR/data.lammps` runs it (types 1 grains, 2 base,
+3 the intruder's atoms, which wiggle replaces by its own intruder: bed.lammps_types' default).
+--drive DECK continues the same LAMMPS session with the drive of DECK (an in.wiggle that
+`wiggle export-lammps --set bed.file=DIR/data.lammps` wrote for this bed), so that the drive
+starts with the contact history the pour built, which a data file cannot carry: DECK's lines but
+those that set up the box, read the data or define the pair style (a new pair style would drop the
+history), after the pour's dump, hold and gravity are removed and the clock is reset to 0. Differences from wiggle that remain: fix pour's own random numbers (not wiggle's stream),
 its placement that rejects only overlaps with grains near the band, fixed settle and relax times
 instead of wiggle's speed and energy thresholds, and fix pour's heights: it draws each grain's height
 as top - u^2 (top - bottom), crowding the top of the band, and stops a batch when its attempts (100
@@ -57,6 +67,7 @@ def deck(args, atoms):
         "compute ke grains ke", "thermo_style custom step time atoms c_ke", "thermo 100000",
         # batch loop: the band starts one d_max above the highest grain (the base's top before any)
         "variable batch loop 1000",
+        *([f"region high block INF INF {args.bed_height} INF INF INF units box"] if args.level == "row" else []),
         "label pour",
         "variable n equal count(grains)",
         "if \"${n} > 0\" then \"variable ytop equal bound(grains,ymax)+0.55\" else \"variable ytop equal 0.5\"",
@@ -67,7 +78,8 @@ def deck(args, atoms):
         f"diam range 0.9 1.1 dens 1.0 1.0 vol {vol:.12g} 100 vel 0 0 -{args.speed}",
         f"run {steps(args.settle)}",
         "unfix ins${batch}",
-        "variable surface equal bound(grains,ymax)",
+        "variable surface equal bound(grains,ymax)" if args.level == "highest"
+        else f"variable surface equal {args.bed_height}+count(grains,high)-{args.width / 4:g}",
         f"if \"${{surface}} < {args.bed_height}\" then \"next batch\" \"jump SELF pour\"",
         f"region above block INF INF {args.bed_height} INF INF INF units box",
         "group topgrains region above", "group levelled intersect topgrains grains",
@@ -75,7 +87,15 @@ def deck(args, atoms):
         f"run {steps(args.relax)}",
         "dump bed all custom 1 dump.lammpstrj id type x y z radius vx vy", "dump_modify bed sort id",
         "run 0",
+        "write_data data.lammps",
     ]
+    if args.drive:
+        setup = ("units", "dimension", "atom_style", "boundary", "processors", "comm_modify", "read_data",
+                 "pair_style", "pair_coeff")
+        with open(args.drive) as f:
+            drive = [line.rstrip("\n") for line in f if not line.startswith(setup + ("# Contact history",))]
+        lines += ["# the drive of " + args.drive + ", with the pour's contact history",
+                  "undump bed", "unfix hold", "unfix fall", "reset_timestep 0"] + drive
     return "\n".join(lines) + "\n"
 
 
@@ -92,6 +112,9 @@ def main():
     p.add_argument("--batch", type=float, default=20.0)
     p.add_argument("--settle", type=float, default=30.0, help="time units after each batch")
     p.add_argument("--relax", type=float, default=20.0, help="time units after levelling")
+    p.add_argument("--level", choices=["highest", "row"], default="highest",
+                   help="when the pour stops: the highest grain, or a quarter row of grains, above --bed-height")
+    p.add_argument("--drive", help="an exported in.wiggle of this bed: run its drive after the pour, history kept")
     p.add_argument("--wiggle", default=os.path.join(ROOT, "build", "release", "wiggle"))
     p.add_argument("--lmp", default="lmp")
     args = p.parse_args()
