@@ -69,8 +69,8 @@ class PyCase {
   }
 
   // A read-only view of one of the store's arrays; `self` keeps the case alive while it exists.
-  py::array_t<double> view(const std::vector<double>& data, std::size_t n, py::handle self) const {
-    py::array_t<double> a({n}, {sizeof(double)}, data.data(), self);
+  py::array_t<double> view(const std::vector<double>& data, py::handle self) const {
+    py::array_t<double> a({data.size()}, {sizeof(double)}, data.data(), self);
     a.attr("setflags")(py::arg("write") = false);
     return a;
   }
@@ -146,7 +146,7 @@ PYBIND11_MODULE(wiggle, m) {
         name,
         [member](py::object self) {
           const PyCase& c = self.cast<const PyCase&>();
-          return c.view(c.world().particles().*member, c.world().particles().size(), self);
+          return c.view(c.world().particles().*member, self);
         },
         doc);
   };

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
-#include <sstream>
 
+#include "Arguments.h"
 #include "Commands.h"
 #include "PathChecks.h"
 #include "core/Error.h"
@@ -30,18 +30,6 @@ struct BoundaryArgs {
   bool dryRun = false;
 };
 
-double parseNumber(const std::string& text, const std::string& what) {
-  std::size_t used = 0;
-  double v = 0.0;
-  try {
-    v = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size()) throw Error(what + ": '" + text + "' is not a number");
-  return v;
-}
-
 int parseCount(const std::string& text, const std::string& what) {
   const double v = parseNumber(text, what);
   if (v != std::floor(v) || v < 0 || v > 1000) throw Error(what + ": '" + text + "' is not a whole number of beds");
@@ -49,11 +37,11 @@ int parseCount(const std::string& text, const std::string& what) {
 }
 
 // "A:B" -> {A, B}.
-std::pair<std::string, std::string> split(const std::string& text, char sep, const std::string& what,
-                                          const std::string& form) {
-  const auto at = text.find(sep);
-  if (at == std::string::npos) throw Error(what + " " + text + ": expected " + form);
-  return {text.substr(0, at), text.substr(at + 1)};
+std::pair<std::string, std::string> pairOf(const std::string& text, char sep, const std::string& what,
+                                           const std::string& form) {
+  const std::vector<std::string> parts = split(text, sep);
+  if (parts.size() != 2) throw Error(what + " " + text + ": expected " + form);
+  return {parts[0], parts[1]};
 }
 
 BoundarySpec specOf(const BoundaryArgs& a) {
@@ -61,21 +49,20 @@ BoundarySpec specOf(const BoundaryArgs& a) {
   spec.base = loadRunConfig(a.config.empty() ? std::nullopt : std::optional<std::string>(a.config), a.sets);
   spec.key = a.key;
   if (a.range.empty()) throw Error("--range LO:HI is required (the values of " + a.key + " to search)");
-  const auto [lo, hi] = split(a.range, ':', "--range", "LO:HI");
+  const auto [lo, hi] = pairOf(a.range, ':', "--range", "LO:HI");
   spec.options.lo = parseNumber(lo, "--range");
   spec.options.hi = parseNumber(hi, "--range");
   spec.options.points = a.points;
   if (!(a.resolution > 0)) throw Error("--resolution R is required (the step of the values searched: LO + k R)");
   spec.options.resolution = a.resolution;
-  const auto [bedMin, bedMax] = split(a.beds, ':', "--beds", "MIN:MAX");
+  const auto [bedMin, bedMax] = pairOf(a.beds, ':', "--beds", "MIN:MAX");
   spec.options.minBeds = parseCount(bedMin, "--beds");
   spec.options.maxBeds = parseCount(bedMax, "--beds");
   spec.options.knownScatter = a.scatter;
   if (!a.over.empty()) {
-    const auto [key, values] = split(a.over, '=', "--over", "KEY=V1,V2,...");
+    const auto [key, values] = pairOf(a.over, '=', "--over", "KEY=V1,V2,...");
     spec.overKey = key;
-    std::istringstream list(values);
-    for (std::string v; std::getline(list, v, ',');) spec.overValues.push_back(parseNumber(v, "--over " + key));
+    for (const std::string& v : split(values, ',')) spec.overValues.push_back(parseNumber(v, "--over " + key));
   }
   if (a.rate == "paper")
     spec.rate = RateRule::Paper;

@@ -1,7 +1,6 @@
 // `wiggle model`: the cavity model's geometry (l, l', T_rise, h, T_max) and V_y(T) for the paper's
 // shapes or a user polygon, the clump's atom statistics, and a JSON file with the outline and atoms
 // for the plotting package (paper figure 13). docs/MODEL.md documents the output.
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -12,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "Arguments.h"
 #include "Commands.h"
 #include "core/Error.h"
 #include "io/AtomicFile.h"
@@ -44,27 +44,6 @@ const std::map<std::string, PaperRow>& paperTable() {
                                                        {"rect_wide", {4.50, 3.16}},
                                                        {"triangle", {8.22, 4.17}}};
   return rows;
-}
-
-double parseNumber(const std::string& text, const std::string& what) {
-  const char* begin = text.c_str();
-  while (*begin == ' ') ++begin;
-  char* end = nullptr;
-  errno = 0;
-  const double value = std::strtod(begin, &end);
-  while (end && *end == ' ') ++end;
-  if (end == begin || *end != '\0' || errno == ERANGE || !std::isfinite(value))
-    throw Error(what + ": '" + text + "' is not a finite number");
-  return value;
-}
-
-std::vector<std::string> split(const std::string& text, char sep) {
-  std::vector<std::string> parts;
-  std::string part;
-  std::istringstream in(text);
-  while (std::getline(in, part, sep)) parts.push_back(part);
-  if (!text.empty() && text.back() == sep) parts.emplace_back();
-  return parts;
 }
 
 Outline parseVertices(const std::string& text) {

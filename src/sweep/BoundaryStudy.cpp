@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include "core/Error.h"
@@ -14,6 +15,7 @@
 #include "io/SweepSpec.h"
 #include "sweep/ResultsTable.h"
 #include "sweep/SweepPlan.h"
+#include "sweep/SweepStatus.h"
 
 namespace wiggle {
 
@@ -110,19 +112,7 @@ std::vector<BoundaryCaseOutcome> SweepBoundaryRunner::run(const BoundarySpec& sp
     const SweepOutcome outcome = runSweep(file, options_);
     if (outcome.interrupted) throw Interrupted(outcome.stopSignal, outcome.summary);
   }
-  // The errors of failed cases, from results.csv.
-  std::map<std::string, std::string> errors;
-  if (std::filesystem::exists(dir + "/results.csv")) {
-    const auto rows = parseCsv(readFile(dir + "/results.csv"));
-    if (!rows.empty()) {
-      const auto column = [&](const char* name) {
-        return std::find(rows[0].begin(), rows[0].end(), name) - rows[0].begin();
-      };
-      const auto name = static_cast<std::size_t>(column("case")), error = static_cast<std::size_t>(column("error"));
-      for (std::size_t r = 1; r < rows.size(); ++r)
-        if (name < rows[r].size() && error < rows[r].size()) errors[rows[r][name]] = rows[r][error];
-    }
-  }
+  std::optional<SweepStatus> status;  // the sweep's record of the cases that did not finish, read once
   std::vector<BoundaryCaseOutcome> outcomes;
   for (std::size_t i = firstNew; i < all.size(); ++i) {
     BoundaryCaseOutcome o;
@@ -132,8 +122,10 @@ std::vector<BoundaryCaseOutcome> SweepBoundaryRunner::run(const BoundarySpec& sp
       o.vy = spec.rate == RateRule::Paper ? r.vy : r.vySettled;
       o.wallSeconds = r.wallSeconds;
     } else {
-      const auto it = errors.find(sweep.cases[i].name);
-      o.error = it != errors.end() && !it->second.empty() ? it->second : "the case did not finish";
+      if (!status) status = readSweepStatus(dir);
+      for (const CaseStatus& c : status->cases)
+        if (c.name == sweep.cases[i].name) o.error = c.error;
+      if (o.error.empty()) o.error = "the case did not finish";
     }
     outcomes.push_back(o);
   }
@@ -342,8 +334,9 @@ std::string boundaryPlanListing(const BoundarySpec& spec) {
     const std::string bedId = std::to_string(c.search) + "/" + std::to_string(config.box.seed);
     if (!beds[bedId]) bed += estimatedBedSeconds(config, speed.ns);
     beds[bedId] = true;
-    out << "  " << (spec.overKey.empty() ? "" : spec.overKey + " = " + formatNumber(spec.overValues[c.search]) + ", ")
-        << spec.key << " = " << formatNumber(c.run.value) << ", box.seed = " << config.box.seed << '\n';
+    const std::string label = searchLabel(spec, c.search);
+    out << "  " << (label.empty() ? "" : label + ", ") << spec.key << " = " << formatNumber(c.run.value)
+        << ", box.seed = " << config.box.seed << '\n';
   }
   // Bisections of one coarse interval down to one lattice step.
   const double steps = static_cast<double>(latticeIntervals(o)) / (o.points - 1);
