@@ -7,8 +7,10 @@ Fails (exit 1, one line per changed table line) when a table between `<!-- vy_ta
 markers in docs/VALIDATION.md or docs/PERFORMANCE.md differs from what the script makes from
 results/, when a marker names no declared table or a declared table has no markers. Fix: run
 `tools/study/vy_tables.py` and commit the documents. First it checks that the check can fail: a
-document with one digit of a table changed must be reported.
+document with one digit of a table changed must be reported, and the phase profile's harmonics
+must give back those of a made-up profile.
 """
+import math
 import os
 import sys
 
@@ -30,8 +32,26 @@ def check_can_fail():
     return [] if again == text and again != changed and not problems else ["self-test: a changed table went unnoticed"]
 
 
+class MadeUpProfile:
+    """A stand-in case whose phase_rates.csv is 0.05 + 0.2 cos(2 (phi - peak)) + 0.1 cos(phi - 1), 20 bins."""
+    peak = 3.3   # 10 phi / pi
+
+    def phase_rates(self):
+        centres = [k + 0.5 for k in range(20)]
+        peak = self.peak * math.pi / 10
+        return centres, [0.05 + 0.2 * math.cos(2 * (c * math.pi / 10 - peak)) + 0.1 * math.cos(c * math.pi / 10 - 1)
+                         for c in centres]
+
+
+def check_phase_profile():
+    p = vy_tables.PhaseProfile(MadeUpProfile())
+    got = (p.mean, p.half, p.half_peak, p.whole, p.rest)
+    want = (0.05, 0.2, MadeUpProfile.peak, 0.1, 0.0)
+    return [] if all(abs(a - b) < 1e-12 for a, b in zip(got, want)) else [f"PhaseProfile: {got}, not {want}"]
+
+
 def main():
-    problems = check_can_fail() + vy_tables.run(check=True)
+    problems = check_can_fail() + check_phase_profile() + vy_tables.run(check=True)
     for p in problems:
         print(p)
     print(f"vy_tables: {len(problems)} differences between the documents' tables and results/")

@@ -87,6 +87,12 @@ class Case:
             self._trajectory = [r[0] for r in rows], [r[1] for r in rows]
         return self._trajectory
 
+    def phase_rates(self):
+        """(phase centres as 10 phi / pi, mean v_y) of phase_rates.csv, in bin order."""
+        with open(os.path.join(self.dir, "phase_rates.csv"), newline="") as f:
+            rows = sorted(csv.DictReader(f), key=lambda r: int(r["bin"]))
+        return [float(r["phase_center"]) for r in rows], [float(r["vy_mean"]) for r in rows]
+
 
 @functools.lru_cache(maxsize=None)
 def load(source):
@@ -122,6 +128,36 @@ def slope(t0, t1):
         mt, my = sum(p[0] for p in pairs) / n, sum(p[1] for p in pairs) / n
         return sum((t - mt) * (y - my) for t, y in pairs) / sum((t - mt) ** 2 for t, _ in pairs)
     return value
+
+
+class PhaseProfile:
+    """A case's mean v_y per phase bin (the paper's figure 8) as its harmonics in the phase phi:
+    v(phi) = mean + sum_n |h_n| cos(n phi - arg h_n). The symmetric shapes in a level bed repeat
+    their profile half a cycle later, mirrored (moving left is moving right seen in a mirror), so
+    their profile's own harmonic is n = 2 (`half`, largest at `half_peak` and half_peak + 10, in
+    10 phi / pi); n = 1 (`whole`) is what differs between the two half cycles: the bed's own
+    left-right asymmetry and noise; `rest` is the rms per bin of everything above n = 2."""
+
+    def __init__(self, case):
+        centres, self.bins = case.phase_rates()
+        n = len(self.bins)
+        phis = [c * math.pi / 10 for c in centres]
+        self.mean = sum(self.bins) / n
+
+        def harmonic(k):
+            return complex(sum(v * math.cos(k * p) for v, p in zip(self.bins, phis)),
+                           sum(v * math.sin(k * p) for v, p in zip(self.bins, phis))) * 2 / n
+        h1, h2 = harmonic(1), harmonic(2)
+        self.whole, self.half = abs(h1), abs(h2)
+        self.half_peak = (10 / math.pi * math.atan2(h2.imag, h2.real) / 2) % 10
+        fit = [self.mean + abs(h1) * math.cos(p - math.atan2(h1.imag, h1.real))
+               + abs(h2) * math.cos(2 * p - math.atan2(h2.imag, h2.real)) for p in phis]
+        self.rest = math.sqrt(sum((v - f) ** 2 for v, f in zip(self.bins, fit)) / n)
+
+
+def phase_column(text):
+    """A listing's column from a case's PhaseProfile."""
+    return lambda c: text(PhaseProfile(c))
 
 
 def value_of(case, value):
@@ -378,6 +414,17 @@ TABLES = [
      "rows": [("square", 5.0), ("square", 8.0), ("rect_wide", 5.0), ("rect_wide", 8.0), ("disk", 3.0)],
      "all": True, "row_head": ["case, A = 3", "T"], "row_label": lambda r: (r[0], f"{r[1]:g}"),
      "col_label": lambda s: f"bed {s:g}"},
+    # Figure 8: the phase-resolved rates of the figure 5 cases, as harmonics (PhaseProfile)
+    {"name": "depth_fig8", "kind": listing, "sources": ["results/paper_depth/fig5", "results/paper_depth/fig5_bed2"],
+     "sort": lambda c: (SHAPES.index(c.get("intruder.shape")), c.get("drive.period"), c.get("box.seed")),
+     "columns": [("shape", column("intruder.shape", str)), ("T", column("drive.period")), ("bed", column("box.seed")),
+                 ("V_y", column("vy", fmt(3))), ("mean of the bins", phase_column(lambda p: f"{p.mean:+.3f}")),
+                 ("half-cycle swing", phase_column(lambda p: f"{p.half:.3f}")),
+                 ("its peaks at 10 phi / pi", phase_column(lambda p: f"{p.half_peak:.1f}, {p.half_peak + 10:.1f}")),
+                 ("whole-cycle swing", phase_column(lambda p: f"{p.whole:.3f}")),
+                 ("rest (rms)", phase_column(lambda p: f"{p.rest:.3f}")),
+                 ("bins below 0", phase_column(lambda p: f"{sum(v < 0 for v in p.bins)} of {len(p.bins)}")),
+                 ("smallest, largest bin", phase_column(lambda p: f"{min(p.bins):+.2f}, {max(p.bins):+.2f}"))]},
     # Table 1 by three clocks, from the same t = 1000 runs: the preset's t = 100 window (t = 10-100),
     # the paper's window (t = 100-1000, `vy` of a t = 1000 run) and the paper's t_f rule (`vy_settled`)
     shape_by_period("depth_t1000_window100", ["results/paper_depth/table1_t1000"], {}, True, value=chord(10, 100)),
