@@ -166,7 +166,7 @@ FloorTiming timeFloor(const WorldDef& def, const PairArrays& pairs, int sweeps) 
     const auto start = Clock::now();
     const double excess = maxOverLanes(n, [&](std::uint32_t k, auto lane) {
       using V = decltype(lane);
-      return evaluatePairs(pairs.inputs<V>(k), k, slots, def.contact, def.dt, true, def.maxOverlapRatio);
+      return evaluatePairs<HertzLaw>(pairs.inputs<V>(k), k, slots, def.contact, def.dt, true, def.maxOverlapRatio);
     });
     seconds.push_back(secondsSince(start));
     sink = sink + excess;
@@ -206,7 +206,7 @@ int run(const Options& o) {
   std::printf("particles %llu (grains %u, base %u, intruder atoms %zu), listed grain pairs %u (%u touching)\n",
               static_cast<unsigned long long>(particles), world.grainCount(), world.particles().baseCount(),
               world.clump().offsetX.size(), pairCount, law.touching);
-  const int engineLanes = forceKernels(defaultSimdLevel()).lanes;
+  const int engineLanes = forceKernels(defaultSimdLevel(), world.def().contact.law).lanes;
   std::printf("floor: %.2f ns per particle-step (min %.2f), %.2f ns per pair; %d sweeps, 1 thread, %d lanes\n",
               floorNs, law.minSeconds * perParticle, 1e9 * law.medianSeconds / pairCount, o.sweeps, kFloorLanes);
   std::printf("step:  %.2f ns per particle-step (%llu steps, %d thread%s, %d lanes)\n", stepNs,

@@ -88,8 +88,9 @@ void runContactKernel(benchmark::State& state, bool scalar) {
     if (scalar) {
       for (std::size_t k = 0; k < n; ++k) {
         const PairInputs<double> in = batch.inputs<double>(k);
-        const ContactForce c = hertzHistoryContact(params, 1e-4, in.dx, in.dy, in.dvx, in.dvy, in.radI, in.radJ,
-                                                   in.omegaI, in.omegaJ, in.invMassSum, batch.sx[k], batch.sy[k], true);
+        const ContactForce c =
+            historyContact<HertzLaw>(params, 1e-4, in.dx, in.dy, in.dvx, in.dvy, in.radI, in.radJ, in.omegaI, in.omegaJ,
+                                     in.invMassSum, batch.sx[k], batch.sy[k], true);
         batch.sx[k] = c.shearX;
         batch.sy[k] = c.shearY;
         batch.fx[k] = c.fx;
@@ -101,7 +102,7 @@ void runContactKernel(benchmark::State& state, bool scalar) {
         const auto count = static_cast<std::uint32_t>(std::min<std::size_t>(kChunk, n - first));
         for (std::uint32_t m = 0; m < count; ++m) chunk.set(m, batch.inputs<double>(first + m));
         const double excess =
-            evaluateChunk(chunk, count, static_cast<std::uint32_t>(first), slots, params, 1e-4, true, 1.0);
+            evaluateChunk<HertzLaw>(chunk, count, static_cast<std::uint32_t>(first), slots, params, 1e-4, true, 1.0);
         benchmark::DoNotOptimize(excess);
       }
     }

@@ -39,8 +39,11 @@ class BinaryWriter {
 
 class BinaryReader {
  public:
-  BinaryReader(const char* data, std::size_t size, std::string what)
-      : data_(data), size_(size), what_(std::move(what)) {}
+  // formatVersion: the layout version of the bytes, for readers of files whose layout grew
+  // (io/StateFile.h); kLatestFormat when they are in the layout this program writes.
+  static constexpr std::uint32_t kLatestFormat = 0xffffffffu;
+  BinaryReader(const char* data, std::size_t size, std::string what, std::uint32_t formatVersion = kLatestFormat)
+      : data_(data), size_(size), what_(std::move(what)), formatVersion_(formatVersion) {}
 
   template <class T>
   T value() {
@@ -72,6 +75,7 @@ class BinaryReader {
   }
   bool atEnd() const { return pos_ == size_; }
   const std::string& what() const { return what_; }
+  std::uint32_t formatVersion() const { return formatVersion_; }
 
  private:
   void need(std::uint64_t n) const {
@@ -81,6 +85,7 @@ class BinaryReader {
   std::size_t size_;
   std::size_t pos_ = 0;
   std::string what_;
+  std::uint32_t formatVersion_;
 };
 
 }  // namespace wiggle

@@ -91,10 +91,17 @@ const std::vector<KeyInfo>& keyTable() {
           "grain mass and inertia: sphere m = (4/3) pi r^3, I = (2/5) m r^2; "
           "disc m = pi r^2, I = (1/2) m r^2"),
       // [contact]
+      choice(
+          "contact.law", {kContactLawNames.begin(), kContactLawNames.end()},
+          [](const C& c) -> std::string { return std::string(contactLawName(c.contact.law)); },
+          [](C& c, const std::string& v) { c.contact.law = *contactLawNamed(v); },
+          "the force law of every contact: hertz = LAMMPS's gran/hertz/history, the paper's; hooke = "
+          "gran/hooke/history, the same law without its sqrt(overlap Reff) factor (a linear spring-dashpot; "
+          "kn and kt are then forces per length, m g / d; docs/PHYSICS.md section 4)"),
       number("contact.kn", [](C& c) -> double& { return c.contact.kn; }, above(0), noBound,
-             "m g / d^2", "normal stiffness K_n of the Hertz law"),
+             "m g / d^2", "normal stiffness K_n (with contact.law = \"hooke\": m g / d)"),
       number("contact.kt", [](C& c) -> double& { return c.contact.kt; }, above(0), noBound,
-             "m g / d^2", "tangential stiffness K_t"),
+             "m g / d^2", "tangential stiffness K_t (with contact.law = \"hooke\": m g / d)"),
       number("contact.gamma_n", [](C& c) -> double& { return c.contact.gammaN; }, atLeast(0),
              noBound, "1/(d sqrt(d/g))", "normal viscoelastic damping gamma_n"),
       number("contact.gamma_t", [](C& c) -> double& { return c.contact.gammaT; }, atLeast(0),

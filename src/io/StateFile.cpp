@@ -34,7 +34,7 @@ void writeStateFile(const std::string& path, const std::string& kind, const std:
   writeFileAtomically(path, out.bytes());
 }
 
-std::string readStateFile(const std::string& path, const std::string& kind) {
+StatePayload readStateFile(const std::string& path, const std::string& kind) {
   return parseStateFile(readFile(path), path, kind);
 }
 
@@ -42,7 +42,7 @@ bool isStateFile(const std::string& file) {
   return file.size() >= sizeof kMagic && std::memcmp(file.data(), kMagic, sizeof kMagic) == 0;
 }
 
-std::string parseStateFile(const std::string& file, const std::string& path, const std::string& kind) {
+StatePayload parseStateFile(const std::string& file, const std::string& path, const std::string& kind) {
   if (!isStateFile(file)) throw Error(path + ": not a wiggle state file");
   if (file.size() < kHeaderSize + sizeof(std::uint64_t)) throw Error(path + " is truncated");
   if (file.compare(sizeof kMagic, kKindSize, paddedKind(kind)) != 0)
@@ -56,10 +56,10 @@ std::string parseStateFile(const std::string& file, const std::string& path, con
   Hasher h;
   h.addBytes(file.data(), file.size() - sizeof stored);
   if (h.value() != stored) throw Error(path + " fails its checksum (corrupt)");
-  if (version != kStateFormatVersion)
+  if (version < kOldestStateFormatVersion || version > kStateFormatVersion)
     throw Error(path + " was written by state format version " + std::to_string(version) + ", this wiggle reads " +
-                std::to_string(kStateFormatVersion));
-  return file.substr(kHeaderSize, size);
+                std::to_string(kOldestStateFormatVersion) + " to " + std::to_string(kStateFormatVersion));
+  return {file.substr(kHeaderSize, size), version};
 }
 
 }  // namespace wiggle

@@ -9,16 +9,25 @@
 
 namespace wiggle {
 
-// Bump when the payload layout of any state file changes: older files are then refused.
-constexpr std::uint32_t kStateFormatVersion = 2;
+// Bump when the payload layout of any state file changes. Files from kOldestStateFormatVersion on
+// are read (the readers ask BinaryReader::formatVersion() what the layout holds); older ones are
+// refused. Version 3 added the contact law (World's parameters); version 2 files are Hertz.
+constexpr std::uint32_t kStateFormatVersion = 3;
+constexpr std::uint32_t kOldestStateFormatVersion = 2;
+
+// A state file's payload and the format version it was written in.
+struct StatePayload {
+  std::string bytes;
+  std::uint32_t version;
+};
 
 void writeStateFile(const std::string& path, const std::string& kind, const std::string& payload);
 // The payload; throws wiggle::Error ("<path>: not a wiggle <kind> file", "... is truncated",
-// "... fails its checksum", "... was written by format version N, this wiggle reads M").
-std::string readStateFile(const std::string& path, const std::string& kind);
+// "... fails its checksum", "... was written by format version N, this wiggle reads M to K").
+StatePayload readStateFile(const std::string& path, const std::string& kind);
 // Whether a file's bytes start as a wiggle state file does (its magic): to tell one from another format.
 bool isStateFile(const std::string& file);
 // The same checks on a file's bytes already in memory; `name` starts every error message.
-std::string parseStateFile(const std::string& file, const std::string& name, const std::string& kind);
+StatePayload parseStateFile(const std::string& file, const std::string& name, const std::string& kind);
 
 }  // namespace wiggle

@@ -1,29 +1,52 @@
 #pragma once
-// The contact law of LAMMPS `pair_style gran/hertz/history` (docs/PHYSICS.md §4), restricted to 2D.
+// The contact laws of LAMMPS `pair_style gran/hertz/history` (the default) and
+// `pair_style gran/hooke/history` (docs/PHYSICS.md §4), restricted to 2D.
 //
-// Source: LAMMPS src/GRANULAR/pair_gran_hertz_history.cpp, PairGranHertzHistory::compute()
-// (version 29 Sep 2021). The arithmetic below follows that routine's formulas with the z terms
-// dropped (in 2D each is an exact zero: delz, vr3, omega_x, omega_y). It is not LAMMPS's operation
-// order everywhere: LAMMPS divides seven times per pair (1/r, 1/r^2, Reff, meff, fn/fs and twice by
-// kt), and divisions are what bound the kernel's speed (docs/PERFORMANCE.md). Here one division
-// gives 1/r, 1/(Ri + Rj) and meff together, 1/r^2 is (1/r)^2 and 1/kt is computed once, so a
-// result can differ from LAMMPS's by a few ulps; the LAMMPS comparison tests bound what that does
-// to trajectories. Symbols (only here):
+// Source: LAMMPS src/GRANULAR/pair_gran_hertz_history.cpp, PairGranHertzHistory::compute(), and
+// pair_gran_hooke_history.cpp, PairGranHookeHistory::compute() (version 29 Sep 2021). The two
+// routines are the same but for one factor: Hertz scales the normal force and the tangential force
+// (spring and damping alike) by sqrt(delta Reff); Hooke does not (its stiffnesses are then forces per
+// length). So one law is written here, with that factor from a policy type (HertzLaw, HookeLaw)
+// chosen at compile time: each law's pair loops are compiled on their own, and the Hertz path is
+// the same code, with the same bits, as before the Hooke law existed.
+//
+// The arithmetic follows those routines' formulas with the z terms dropped (in 2D each is an exact
+// zero: delz, vr3, omega_x, omega_y). It is not LAMMPS's operation order everywhere: LAMMPS divides
+// seven times per pair (1/r, 1/r^2, Reff, meff, fn/fs and twice by kt), and divisions are what
+// bound the kernel's speed (docs/PERFORMANCE.md). Here one division gives 1/r, 1/(Ri + Rj) and meff
+// together, 1/r^2 is (1/r)^2 and 1/kt is computed once, so a result can differ from LAMMPS's by a
+// few ulps; the LAMMPS comparison tests bound what that does to trajectories. Symbols (only here):
 //   dx, dy     x_i - x_j (minimum image) [d]            dvx, dvy   v_i - v_j [sqrt(g d)]
 //   radI, radJ radii [d]                                omegaI/J   spins about z [sqrt(g/d)]
 //   invMassSum 1/mi + 1/mj (1/mi alone when j is frozen), so meff = 1 / invMassSum [1/(rho d^3)]
-//   kn, kt     Hertz normal and tangential stiffness      gammaN/T   viscoelastic damping
+//   kn, kt     normal and tangential stiffness         gammaN/T   viscoelastic damping
 //   mu         Coulomb friction coefficient               dt         time step
 //   shearX/Y   stored tangential displacement (history) of the pair, in i's frame
-// Normal force: Fn = sqrt(delta Reff) (kn delta - meff gammaN vn), not clamped at zero.
+//   scale      sqrt(delta Reff) for Hertz, 1 for Hooke (delta = Ri + Rj - r, the overlap)
+// Normal force: Fn = scale (kn delta - meff gammaN vn), not clamped at zero.
 // Tangential: s += vt dt, s projected on the tangent plane (length not restored), then
-// Ft = -sqrt(delta Reff)(kt s + meff gammaT vt), capped at mu |Fn| with s rescaled so that spring
+// Ft = -scale (kt s + meff gammaT vt), capped at mu |Fn| with s rescaled so that spring
 // plus damping give exactly the capped force.
 // Outputs: (fx, fy) is the force on i (j gets the opposite); the torques are
 // torque_i -= radI * torqueArm, torque_j -= radJ * torqueArm.
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
 #include "core/Simd.h"
 
 namespace wiggle {
+
+// contact.law: which force law the pairs follow (the names are the config's values).
+enum class ContactLaw : std::uint8_t { Hertz, Hooke };
+inline constexpr std::array<std::string_view, 2> kContactLawNames{"hertz", "hooke"};
+inline std::string_view contactLawName(ContactLaw law) { return kContactLawNames[static_cast<std::size_t>(law)]; }
+inline std::optional<ContactLaw> contactLawNamed(std::string_view name) {
+  for (std::size_t i = 0; i < kContactLawNames.size(); ++i)
+    if (kContactLawNames[i] == name) return static_cast<ContactLaw>(i);
+  return std::nullopt;
+}
 
 struct ContactParams {
   double kn = 2e6;        // normal stiffness [rho d g]... Kn of docs/PHYSICS.md §4 (units of the paper)
@@ -31,10 +54,28 @@ struct ContactParams {
   double gammaN = 2500;   // normal damping [sqrt(g/d)]
   double gammaT = 2500;   // tangential damping [sqrt(g/d)]
   double mu = 0.1;        // Coulomb friction coefficient
+  ContactLaw law = ContactLaw::Hertz;  // the same numbers serve both laws; kn, kt mean other units in each
 };
 
 // The law's functions are compiled once per instruction set (core/Simd.h: the inline namespace).
 inline namespace WIGGLE_ISA_NAMESPACE {
+
+// The laws' one difference, as policies of the pair kernels: the factor of both forces.
+struct HertzLaw {
+  static constexpr ContactLaw kLaw = ContactLaw::Hertz;
+  template <class V>
+  static V scale(V overlap, V reff) {
+    using simd::sqrt;
+    return sqrt(overlap * reff);
+  }
+};
+struct HookeLaw {
+  static constexpr ContactLaw kLaw = ContactLaw::Hooke;
+  template <class V>
+  static V scale(V, V) {
+    return V(1.0);  // x * 1 is x exactly, so the compiler drops the products
+  }
+};
 
 template <class V>  // double, or lanes of doubles (core/Simd.h)
 struct ContactForceOf {
@@ -45,10 +86,10 @@ struct ContactForceOf {
 using ContactForce = ContactForceOf<double>;
 
 // The law in three stages: the geometry (a sqrt and the one division for three reciprocals), the
-// trial force (a sqrt) and the Coulomb cap (a sqrt and a division); hertzHistoryContact composes
-// them. These five operations bound the kernel's speed (docs/PERFORMANCE.md: running the stages as
-// three loops over a chunk of pairs was measured, and did not pay: the divider is saturated, not
-// idle). V is double (the reference) or a vector of lanes (core/Simd.h) with the same bits per lane.
+// trial force (a sqrt, Hertz only) and the Coulomb cap (a sqrt and a division); historyContact
+// composes them. These five operations bound the kernel's speed (docs/PERFORMANCE.md: running the
+// stages as three loops over a chunk of pairs was measured, and did not pay: the divider is
+// saturated, not idle). V is double (the reference) or a vector of lanes (core/Simd.h) with the same bits per lane.
 
 // Stage 1: the distance and one division for three reciprocals, q = 1 / (r (Ri + Rj) invMassSum).
 template <class V>
@@ -74,7 +115,7 @@ struct ContactTrial {
   V dampX, dampY;    // the damping part of the tangential force in history units: meff gammaT vtr / kt
   V rinv;
 };
-template <class V>
+template <class Law, class V>
 inline ContactTrial<V> contactTrial(const ContactParams& p, double dt, V dx, V dy, V dvx, V dvy, V radI, V radJ,
                                     V omegaI, V omegaJ, V invMassSum, V shearX, V shearY, bool updateShear,
                                     ContactGeometry<V> g) {
@@ -95,9 +136,9 @@ inline ContactTrial<V> contactTrial(const ContactParams& p, double dt, V dx, V d
   const V vt2 = dvy - vn2;
   const V wr3 = (radI * omegaI + radJ * omegaJ) * rinv;
 
-  // Normal force: Hertz spring plus velocity damping, scaled by sqrt(delta Reff).
+  // Normal force: spring plus velocity damping, scaled by the law (Hertz: sqrt(delta Reff)).
   const V damp = meff * p.gammaN * vnnr * rsqinv;
-  const V polyhertz = sqrt((radsum - r) * reff);
+  const V polyhertz = Law::scale(radsum - r, reff);
   const V ccel = (p.kn * (radsum - r) * rinv - damp) * polyhertz;
 
   // Relative tangential velocity at the contact point, rotation included.
@@ -158,13 +199,12 @@ inline ContactForceOf<V> contactForce(const ContactParams& p, V dx, V dy, V radI
 // Written without branches: every quantity is computed and the cases (touching or not, capped or
 // not, history update or not) are selected afterwards, so that the pair loop vectorises. Lanes of
 // pairs that do not touch compute NaN (sqrt of a negative overlap) that is never selected.
-template <class V>
-inline ContactForceOf<V> hertzHistoryContact(const ContactParams& p, double dt, V dx, V dy, V dvx, V dvy, V radI,
-                                             V radJ, V omegaI, V omegaJ, V invMassSum, V shearX, V shearY,
-                                             bool updateShear) {
+template <class Law, class V>
+inline ContactForceOf<V> historyContact(const ContactParams& p, double dt, V dx, V dy, V dvx, V dvy, V radI, V radJ,
+                                        V omegaI, V omegaJ, V invMassSum, V shearX, V shearY, bool updateShear) {
   const ContactGeometry<V> g = contactGeometry(dx, dy, radI, radJ, invMassSum);
-  const ContactTrial<V> t =
-      contactTrial(p, dt, dx, dy, dvx, dvy, radI, radJ, omegaI, omegaJ, invMassSum, shearX, shearY, updateShear, g);
+  const ContactTrial<V> t = contactTrial<Law>(p, dt, dx, dy, dvx, dvy, radI, radJ, omegaI, omegaJ, invMassSum, shearX,
+                                              shearY, updateShear, g);
   return contactForce(p, dx, dy, radI, radJ, g, t);
 }
 

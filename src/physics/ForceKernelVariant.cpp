@@ -20,6 +20,7 @@ static_assert(simd::kLaneCount<simd::WidestLanes> == WIGGLE_KERNEL_LANES,
               "the compiler flags of this variant do not give the lanes it is named for");
 
 // Pairs go in chunks of kChunk: evaluated (PairKernel.h), then added while their slots are in L1.
+template <class Law>
 double forceBlock(std::uint32_t b, ParticleStore& s, const Kinematics* kin, NeighbourList& list,
                   const ContactParams params, double dt, double width, bool updateShear, double overlapRatio) {
   const std::uint32_t r0 = b * list.blockRows;
@@ -44,11 +45,11 @@ double forceBlock(std::uint32_t b, ParticleStore& s, const Kinematics* kin, Neig
       using V = decltype(lane);
       const std::uint32_t k = first + m;
       if constexpr (std::is_same_v<V, double>)
-        return evaluatePairs(grainPairInputs(kin, s, owner[k], partner[k], width), k, slots, params, dt, updateShear,
-                             overlapRatio);
+        return evaluatePairs<Law>(grainPairInputs(kin, s, owner[k], partner[k], width), k, slots, params, dt,
+                                  updateShear, overlapRatio);
       else
-        return evaluatePairs(grainPairInputs<V>(kin, s, owner + k, partner + k, width), k, slots, params, dt,
-                             updateShear, overlapRatio);
+        return evaluatePairs<Law>(grainPairInputs<V>(kin, s, owner + k, partner + k, width), k, slots, params, dt,
+                                  updateShear, overlapRatio);
     }));
     for (std::uint32_t k = first; k < last; ++k) {
       const std::uint32_t i = owner[k], j = partner[k];
@@ -79,6 +80,7 @@ double forceBlock(std::uint32_t b, ParticleStore& s, const Kinematics* kin, Neig
   return excess;
 }
 
+template <class Law>
 double intruderPairForces(const ParticleStore& s, const ClumpDef& clump, const ClumpState& state, IntruderPairs& ip,
                           const ContactParams params, double dt, double width, bool updateShear, double overlapRatio) {
   double worstExcess = -std::numeric_limits<double>::infinity();
@@ -102,7 +104,8 @@ double intruderPairForces(const ParticleStore& s, const ClumpDef& clump, const C
   for (std::uint32_t first = 0; first < ip.size(); first += kChunk) {
     const std::uint32_t count = std::min(kChunk, ip.size() - first);
     for (std::uint32_t m = 0; m < count; ++m) chunk.set(m, inputs(first + m));
-    worstExcess = std::max(worstExcess, evaluateChunk(chunk, count, first, slots, params, dt, updateShear, overlapRatio));
+    worstExcess =
+        std::max(worstExcess, evaluateChunk<Law>(chunk, count, first, slots, params, dt, updateShear, overlapRatio));
   }
   return worstExcess;
 }
@@ -112,12 +115,24 @@ double intruderPairForces(const ParticleStore& s, const ClumpDef& clump, const C
 #define WIGGLE_KERNEL_TABLE_NAME(variant) WIGGLE_KERNEL_TABLE_NAME_(variant)
 #define WIGGLE_KERNEL_TABLE_NAME_(variant) forceKernels_##variant
 
+namespace {
+
+constexpr SimdLevel kLevel = WIGGLE_KERNEL_LANES == 8   ? SimdLevel::Avx512
+                             : WIGGLE_KERNEL_LANES == 4 ? SimdLevel::Avx2
+                                                        : SimdLevel::Scalar;
+
+template <class Law>
+constexpr ForceKernels kKernels{kLevel, WIGGLE_KERNEL_LANES, Law::kLaw, &forceBlock<Law>, &intruderPairForces<Law>};
+
+}  // namespace
+
 // Declared (and called only on a CPU that has the instruction set) in ForceKernels.cpp.
-const ForceKernels& WIGGLE_KERNEL_TABLE_NAME(WIGGLE_KERNEL_VARIANT)() {
-  static constexpr ForceKernels kernels{
-      WIGGLE_KERNEL_LANES == 8 ? SimdLevel::Avx512 : WIGGLE_KERNEL_LANES == 4 ? SimdLevel::Avx2 : SimdLevel::Scalar,
-      WIGGLE_KERNEL_LANES, &forceBlock, &intruderPairForces};
-  return kernels;
+const ForceKernels& WIGGLE_KERNEL_TABLE_NAME(WIGGLE_KERNEL_VARIANT)(ContactLaw law) {
+  switch (law) {
+    case ContactLaw::Hooke: return kKernels<HookeLaw>;
+    case ContactLaw::Hertz: break;
+  }
+  return kKernels<HertzLaw>;
 }
 
 }  // namespace wiggle

@@ -8,10 +8,10 @@
 namespace wiggle {
 
 // One table per variant built (ForceKernelVariant.cpp); the x86 variants only on x86-64.
-const ForceKernels& forceKernels_scalar();
+const ForceKernels& forceKernels_scalar(ContactLaw law);
 #if WIGGLE_X86_KERNELS
-const ForceKernels& forceKernels_avx2();
-const ForceKernels& forceKernels_avx512();
+const ForceKernels& forceKernels_avx2(ContactLaw law);
+const ForceKernels& forceKernels_avx512(ContactLaw law);
 #endif
 
 namespace {
@@ -56,14 +56,14 @@ std::string simdLevelName(SimdLevel level) {
   return "unknown";
 }
 
-const ForceKernels& forceKernels(SimdLevel level) {
+const ForceKernels& forceKernels(SimdLevel level, ContactLaw law) {
   if (!cpuRuns(level)) throw Error("this CPU cannot run the " + simdLevelName(level) + " force kernels");
   switch (level) {
 #if WIGGLE_X86_KERNELS
-    case SimdLevel::Avx512: return forceKernels_avx512();
-    case SimdLevel::Avx2: return forceKernels_avx2();
+    case SimdLevel::Avx512: return forceKernels_avx512(law);
+    case SimdLevel::Avx2: return forceKernels_avx2(law);
 #endif
-    default: return forceKernels_scalar();
+    default: return forceKernels_scalar(law);
   }
 }
 

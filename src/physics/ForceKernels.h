@@ -3,7 +3,8 @@
 // set and chosen when the program starts, so that one binary (the portable build included) runs the
 // widest lanes the CPU offers: eight doubles with AVX-512, four with AVX2, one otherwise. Every
 // width gives the scalar law's bits (core/Simd.h), so the choice never changes a result; it only
-// changes the speed.
+// changes the speed. Each contact law (ContactLaw.h) has its own loops, the law a compile-time
+// policy of the pair kernels, so the default law pays nothing for the other's existence.
 //
 // The variants are physics/ForceKernelVariant.cpp built three times (CMakeLists.txt, one object
 // library per instruction set); their inline functions live in per-instruction-set namespaces
@@ -24,6 +25,7 @@ enum class SimdLevel : std::uint8_t { Scalar, Avx2, Avx512 };
 struct ForceKernels {
   SimdLevel level;
   int lanes;  // doubles per vector: 1, 4 or 8
+  ContactLaw law;
 
   // Force block b of the grain list (NeighbourList.h): every pair of its rows is evaluated, and its
   // force added to the owner and, if the partner is a grain of this block, to the partner, in pair
@@ -49,7 +51,7 @@ std::string simdLevelName(SimdLevel level);
 // or a level the CPU does not have.
 SimdLevel defaultSimdLevel();
 
-// The kernels of one level; throws wiggle::Error if the CPU cannot run them.
-const ForceKernels& forceKernels(SimdLevel level);
+// The kernels of one level and law; throws wiggle::Error if the CPU cannot run them.
+const ForceKernels& forceKernels(SimdLevel level, ContactLaw law);
 
 }  // namespace wiggle

@@ -44,19 +44,19 @@ inline V minimumImage(V dx, double width) {
   return select(dx > V(halfWidth), dx - V(width), select(dx < V(-halfWidth), dx + V(width), dx));
 }
 
-
-// The contact law for the pairs in `in` (one, or lanes of four), whose slots start at k: history
-// read from and written to shearX/Y[k..], force and torque arm written to forceX/Y and torqueArm.
+// The contact law Law (ContactLaw.h: HertzLaw or HookeLaw) for the pairs in `in` (one, or lanes of
+// four), whose slots start at k: history read from and written to shearX/Y[k..], force and torque
+// arm written to forceX/Y and torqueArm.
 // Returns, per lane, (radI + radJ - allowed)^2 - r^2, allowed being `overlapRatio` x alarmRadius:
 // positive when a pair overlaps more than that, which is how a blow-up shows between two health
 // checks. Squared, so that it costs no sqrt.
-template <class V>
-inline V evaluatePairs(const PairInputs<V>& in, std::uint32_t k, PairSlots slots, const ContactParams params,
-                       double dt, bool updateShear, double overlapRatio) {
+template <class Law, class V>
+inline V evaluatePairs(const PairInputs<V>& in, std::uint32_t k, PairSlots slots, const ContactParams params, double dt,
+                       bool updateShear, double overlapRatio) {
   using simd::load;
   using simd::store;
   const ContactForceOf<V> c =
-      hertzHistoryContact(params, dt, in.dx, in.dy, in.dvx, in.dvy, in.radI, in.radJ, in.omegaI, in.omegaJ,
+      historyContact<Law>(params, dt, in.dx, in.dy, in.dvx, in.dvy, in.radI, in.radJ, in.omegaI, in.omegaJ,
                           in.invMassSum, load<V>(slots.shearX + k), load<V>(slots.shearY + k), updateShear);
   store(slots.shearX + k, c.shearX);
   store(slots.shearY + k, c.shearY);
@@ -130,11 +130,12 @@ struct PairChunk {
 };
 
 // Evaluates pairs [0, n) of a chunk whose slots start at k0; returns the largest overlap excess.
+template <class Law>
 inline double evaluateChunk(const PairChunk& c, std::uint32_t n, std::uint32_t k0, PairSlots slots,
                             const ContactParams& params, double dt, bool updateShear, double overlapRatio) {
   return maxOverLanes(n, [&](std::uint32_t m, auto lane) {
     using V = decltype(lane);
-    return evaluatePairs(c.inputs<V>(m), k0 + m, slots, params, dt, updateShear, overlapRatio);
+    return evaluatePairs<Law>(c.inputs<V>(m), k0 + m, slots, params, dt, updateShear, overlapRatio);
   });
 }
 

@@ -23,8 +23,7 @@ void requireFinite(double v, const char* what) {
 
 }  // namespace
 
-
-World::World(const WorldDef& def) : def_(def), kernels_(&forceKernels(defaultSimdLevel())) {
+World::World(const WorldDef& def) : def_(def), kernels_(&forceKernels(defaultSimdLevel(), def.contact.law)) {
   requireFinite(def.boxWidth, "box width");
   if (def.boxWidth <= 0) throw Error("box width must be > 0, got " + formatNumber(def.boxWidth));
   if (!(def.dt > 0) || !std::isfinite(def.dt)) throw Error("time step must be > 0, got " + formatNumber(def.dt));
@@ -65,7 +64,7 @@ void addIntruderPairForces(ParticleStore& s, ClumpState& state, const IntruderPa
 double addIntruderContactForces(ParticleStore& s, const ClumpDef& clump, ClumpState& state, IntruderPairs& pairs,
                                 const ContactParams params, double dt, double width, bool updateShear,
                                 double overlapRatio) {
-  const double excess = forceKernels(defaultSimdLevel())
+  const double excess = forceKernels(defaultSimdLevel(), params.law)
                             .intruderPairForces(s, clump, state, pairs, params, dt, width, updateShear, overlapRatio);
   addIntruderPairForces(s, state, pairs);
   return excess;
@@ -202,6 +201,7 @@ void World::setParameters(const WorldDef& def) {
   if (def.boxWidth != def_.boxWidth || def.massModel != def_.massModel || def.density != def_.density)
     throw Error("setParameters: the box width, mass model and density must stay those of the particles");
   def_ = def;
+  kernels_ = &forceKernels(kernels_->level, def.contact.law);
   invalidate();
   prepared_ = false;
 }

@@ -38,7 +38,7 @@ struct WorldDef {
   double referenceImpactSpeed = 1.0;   // the fastest a grain moves without the drive (a fall from the top of the
                                        // pour) [sqrt(g d)]: the time-step check and the speed bound use it
   double maxSpeedFactor = 10.0;        // blow-up: a grain faster than this x max(referenceImpactSpeed, drive's peak)
-  double minStepsPerContact = 5.0;     // refuse dt above (Hertz contact time) / this
+  double minStepsPerContact = 5.0;     // refuse dt above (contact time, contactTime below) / this
 };
 
 // What the blow-up detector has seen so far, at its full scans: the deepest overlap as a fraction of
@@ -55,10 +55,11 @@ class SimulationError : public Error {
   using Error::Error;
 };
 
-// Hertz contact duration of two grains of radius `radius` and mass `mass` colliding head-on at
-// `speed`, with F = kn sqrt(Reff) delta^(3/2) (no damping): t_c = 2.9433 * delta_max / speed,
-// delta_max = (5 meff v^2 / (4 kn sqrt(Reff)))^(2/5), meff = m/2, Reff = r/2.
-double hertzContactTime(double kn, double radius, double mass, double speed);
+// Duration of a head-on contact of two grains of radius `radius` and mass `mass` meeting at `speed`,
+// without damping (damping only lengthens it), meff = m/2, Reff = r/2. Hertz, F = kn sqrt(Reff)
+// delta^(3/2): t_c = 2.9433 delta_max / speed, delta_max = (5 meff v^2 / (4 kn sqrt(Reff)))^(2/5).
+// Hooke, F = kn delta: half a period of the spring, t_c = pi sqrt(meff / kn), whatever the speed.
+double contactTime(const ContactParams& contact, double radius, double mass, double speed);
 
 // The intruder's pair forces (in its pair slots, ForceKernels::intruderPairForces) added to its
 // grains (base particles get none) and summed into the clump's contact force, in list order.
@@ -101,7 +102,7 @@ class World {
   void scaleGrainVelocities(double factor);
   // The force kernels' instruction set (ForceKernels.h; default: the widest the CPU runs). Every
   // level gives the same bits; only the speed differs. Throws if the CPU lacks it.
-  void useSimdLevel(SimdLevel level) { kernels_ = &forceKernels(level); }
+  void useSimdLevel(SimdLevel level) { kernels_ = &forceKernels(level, def_.contact.law); }
 
   // --- stepping ---
   void step();

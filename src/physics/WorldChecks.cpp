@@ -1,5 +1,5 @@
 // What the World checks and reports about itself, apart from the step: the time-step check against
-// the Hertz contact time, the blow-up detector (docs/RELIABILITY.md, section 7), the kinetic energy,
+// the contact time, the blow-up detector (docs/RELIABILITY.md, section 7), the kinetic energy,
 // the state's size and its hash.
 #include <algorithm>
 #include <cmath>
@@ -11,10 +11,14 @@
 
 namespace wiggle {
 
-double hertzContactTime(double kn, double radius, double mass, double speed) {
+double contactTime(const ContactParams& contact, double radius, double mass, double speed) {
   const double meff = 0.5 * mass;
+  switch (contact.law) {
+    case ContactLaw::Hooke: return std::acos(-1.0) * std::sqrt(meff / contact.kn);
+    case ContactLaw::Hertz: break;
+  }
   const double reff = 0.5 * radius;
-  const double k = kn * std::sqrt(reff);
+  const double k = contact.kn * std::sqrt(reff);
   const double deltaMax = std::pow(5.0 * meff * speed * speed / (4.0 * k), 0.4);
   return 2.9433 * deltaMax / speed;
 }
@@ -45,12 +49,14 @@ void World::checkTimeStep() const {
   for (std::uint32_t i = 1; i < s.grainCount; ++i)
     if (s.mass[i] < s.mass[lightest]) lightest = i;
   const double speed = std::max(def_.referenceImpactSpeed, peakDriveSpeed());
-  const double contactTime = hertzContactTime(def_.contact.kn, s.radius[lightest], s.mass[lightest], speed);
-  const double limit = contactTime / def_.minStepsPerContact;
+  const double duration = contactTime(def_.contact, s.radius[lightest], s.mass[lightest], speed);
+  const double limit = duration / def_.minStepsPerContact;
   if (def_.dt > limit)
-    throw Error("run.dt = " + formatNumber(def_.dt) + " is too large: a Hertz contact between the lightest grains (d = " +
-                formatNumber(2 * s.radius[lightest]) + ") at impact speed " + formatNumber(speed) + " lasts " + formatNumber(contactTime) +
-                ", which needs dt <= " + formatNumber(limit) + " (" + formatNumber(def_.minStepsPerContact) + " steps per contact)");
+    throw Error(
+        "run.dt = " + formatNumber(def_.dt) + " is too large: a " + std::string(contactLawName(def_.contact.law)) +
+        " contact between the lightest grains (d = " + formatNumber(2 * s.radius[lightest]) + ") at impact speed " +
+        formatNumber(speed) + " lasts " + formatNumber(duration) + ", which needs dt <= " + formatNumber(limit) + " (" +
+        formatNumber(def_.minStepsPerContact) + " steps per contact)");
 }
 
 // The full scan of the blow-up detector (docs/RELIABILITY.md, "The blow-up detector"). Each bound

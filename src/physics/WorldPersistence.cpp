@@ -12,6 +12,11 @@
 
 namespace wiggle {
 
+// The state format version (io/StateFile.h) that added the contact law after mu; older files hold
+// Hertz worlds. (The physics floor does not include io: the number is restated here, and a
+// round-trip test of a version-2 payload keeps the two in step.)
+constexpr std::uint32_t kFirstFormatWithLaw = 3;
+
 void World::save(BinaryWriter& out) const {
   out.value(def_.boxWidth);
   out.value(def_.dt);
@@ -23,6 +28,7 @@ void World::save(BinaryWriter& out) const {
   out.value(def_.contact.gammaN);
   out.value(def_.contact.gammaT);
   out.value(def_.contact.mu);
+  out.value(def_.contact.law);
   out.value(def_.skin);
   out.value(def_.intruderSkin);
   out.value(def_.sortInterval);
@@ -104,6 +110,12 @@ WorldDef readDef(BinaryReader& in) {
   def.contact.gammaN = in.value<double>();
   def.contact.gammaT = in.value<double>();
   def.contact.mu = in.value<double>();
+  if (in.formatVersion() >= kFirstFormatWithLaw) {
+    const auto law = in.value<ContactLaw>();
+    if (static_cast<std::size_t>(law) >= kContactLawNames.size())
+      throw Error(in.what() + " is corrupt: unknown contact law");
+    def.contact.law = law;
+  }
   def.skin = in.value<double>();
   def.intruderSkin = in.value<double>();
   def.sortInterval = in.value<std::uint64_t>();

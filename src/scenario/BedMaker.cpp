@@ -67,7 +67,9 @@ std::string pouredBedKey(const RunConfig& c, const ClumpDef& clump) {
   const bool intruder = !clump.offsetX.empty();
   Hasher h;
   h.addValue(kBedFormat);
-  h.addValue(kStateFormatVersion);
+  // The oldest state format this wiggle reads: a bed written in any format it reads keeps its key,
+  // and the keys change (so that no bed is refused) only when that oldest format is dropped.
+  h.addValue(kOldestStateFormatVersion);
   for (double v : {c.box.width, c.box.bedHeight, c.grains.dMin, c.grains.dMax, c.contact.kn, c.contact.kt,
                    c.contact.gammaN, c.contact.gammaT, c.contact.mu, intruder ? c.intruder.y0 : 0.0,
                    c.bed.batchHeight, c.bed.settleSpeed, c.bed.restEnergy, c.run.dt, c.engine.skin,
@@ -89,6 +91,10 @@ std::string pouredBedKey(const RunConfig& c, const ClumpDef& clump) {
   if (c.bed.relaxDamping > 0) {  // likewise: an undamped bed keeps its key
     h.addBytes("relax_damping", 13);
     h.addValue(c.bed.relaxDamping);
+  }
+  if (c.contact.law != ContactLaw::Hertz) {  // likewise: a Hertz bed keeps its key
+    h.addBytes("law", 3);
+    h.addValue(c.contact.law);
   }
   if (!intruder) h.addBytes("no intruder", 11);
   return h.hex();
@@ -157,8 +163,8 @@ struct PartialBed {
 };
 
 PartialBed parsePartialBed(const std::string& file, const std::string& name, const std::string& key) {
-  const std::string payload = parseStateFile(file, name, "bed-partial");
-  BinaryReader in(payload.data(), payload.size(), name);
+  const StatePayload payload = parseStateFile(file, name, "bed-partial");
+  BinaryReader in(payload.bytes.data(), payload.bytes.size(), name, payload.version);
   if (in.string() != key) throw Error(name + " holds a bed for other parameters");
   const auto stage = in.value<BedStage>();
   if (stage != BedStage::Settling && stage != BedStage::Relaxing) throw Error(name + " has an unknown stage");
@@ -397,8 +403,8 @@ struct BedFile {
 };
 
 BedFile readBedFile(const std::string& file, const std::string& name) {
-  const std::string payload = parseStateFile(file, name, "bed");
-  BinaryReader in(payload.data(), payload.size(), name);
+  const StatePayload payload = parseStateFile(file, name, "bed");
+  BinaryReader in(payload.bytes.data(), payload.bytes.size(), name, payload.version);
   std::string key = in.string();
   World world = World::load(in);
   if (!in.atEnd()) throw Error(name + " has trailing data");

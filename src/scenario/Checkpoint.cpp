@@ -75,8 +75,8 @@ std::string whyStoredRunCannotContinue(const std::string& stored, const std::str
 
 Checkpoint parseCheckpoint(const std::string& file, const std::string& name, const RunConfig& config,
                            const std::string& configToml) {
-  const std::string payload = parseStateFile(file, name, "checkpoint");
-  BinaryReader in(payload.data(), payload.size(), name);
+  const StatePayload payload = parseStateFile(file, name, "checkpoint");
+  BinaryReader in(payload.bytes.data(), payload.bytes.size(), name, payload.version);
   // The same config, read back: a checkpoint written before a key was added (and so without it)
   // holds that key's default, and stays valid as long as the run does not change it.
   const std::string stored = in.string();

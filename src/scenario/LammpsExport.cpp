@@ -138,8 +138,8 @@ std::string lammpsInput(const World& world, const RunConfig& config, const RunSc
   if (disc) in += "set group grains density/disc " + num(def.density) + "\nset group base density/disc " + num(def.density) + "\n";
   in += "# Every intruder atom carries the clump's total mass M: meff = m M / (m + M) as in wiggle.\n";
   in += "set group intruder mass " + num(clump.mass) + "\n\n";
-  in += "pair_style gran/hertz/history " + num(p.kn) + " " + num(p.kt) + " " + num(p.gammaN) + " " + num(p.gammaT) +
-        " " + num(p.mu) + " 1\n";
+  in += "pair_style gran/" + std::string(contactLawName(p.law)) + "/history " + num(p.kn) + " " + num(p.kt) + " " +
+        num(p.gammaN) + " " + num(p.gammaT) + " " + num(p.mu) + " 1\n";
   in += "pair_coeff * *\n";
   in += "neighbor " + num(def.skin) + " bin\n";
   in += "neigh_modify delay 0 every 1 check yes\n";

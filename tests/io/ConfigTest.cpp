@@ -18,6 +18,7 @@
 #include <sstream>
 
 #include "core/Error.h"
+#include "support/TestSupport.h"
 
 namespace wiggle {
 namespace {
@@ -45,6 +46,7 @@ std::vector<std::string> differingFields(const RunConfig& a, const RunConfig& b)
   num("contact.gammaN", a.contact.gammaN, b.contact.gammaN);
   num("contact.gammaT", a.contact.gammaT, b.contact.gammaT);
   num("contact.mu", a.contact.mu, b.contact.mu);
+  other("contact.law", a.contact.law == b.contact.law);
   other("intruder.shape", a.intruder.shape == b.intruder.shape);
   bool sameVertices = a.intruder.vertices.size() == b.intruder.vertices.size();
   for (std::size_t i = 0; sameVertices && i < a.intruder.vertices.size(); ++i) {
@@ -110,6 +112,7 @@ const std::vector<std::tuple<std::string, std::string, std::string>>& everyKey()
       {"contact.gamma_n", "100", "contact.gammaN"},
       {"contact.gamma_t", "200", "contact.gammaT"},
       {"contact.mu", "0.5", "contact.mu"},
+      {"contact.law", "hooke", "contact.law"},
       {"intruder.shape", "triangle", "intruder.shape"},
       {"intruder.vertices", "[[0,0],[4,0],[0,3]]", "intruder.vertices"},
       {"intruder.angle", "30", "intruder.angle"},
@@ -153,14 +156,7 @@ const std::vector<std::tuple<std::string, std::string, std::string>>& everyKey()
   return keys;
 }
 
-std::string errorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+using testing_support::errorOf;
 
 std::string parseError(const std::string& toml) {
   return errorOf([&] { parseRunConfig(toml, "config.toml"); });
@@ -170,7 +166,7 @@ TEST(Config, KeyListIsExactlyTheSpecKeys) {
   std::set<std::string> expected;
   for (const auto& [key, value, field] : everyKey()) expected.insert(key);
   const std::vector<std::string> keys = configKeys();
-  EXPECT_EQ(keys.size(), 50u);
+  EXPECT_EQ(keys.size(), 51u);
   EXPECT_EQ(std::set<std::string>(keys.begin(), keys.end()), expected);
 }
 
@@ -327,6 +323,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"[drive]\nform = \"velocity\"\nramp_periods = 2\n",
                 "drive.ramp_periods = 2: only with drive.form = \"displacement\""},
         BadCase{"[drive]\nform = \"speed\"\n", "drive.form"},
+        BadCase{"[contact]\nlaw = \"linear\"\n", "contact.law"},
         BadCase{"[drive]\nperiod = 5.00005\n", "drive.period = 5.00005: must be a whole number of run.dt steps"},
         BadCase{"[drive]\nperiod = 0.00005\n", "drive.period = 0.00005: must be a whole number of run.dt steps"},
         BadCase{"[run]\ndt = 0\n", "run.dt = 0: must be > 0"},

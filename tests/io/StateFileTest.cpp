@@ -37,7 +37,9 @@ std::string refusal(const std::string& file, const std::string& kind = "checkpoi
 
 TEST(StateFile, RoundTripsItsPayload) {
   const std::string file = sampleFile();
-  EXPECT_EQ(parseStateFile(file, "f.bin", "checkpoint").size(), 200u);
+  const StatePayload payload = parseStateFile(file, "f.bin", "checkpoint");
+  EXPECT_EQ(payload.bytes.size(), 200u);
+  EXPECT_EQ(payload.version, kStateFormatVersion);
   EXPECT_EQ(refusal(file), "");
 }
 
@@ -65,20 +67,34 @@ TEST(StateFile, EverySingleBitFlipIsRefused) {
   EXPECT_EQ(flips, static_cast<int>(8 * file.size()));
 }
 
+// The file with another format version written in, and its checksum made right again.
+std::string withVersion(std::string file, std::uint32_t version) {
+  std::memcpy(file.data() + 24, &version, sizeof version);
+  Hasher h;
+  h.addBytes(file.data(), file.size() - 8);
+  const std::uint64_t sum = h.value();
+  std::memcpy(file.data() + file.size() - 8, &sum, sizeof sum);
+  return file;
+}
+
 TEST(StateFile, ForeignKindsAndOtherVersionsAreRefused) {
   const std::string file = sampleFile();
   EXPECT_NE(refusal(file, "bed").find("not a wiggle bed file"), std::string::npos);
   EXPECT_NE(refusal("#!/bin/sh\necho hello\n").find("not a wiggle state file"), std::string::npos);
-  // Another format version with a correct checksum: refused by version, not by checksum.
-  std::string other = file;
-  const std::uint32_t version = kStateFormatVersion + 1;
-  std::memcpy(other.data() + 24, &version, sizeof version);
-  Hasher h;
-  h.addBytes(other.data(), other.size() - 8);
-  const std::uint64_t sum = h.value();
-  std::memcpy(other.data() + other.size() - 8, &sum, sizeof sum);
-  EXPECT_NE(refusal(other).find("was written by state format version " + std::to_string(version)), std::string::npos)
-      << refusal(other);
+  // Versions outside the range read, with a correct checksum: refused by version, not by checksum.
+  for (const std::uint32_t version : {kStateFormatVersion + 1, kOldestStateFormatVersion - 1}) {
+    const std::string other = withVersion(file, version);
+    EXPECT_NE(refusal(other).find("was written by state format version " + std::to_string(version)), std::string::npos)
+        << refusal(other);
+  }
+}
+
+TEST(StateFile, OlderVersionsStillReadAreReadWithTheirVersion) {
+  for (std::uint32_t version = kOldestStateFormatVersion; version <= kStateFormatVersion; ++version) {
+    const StatePayload payload = parseStateFile(withVersion(sampleFile(), version), "f.bin", "checkpoint");
+    EXPECT_EQ(payload.version, version);
+    EXPECT_EQ(payload.bytes.size(), 200u);
+  }
 }
 
 }  // namespace

@@ -13,18 +13,12 @@
 
 #include "core/Error.h"
 #include "io/Config.h"
+#include "support/TestSupport.h"
 
 namespace wiggle {
 namespace {
 
-std::string errorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+using testing_support::errorOf;
 
 std::string sweepError(const std::string& text) {
   return errorOf([&] { parseSweepSpec(text, "sweep.toml"); });

@@ -71,6 +71,7 @@ World buildWorld(const json& c, Built& b, int velocityUlps = 0) {
   def.massModel = c["mass_model"] == "sphere" ? MassModel::Sphere : MassModel::Disc;
   const json& k = c["contact"];
   def.contact = ContactParams{k["kn"], k["kt"], k["gamma_n"], k["gamma_t"], k["mu"]};
+  def.contact.law = contactLawNamed(k.value("law", "hertz")).value();
   World w(def);
   auto nudge = [velocityUlps](double v) {
     for (int u = 0; u < velocityUlps; ++u) v = std::nextafter(v, 1e300);
@@ -137,7 +138,8 @@ AtomState atomState(const World& w, const Built& b, const std::vector<std::uint3
           i >= p.grainCount, false};
 }
 
-// LAMMPS PairGranHertzHistory::single() (29 Sep 2021) in 2D: the shear force on atom 1 from the
+// LAMMPS PairGranHertzHistory::single() and PairGranHookeHistory::single() (29 Sep 2021) in 2D
+// (the same but for Hertz's factor polyhertz): the shear force on atom 1 from the
 // stored history (shearX, shearY in atom 1's frame) and the current velocities, capped at mu |Fn|
 // without touching the history. Returns {ccel r, fs1, fs2}: the normal force (ccel r, as compute
 // pair/local's `force` output) and the shear force on atom 1.
@@ -162,7 +164,7 @@ SingleOut lammpsSingle(const ContactParams& p, double width, const AtomState& a,
   if (b.frozen) meff = a.mass;
   const double damp = meff * p.gammaN * vnnr * rsqinv;
   double ccel = p.kn * (radsum - r) * rinv - damp;
-  const double polyhertz = std::sqrt((radsum - r) * a.radius * b.radius / radsum);
+  const double polyhertz = p.law == ContactLaw::Hertz ? std::sqrt((radsum - r) * a.radius * b.radius / radsum) : 1.0;
   ccel *= polyhertz;
   const double vtr1 = vt1 + dely * wr3, vtr2 = vt2 - delx * wr3;
   const double shrmag = std::sqrt(shearX * shearX + shearY * shearY);
@@ -421,6 +423,20 @@ TEST(LammpsComparison, RigidClumpPushesGrains) {
   checkAndReport("clump", cmp);
   EXPECT_GT(cmp.contactsCompared, 50);
   EXPECT_GT(cmp.clumpYTravel, 0.05);  // the clump really moves vertically
+}
+
+// The second law (contact.law = "hooke", LAMMPS's gran/hooke/history) on the pile and the clump.
+TEST(LammpsComparison, PolydispersePileSettlesUnderHooke) {
+  const Comparison cmp = compareCase("pile_hooke");
+  checkAndReport("pile_hooke", cmp);
+  EXPECT_GT(cmp.contactsCompared, 50);
+}
+
+TEST(LammpsComparison, RigidClumpPushesGrainsUnderHooke) {
+  const Comparison cmp = compareCase("clump_hooke");
+  checkAndReport("clump_hooke", cmp);
+  EXPECT_GT(cmp.contactsCompared, 50);
+  EXPECT_GT(cmp.clumpYTravel, 0.05);
 }
 
 }  // namespace

@@ -1,7 +1,8 @@
 // The contact law in SIMD lanes gives the scalar law's bits (ARCHITECTURE.md's claim, on which
 // determinism across builds and the LAMMPS comparisons rest), on pairs chosen to take every branch:
 // apart, grazing, deep, sticking, slipping past the Coulomb cap, a capped pair with no history,
-// zero history, a frozen partner, and random pairs around contact.
+// zero history, a frozen partner, and random pairs around contact; for both laws (ContactLaw.h). And
+// the two laws against their formulas on a head-on pair.
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -67,7 +68,8 @@ void expectSameBits(const std::vector<double>& a, const std::vector<double>& b, 
         << what << " of pair " << k << ": " << a[k] << " vs " << b[k];
 }
 
-TEST(PairKernel, LanesGiveTheScalarLawsBitsOnAdversarialPairs) {
+template <class Law>
+void expectLanesGiveScalarBits() {
 #if !WIGGLE_SIMD_DOUBLE4
   GTEST_SKIP() << "this build has no SIMD lanes: only the scalar law runs";
 #else
@@ -82,13 +84,13 @@ TEST(PairKernel, LanesGiveTheScalarLawsBitsOnAdversarialPairs) {
       params.mu = mu;
       Slots scalar(cases);
       for (std::uint32_t k = 0; k < n; ++k)
-        scalar.excess[k] = evaluatePairs(cases[k].in, k, scalar.view(), params, 1e-4, updateShear, 1.0);
+        scalar.excess[k] = evaluatePairs<Law>(cases[k].in, k, scalar.view(), params, 1e-4, updateShear, 1.0);
       auto compareLanes = [&](auto lane) {
         using V = decltype(lane);
         Slots lanes(cases);
         for (std::uint32_t m = 0; m < n; m += V::kLanes)
           simd::store(lanes.excess.data() + m,
-                      evaluatePairs(chunk.inputs<V>(m), m, lanes.view(), params, 1e-4, updateShear, 1.0));
+                      evaluatePairs<Law>(chunk.inputs<V>(m), m, lanes.view(), params, 1e-4, updateShear, 1.0));
         SCOPED_TRACE(testing::Message() << V::kLanes << " lanes, updateShear " << updateShear << ", mu " << mu);
         expectSameBits(scalar.forceX, lanes.forceX, "forceX");
         expectSameBits(scalar.forceY, lanes.forceY, "forceY");
@@ -104,11 +106,36 @@ TEST(PairKernel, LanesGiveTheScalarLawsBitsOnAdversarialPairs) {
     }
   // The cases do take the branches they are named for (the law is not trivially equal).
   Slots s(cases);
-  for (std::uint32_t k = 0; k < n; ++k) evaluatePairs(cases[k].in, k, s.view(), ContactParams{}, 1e-4, true, 1.0);
+  for (std::uint32_t k = 0; k < n; ++k) evaluatePairs<Law>(cases[k].in, k, s.view(), ContactParams{}, 1e-4, true, 1.0);
   EXPECT_EQ(s.forceX[0], 0.0);  // apart
   EXPECT_EQ(s.shearX[0], 0.0);  // history dropped
   EXPECT_NE(s.forceX[2], 0.0);  // deep
 #endif
+}
+
+TEST(PairKernel, LanesGiveTheScalarLawsBitsOnAdversarialPairs) { expectLanesGiveScalarBits<HertzLaw>(); }
+TEST(PairKernel, LanesGiveTheScalarLawsBitsOnAdversarialPairsForHooke) { expectLanesGiveScalarBits<HookeLaw>(); }
+
+// Head-on, i to the right of j, overlapping by delta and approaching at speed u, no spin, no
+// history: the normal force on i is kn delta + meff gammaN u for Hooke and sqrt(delta Reff) times
+// that for Hertz (LAMMPS's gran/hooke/history and gran/hertz/history), and the tangential force
+// is zero. An independent reading of the formulas the kernels compose.
+TEST(PairKernel, HeadOnForceIsEachLawsFormula) {
+  const double ri = 0.5, rj = 0.45, delta = 2e-3, u = 0.7, mi = 0.5, mj = 0.6;
+  const double r = ri + rj - delta, meff = mi * mj / (mi + mj), reff = ri * rj / (ri + rj);
+  const ContactParams p;
+  const double hooke = p.kn * delta + meff * p.gammaN * u;
+  auto force = [&](auto law) {
+    using Law = decltype(law);
+    return historyContact<Law>(p, 1e-4, r, 0.0, -u, 0.0, ri, rj, 0.0, 0.0, 1 / mi + 1 / mj, 0.0, 0.0, true);
+  };
+  const ContactForce h = force(HookeLaw{}), z = force(HertzLaw{});
+  EXPECT_NEAR(h.fx, hooke, 1e-12 * hooke);
+  EXPECT_NEAR(z.fx, std::sqrt(delta * reff) * hooke, 1e-12 * hooke);
+  for (const ContactForce& c : {h, z}) {
+    EXPECT_EQ(c.fy, 0.0);
+    EXPECT_EQ(c.torqueArm, 0.0);
+  }
 }
 
 }  // namespace

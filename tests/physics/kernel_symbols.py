@@ -34,7 +34,7 @@ def main(args):
     bad = []
     for arg in args:
         name, obj = arg.split("=", 1)
-        table, own = f"wiggle::forceKernels_{name}()", f"wiggle::{NAMESPACE[name]}::"
+        table, own = f"wiggle::forceKernels_{name}(wiggle::ContactLaw)", f"wiggle::{NAMESPACE[name]}::"
         symbols = list(exported(obj))
         if table not in symbols:
             bad.append(f"{name}: its table function {table} is missing from {obj}")

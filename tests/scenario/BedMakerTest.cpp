@@ -129,7 +129,7 @@ TEST(BedMaker, RandomBatchIsAPureFunctionOfSeedAndSerial) {
 
 TEST(BedMaker, LatticeBedKeyIsUnchangedAndRandomKeysDiffer) {
   // The keys these configs had before bed.pour existed (made by the code of that time). They
-  // change only on purpose: a new bed format (kBedFormat, kStateFormatVersion) or a new clump.
+  // change only on purpose: a new bed format (kBedFormat, kOldestStateFormatVersion) or a new clump.
   const RunConfig defaults = loadRunConfig(std::nullopt, {});
   const RunConfig tiny = loadRunConfig(
       std::nullopt, {"box.width=12", "box.bed_height=8", "intruder.shape=polygon",
@@ -164,6 +164,11 @@ TEST(BedMaker, LatticeBedKeyIsUnchangedAndRandomKeysDiffer) {
   EXPECT_NE(dampedKey, "b8ece11933d4975e");
   damped.bed.relaxDamping = 1.0;
   EXPECT_NE(bedKey(damped, disk), dampedKey);
+  // The contact law: Hertz (the default) keeps the key, Hooke has its own.
+  RunConfig hooke = defaults;
+  hooke.contact.law = ContactLaw::Hooke;
+  EXPECT_NE(bedKey(hooke, disk), "b8ece11933d4975e");
+  EXPECT_NE(baseBedKey(hooke), baseBedKey(defaults));
 }
 
 std::string scratch(const std::string& name) {

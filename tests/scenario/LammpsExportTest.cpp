@@ -20,6 +20,7 @@
 #include "scenario/BedMaker.h"
 #include "scenario/Experiment.h"
 #include "scenario/Shape.h"
+#include "support/TestSupport.h"
 
 namespace wiggle {
 namespace {
@@ -162,6 +163,14 @@ TEST(LammpsExport, DeckHoldsTheCaseParameters) {
   EXPECT_NE(inRamp.find("variable ramp equal 4\n"), std::string::npos);
   EXPECT_NE(inRamp.find("variable dx equal 3*v_s*sin(v_w*(step*dt))\n"), std::string::npos);
   EXPECT_EQ(in.find("v_s"), std::string::npos);  // the plain drive has no ramp (docs/PHYSICS.md §7)
+
+  World hooke = smallWorld(MassModel::Sphere);  // the deck takes the law from the world it exports
+  WorldDef def = hooke.def();
+  def.contact.law = ContactLaw::Hooke;
+  hooke.setParameters(def);
+  const std::string inHooke = makeLammpsDeck(hooke, prepareCase(config)).input;
+  EXPECT_NE(inHooke.find("pair_style gran/hooke/history 2000000 2460000 2500 2500 0.10000000000000001 1\n"),
+            std::string::npos);
 }
 
 TEST(LammpsExport, RefusesAWorldNotAtTheStartOfADrivenRun) {
@@ -273,15 +282,16 @@ bool haveLammps() { return std::system("command -v lmp > /dev/null 2>&1") == 0; 
 // Exports a tiny bed (about 220 grains around the 7-wide disk, made once and cached under the
 // test's temporary directory) with drive.ramp_periods = `rampPeriods`, runs the deck in LAMMPS for
 // 2,000 steps (t = 0.2) of the drive at A = 3, T = 2 and compares its intruder with wiggle's.
-void expectLammpsFollowsWiggle(const std::string& rampPeriods, const std::string& form = "displacement") {
-  const fs::path root = fs::path(testing::TempDir()) / "wiggle-lammps-export";
-  fs::create_directories(root);
+void expectLammpsFollowsWiggle(const std::string& rampPeriods, const std::string& form = "displacement",
+                               const std::string& law = "hertz") {
+  const testing_support::ScratchDir scratch("lammps-export");  // WIGGLE_KEEP_TEST_DIRS=1 keeps LAMMPS's log
+  const fs::path& root = scratch.path();
   RunConfig config = loadRunConfig(
       std::nullopt, {"box.width=20", "box.bed_height=14", "box.seed=7", "intruder.y0=7", "drive.amplitude=3",
-                     "drive.period=2", "drive.ramp_periods=" + rampPeriods, "drive.form=" + form, "run.duration=0.2",
-                     "run.sample_interval=0.01", "run.dump_interval=0", "bed.rest_energy=1e-6"});
+                     "drive.period=2", "drive.ramp_periods=" + rampPeriods, "drive.form=" + form, "contact.law=" + law,
+                     "run.duration=0.2", "run.sample_interval=0.01", "run.dump_interval=0", "bed.rest_energy=1e-6"});
   config.bed.cacheDir = (root / "cache").string();
-  const std::string dir = (root / ("deck-ramp" + rampPeriods + "-" + form)).string();
+  const std::string dir = (root / ("deck-ramp" + rampPeriods + "-" + form + "-" + law)).string();
   fs::remove_all(dir);
   const LammpsExportResult exported = exportLammps(prepareCase(config), dir, false);
   ASSERT_EQ(exported.deck.steps, 2000u);
@@ -349,6 +359,11 @@ TEST(LammpsExport, SlowLammpsRunOfARampedDriveFollowsWiggle) {
 TEST(LammpsExport, SlowLammpsRunOfAVelocityDriveFollowsWiggle) {
   if (!haveLammps()) GTEST_SKIP() << "lmp (LAMMPS) not found: apt-get install lammps to run this comparison";
   expectLammpsFollowsWiggle("0", "velocity");  // vx = 3 sin(pi t): the deck's fix move variable
+}
+
+TEST(LammpsExport, SlowLammpsRunOfAHookeBedFollowsWiggle) {
+  if (!haveLammps()) GTEST_SKIP() << "lmp (LAMMPS) not found: apt-get install lammps to run this comparison";
+  expectLammpsFollowsWiggle("0", "displacement", "hooke");  // a bed poured and driven under gran/hooke/history
 }
 
 }  // namespace
