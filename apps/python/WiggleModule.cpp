@@ -46,18 +46,40 @@ std::vector<std::string> overridesOf(const py::dict& overrides) {
 
 class PyCase {
  public:
-  PyCase(const std::optional<std::string>& configPath, const py::dict& overrides, int threads)
+  PyCase(const std::optional<std::string>& configPath, const py::dict& overrides, int threads,
+         const std::optional<py::function>& drive, double peakSpeed)
       : run_(prepareCase(loadRunConfig(configPath, overridesOf(overrides)))), threads_(threads) {
     CachedBed bed = startRun(run_);
     bedPath_ = bed.path;
     world_.emplace(std::move(bed.world));
+    if (drive) installDrive(*drive, peakSpeed);
     world_->evaluateForces();  // the start's forces, as `wiggle run` evaluates them before its first step
   }
 
   void step(std::uint64_t n) {
-    py::gil_scoped_release release;
-    if (threads_ > 0) omp_set_num_threads(threads_);
-    world_->run(n);
+    if (failed_) throw Error("this case stopped inside a step that failed (" + *failed_ + "): make a new Case");
+    try {
+      py::gil_scoped_release release;
+      if (threads_ > 0) omp_set_num_threads(threads_);
+      world_->run(n);
+    } catch (const py::error_already_set& e) {
+      failed_ = "its drive raised " + std::string(e.what());
+      throw;
+    } catch (const std::exception& e) {
+      failed_ = e.what();  // a step left half done (a drive's bad value, a blow-up): no step after it
+      throw;
+    }
+  }
+
+  // The intruder's x driven by a Python function from now on: drive(t) -> (dx, vx), the displacement
+  // from the drive's centre x0 [d] and the velocity [sqrt(g d)], called once per step (serially,
+  // with the GIL) before the forces; peak_speed bounds |vx| (the time-step check and the blow-up
+  // detector use it, and a larger |vx| stops the step with an error). Its vertical motion stays as
+  // it was (free in a run). The forces are evaluated afresh (the neighbour lists rebuilt), so a
+  // drive set after the start is not bitwise the same case as one given to the constructor.
+  void setDrive(const py::function& drive, double peakSpeed) {
+    installDrive(drive, peakSpeed);
+    world_->evaluateForces();
   }
 
   // Steps to the last step at or before time t (t on the step grid: t / dt rounded).
@@ -80,10 +102,26 @@ class PyCase {
   const std::string& bedPath() const { return bedPath_; }
 
  private:
+  void installDrive(const py::function& drive, double peakSpeed) {
+    wiggle::ClumpMotion motion = world_->intruderMotion();
+    motion.kind = wiggle::HorizontalMotion::Prescribed;
+    motion.peakSpeed = peakSpeed;
+    // The function is kept alive by this Case (drive_), so the engine holds a borrowed pointer.
+    motion.prescribed = [fn = drive.ptr()](double t) {
+      py::gil_scoped_acquire gil;
+      const auto r = py::reinterpret_borrow<py::function>(fn)(t).cast<std::pair<double, double>>();
+      return wiggle::ClumpMotion::Position{r.first, r.second};
+    };
+    world_->setIntruderMotion(motion);  // checks peak_speed; places the intruder at the current t
+    drive_ = drive;
+  }
+
   Case run_;
   int threads_;
   std::optional<World> world_;
   std::string bedPath_;
+  py::object drive_;                   // a Python drive (setDrive), alive as long as the world calls it
+  std::optional<std::string> failed_;  // why the last step failed
 };
 
 }  // namespace
@@ -104,12 +142,19 @@ PYBIND11_MODULE(wiggle, m) {
 
   py::class_<PyCase> cls(m, "Case",
                          "One case, as `wiggle run` makes it: its bed (cached or made), the drive on, t = 0.");
-  cls.def(py::init<const std::optional<std::string>&, const py::dict&, int>(), py::arg("config_path") = py::none(),
-          py::arg("overrides") = py::dict(), py::arg("threads") = 0,
+  cls.def(py::init<const std::optional<std::string>&, const py::dict&, int, const std::optional<py::function>&,
+                   double>(),
+          py::arg("config_path") = py::none(), py::arg("overrides") = py::dict(), py::arg("threads") = 0,
+          py::arg("drive") = py::none(), py::arg("peak_speed") = 0.0,
           "config_path: a run config (None: the defaults); overrides: {\"drive.period\": 2.0, ...} as --set; "
-          "threads: OpenMP threads while stepping (0: as the environment says)")
+          "threads: OpenMP threads while stepping (0: as the environment says); drive, peak_speed: the "
+          "intruder's x driven by drive(t) -> (dx, vx) from t = 0 instead of the config's drive (see set_drive)")
       .def("step", &PyCase::step, py::arg("n") = 1, "Advance n steps (the GIL is released meanwhile)")
       .def("advance", &PyCase::advance, py::arg("t"), "Step to time t [sqrt(d/g)]")
+      .def("set_drive", &PyCase::setDrive, py::arg("drive"), py::arg("peak_speed"),
+           "Drive the intruder's x by drive(t) -> (dx, vx) from now on (dx from the drive's centre [d], vx "
+           "[sqrt(g d)]), called once per step; peak_speed [sqrt(g d)] bounds |vx|. A case with such a drive "
+           "cannot be checkpointed.")
       .def(
           "state_hash", [](const PyCase& c) { return c.world().stateHash(); },
           "The hash of the whole dynamic state, as summary.json's state_hash")

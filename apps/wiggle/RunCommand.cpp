@@ -34,15 +34,16 @@ struct RunArgs {
 // `run --check`: everything `wiggle run` checks before it starts (the config, the outline, the
 // clump, the geometry, the output directory), then what the run would be, without running it.
 void printCheck(const RunConfig& c, const std::string& out, bool resume) {
-  const ClumpDef clump = prepareCase(c).clump;
+  const Case run = prepareCase(c);
+  const ClumpDef& clump = run.clump;
   const std::string key = bedKey(c, clump);
   const std::string bedPath = bedCachePath(c, key);
   const SpeedBasis speed = speedBasis(c);
   const double ns = speed.ns;
-  const auto steps = static_cast<std::uint64_t>(std::llround(c.run.duration / c.run.dt));
+  const std::uint64_t steps = run.steps.total;
   std::printf("config ok: %s intruder at y0 = %g (%g d below the surface), A = %g, T = %g, mu = %g\n",
-              c.intruder.shape.c_str(), c.intruder.y0, c.box.bedHeight - c.intruder.y0, c.drive.amplitude,
-              c.drive.period, c.contact.mu);
+              std::string(choiceName(c.intruder.shape)).c_str(), c.intruder.y0, c.box.bedHeight - c.intruder.y0,
+              c.drive.amplitude, c.drive.period, c.contact.mu);
   std::printf("bed: %g x %g d, about %.0f grains (estimate), %zu intruder atoms, mass %g\n", c.box.width,
               c.box.bedHeight, estimatedGrains(c), clump.offsetX.size(), clump.mass);
   if (!c.bed.file.empty())
@@ -50,7 +51,7 @@ void printCheck(const RunConfig& c, const std::string& out, bool resume) {
                 std::filesystem::is_regular_file(c.bed.file) ? "checked when the run starts" : "no such file");
   else if (std::filesystem::exists(bedPath))
     std::printf("bed %s: cached (%s)\n", key.c_str(), bedPath.c_str());
-  else if (c.bed.cavity == "carved") {
+  else if (c.bed.cavity == BedCavity::Carved) {
     const bool baseCached = std::filesystem::exists(bedCachePath(c, baseBedKey(c)));
     std::printf("bed %s: not cached; carved from base bed %s (%s), about %s on one core (estimate)\n", key.c_str(),
                 baseBedKey(c).c_str(), baseCached ? "cached" : "not cached: poured first",

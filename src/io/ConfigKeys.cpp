@@ -81,20 +81,16 @@ const std::vector<KeyInfo>& keyTable() {
       number("grains.d_max", [](C& c) -> double& { return c.grains.dMax; }, above(0), noBound, "d",
              "largest grain diameter; >= d_min"),
       choice(
-          "grains.mass_model", {"sphere", "disc"},
-          [](const C& c) -> std::string {
-            return c.grains.massModel == MassModel::Sphere ? "sphere" : "disc";
-          },
-          [](C& c, const std::string& v) {
-            c.grains.massModel = v == "sphere" ? MassModel::Sphere : MassModel::Disc;
-          },
+          "grains.mass_model", choiceNameList<MassModel>(),
+          [](const C& c) -> std::string { return std::string(choiceName(c.grains.massModel)); },
+          [](C& c, const std::string& v) { c.grains.massModel = *choiceNamed<MassModel>(v); },
           "grain mass and inertia: sphere m = (4/3) pi r^3, I = (2/5) m r^2; "
           "disc m = pi r^2, I = (1/2) m r^2"),
       // [contact]
       choice(
-          "contact.law", {kContactLawNames.begin(), kContactLawNames.end()},
-          [](const C& c) -> std::string { return std::string(contactLawName(c.contact.law)); },
-          [](C& c, const std::string& v) { c.contact.law = *contactLawNamed(v); },
+          "contact.law", choiceNameList<ContactLaw>(),
+          [](const C& c) -> std::string { return std::string(choiceName(c.contact.law)); },
+          [](C& c, const std::string& v) { c.contact.law = *choiceNamed<ContactLaw>(v); },
           "the force law of every contact: hertz = LAMMPS's gran/hertz/history, the paper's; hooke = "
           "gran/hooke/history, the same law without its sqrt(overlap Reff) factor (a linear spring-dashpot; "
           "kn and kt are then forces per length, m g / d; docs/PHYSICS.md section 4)"),
@@ -110,8 +106,9 @@ const std::vector<KeyInfo>& keyTable() {
              "Coulomb friction coefficient"),
       // [intruder]
       choice(
-          "intruder.shape", {"disk", "square", "rect_narrow", "rect_wide", "triangle", "polygon"},
-          [](C& c) -> std::string& { return c.intruder.shape; },
+          "intruder.shape", choiceNameList<ShapeName>(),
+          [](const C& c) -> std::string { return std::string(choiceName(c.intruder.shape)); },
+          [](C& c, const std::string& v) { c.intruder.shape = *choiceNamed<ShapeName>(v); },
           "outline: the paper's OS1..OS5 (docs/SHAPES.md) or \"polygon\" given by intruder.vertices"),
       pointList("intruder.vertices", [](C& c) -> Points& { return c.intruder.vertices; }, "d",
                 "outer outline for shape = \"polygon\": at least 3 [x, y] pairs; "
@@ -123,14 +120,16 @@ const std::vector<KeyInfo>& keyTable() {
       number("intruder.mass", [](C& c) -> double& { return c.intruder.mass; }, atLeast(0), noBound,
              "rho d^3", "intruder mass; 0 = the one intruder.mass_rule gives"),
       choice(
-          "intruder.mass_rule", {"disk_area", "glued_disk"},
-          [](C& c) -> std::string& { return c.intruder.massRule; },
+          "intruder.mass_rule", choiceNameList<MassRule>(),
+          [](const C& c) -> std::string { return std::string(choiceName(c.intruder.massRule)); },
+          [](C& c, const std::string& v) { c.intruder.massRule = *choiceNamed<MassRule>(v); },
           "the mass when intruder.mass = 0, the same for every shape: disk_area = the disk outline's area x "
           "the grains' mass per area (docs/PHYSICS.md, section 6); glued_disk = the disk built of touching "
           "0.5 d spheres at grain density (docs/SHAPES.md)"),
       choice(
-          "intruder.surface", {"smooth", "glued"},
-          [](C& c) -> std::string& { return c.intruder.surface; },
+          "intruder.surface", choiceNameList<IntruderSurface>(),
+          [](const C& c) -> std::string { return std::string(choiceName(c.intruder.surface)); },
+          [](C& c, const std::string& v) { c.intruder.surface = *choiceNamed<IntruderSurface>(v); },
           "the clump's atoms: smooth = neighbours at most 0.35 d apart; glued = touching (0.5 d apart), a "
           "rough surface like the paper's glued spheres (docs/SHAPES.md)"),
       // [drive]
@@ -144,8 +143,9 @@ const std::vector<KeyInfo>& keyTable() {
               "periods over which the amplitude grows linearly from 0 to A, so the drive starts from rest "
               "(0 = no ramp: x0 + A sin(2 pi t / T) from t = 0, at full speed; docs/PHYSICS.md, section 7)"),
       choice(
-          "drive.form", {"displacement", "velocity"},
-          [](C& c) -> std::string& { return c.drive.form; },
+          "drive.form", choiceNameList<DriveForm>(),
+          [](const C& c) -> std::string { return std::string(choiceName(c.drive.form)); },
+          [](C& c, const std::string& v) { c.drive.form = *choiceNamed<DriveForm>(v); },
           "how the paper's drive is read (docs/PHYSICS.md, section 7): displacement = x(t) = x0 + A sin(2 pi t / T); "
           "velocity = vx(t) = A sin(2 pi t / T), the paper's formula read as a velocity: x(t) = x0 + (A T / 2 pi)"
           "(1 - cos(2 pi t / T)), from rest, swinging A T / pi to one side"),
@@ -153,13 +153,15 @@ const std::vector<KeyInfo>& keyTable() {
       number("bed.batch_height", [](C& c) -> double& { return c.bed.batchHeight; }, above(0),
              noBound, "d", "height of each poured layer"),
       choice(
-          "bed.pour", {"lattice", "random"},
-          [](C& c) -> std::string& { return c.bed.pour; },
+          "bed.pour", choiceNameList<BedPour>(),
+          [](const C& c) -> std::string { return std::string(choiceName(c.bed.pour)); },
+          [](C& c, const std::string& v) { c.bed.pour = *choiceNamed<BedPour>(v); },
           "how each batch is placed (docs/PHYSICS.md, section 8): lattice = a loose lattice with small random "
           "velocities; random = grains at random non-overlapping positions, as LAMMPS's fix pour"),
       choice(
-          "bed.cavity", {"poured", "carved"},
-          [](C& c) -> std::string& { return c.bed.cavity; },
+          "bed.cavity", choiceNameList<BedCavity>(),
+          [](const C& c) -> std::string { return std::string(choiceName(c.bed.cavity)); },
+          [](C& c, const std::string& v) { c.bed.cavity = *choiceNamed<BedCavity>(v); },
           "how the intruder gets its place in the bed (docs/PHYSICS.md, section 8): poured = the grains are poured "
           "around the held intruder; carved = the seed's bed is poured once without an intruder (shared by every "
           "shape and y0), the grains the intruder overlaps are removed and the bed relaxes to rest around it"),

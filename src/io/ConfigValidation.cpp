@@ -85,21 +85,21 @@ void checkShapeKeys(const RunConfig& c) {
     throw Error("grains.d_max = " + num(c.grains.dMax) + ": must be >= grains.d_min (" +
                 num(c.grains.dMin) + ")");
   }
-  const bool polygon = c.intruder.shape == "polygon";
+  const bool polygon = c.intruder.shape == ShapeName::Polygon;
   if (polygon && c.intruder.vertices.size() < 3) {
     throw Error("intruder.vertices: shape = \"polygon\" needs at least 3 [x, y] pairs, got " +
                 std::to_string(c.intruder.vertices.size()));
   }
   if (!polygon && !c.intruder.vertices.empty()) {
     throw Error("intruder.vertices: only used with shape = \"polygon\", but shape = \"" +
-                c.intruder.shape + "\" (remove the vertices or set the shape to \"polygon\")");
+                std::string(choiceName(c.intruder.shape)) + "\" (remove the vertices or set the shape to \"polygon\")");
   }
   if (c.intruder.y0 >= c.box.bedHeight) {
     throw Error("intruder.y0 = " + num(c.intruder.y0) + ": must be < box.bed_height (" +
                 num(c.box.bedHeight) + ")");
   }
   lammpsTypeRoles(c.bed.lammpsTypes);  // its syntax, whether bed.file is a LAMMPS data file or not
-  if (c.drive.form == "velocity" && c.drive.rampPeriods > 0) {
+  if (c.drive.form == DriveForm::Velocity && c.drive.rampPeriods > 0) {
     throw Error("drive.ramp_periods = " + std::to_string(c.drive.rampPeriods) +
                 ": only with drive.form = \"displacement\" (the velocity form starts from rest already)");
   }

@@ -12,6 +12,40 @@
 
 namespace wiggle {
 
+// The config's enumerated choices besides contact.law and grains.mass_model (physics/): their values'
+// names, in the enums' order, are the config's (core/Choice.h).
+enum class ShapeName : std::uint8_t { Disk, Square, RectNarrow, RectWide, Triangle, Polygon };  // intruder.shape
+enum class MassRule : std::uint8_t { DiskArea, GluedDisk };      // intruder.mass_rule (docs/SHAPES.md, "Mass")
+enum class IntruderSurface : std::uint8_t { Smooth, Glued };     // intruder.surface (docs/SHAPES.md)
+enum class DriveForm : std::uint8_t { Displacement, Velocity };  // drive.form (docs/PHYSICS.md §7)
+enum class BedPour : std::uint8_t { Lattice, Random };           // bed.pour (docs/PHYSICS.md §8)
+enum class BedCavity : std::uint8_t { Poured, Carved };          // bed.cavity (docs/PHYSICS.md §8)
+template <>
+struct ChoiceNames<ShapeName> {  // the paper's OS1..OS5 (docs/SHAPES.md), then a user's outline
+  static constexpr std::array<std::string_view, 6> names{"disk",      "square",   "rect_narrow",
+                                                         "rect_wide", "triangle", "polygon"};
+};
+template <>
+struct ChoiceNames<MassRule> {
+  static constexpr std::array<std::string_view, 2> names{"disk_area", "glued_disk"};
+};
+template <>
+struct ChoiceNames<IntruderSurface> {
+  static constexpr std::array<std::string_view, 2> names{"smooth", "glued"};
+};
+template <>
+struct ChoiceNames<DriveForm> {
+  static constexpr std::array<std::string_view, 2> names{"displacement", "velocity"};
+};
+template <>
+struct ChoiceNames<BedPour> {
+  static constexpr std::array<std::string_view, 2> names{"lattice", "random"};
+};
+template <>
+struct ChoiceNames<BedCavity> {
+  static constexpr std::array<std::string_view, 2> names{"poured", "carved"};
+};
+
 struct BoxDef {
   double width = 60.0;        // box.width: W, periodic in x, a whole number [d]
   double bedHeight = 50.0;    // box.bed_height: target height of the free surface [d]
@@ -25,26 +59,26 @@ struct GrainsDef {
 };
 
 struct IntruderDef {
-  std::string shape = "disk";  // intruder.shape: disk|square|rect_narrow|rect_wide|triangle|polygon
+  ShapeName shape = ShapeName::Disk;            // intruder.shape
   std::vector<std::array<double, 2>> vertices;  // intruder.vertices: outline for "polygon" [d]
   double angle = 0.0;          // intruder.angle: rotation, counter-clockwise [degrees]
   double y0 = 25.0;            // intruder.y0: centre height at t = 0 [d]; x0 is the box centre
   double mass = 0.0;           // intruder.mass: 0 means the rule intruder.mass_rule
-  std::string massRule = "disk_area";  // intruder.mass_rule: disk_area|glued_disk (docs/SHAPES.md, "Mass")
-  std::string surface = "smooth";      // intruder.surface: smooth|glued (docs/SHAPES.md, "The glued surface")
+  MassRule massRule = MassRule::DiskArea;             // intruder.mass_rule
+  IntruderSurface surface = IntruderSurface::Smooth;  // intruder.surface
 };
 
 struct DriveDef {
   double amplitude = 3.0;      // drive.amplitude: A [d]
   double period = 5.0;         // drive.period: T [sqrt(d/g)]
   std::uint64_t rampPeriods = 0;  // drive.ramp_periods: A grows from 0 over n periods (0: none; docs/PHYSICS.md §7)
-  std::string form = "displacement";  // drive.form: displacement|velocity, how A and T make x(t) (docs/PHYSICS.md §7)
+  DriveForm form = DriveForm::Displacement;  // drive.form: how A and T make x(t)
 };
 
 struct BedDef {
   double batchHeight = 20.0;   // bed.batch_height: height of each poured layer [d]
-  std::string pour = "lattice";  // bed.pour: lattice|random, how a batch is placed (docs/PHYSICS.md §8)
-  std::string cavity = "poured";  // bed.cavity: poured|carved, how the intruder gets its place (docs/PHYSICS.md §8)
+  BedPour pour = BedPour::Lattice;       // bed.pour: how a batch is placed
+  BedCavity cavity = BedCavity::Poured;  // bed.cavity: how the intruder gets its place
   double pourFraction = 0.3;   // bed.pour_fraction: area fraction a random batch fills in its region (pour = random)
   double pourSpeed = 1.0;      // bed.pour_speed: initial downward speed of a random batch (pour = random) [sqrt(g d)]
   double settleSpeed = 0.05;   // bed.settle_speed: pour the next batch when the rms grain speed is below [sqrt(g d)]

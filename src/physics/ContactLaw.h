@@ -31,22 +31,19 @@
 // torque_i -= radI * torqueArm, torque_j -= radJ * torqueArm.
 #include <array>
 #include <cstdint>
-#include <optional>
 #include <string_view>
 
+#include "core/Choice.h"
 #include "core/Simd.h"
 
 namespace wiggle {
 
-// contact.law: which force law the pairs follow (the names are the config's values).
+// contact.law: which force law the pairs follow.
 enum class ContactLaw : std::uint8_t { Hertz, Hooke };
-inline constexpr std::array<std::string_view, 2> kContactLawNames{"hertz", "hooke"};
-inline std::string_view contactLawName(ContactLaw law) { return kContactLawNames[static_cast<std::size_t>(law)]; }
-inline std::optional<ContactLaw> contactLawNamed(std::string_view name) {
-  for (std::size_t i = 0; i < kContactLawNames.size(); ++i)
-    if (kContactLawNames[i] == name) return static_cast<ContactLaw>(i);
-  return std::nullopt;
-}
+template <>
+struct ChoiceNames<ContactLaw> {
+  static constexpr std::array<std::string_view, 2> names{"hertz", "hooke"};
+};
 
 struct ContactParams {
   double kn = 2e6;        // normal stiffness [rho d g]... Kn of docs/PHYSICS.md §4 (units of the paper)

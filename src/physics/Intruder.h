@@ -3,8 +3,9 @@
 // Its horizontal position is prescribed; its vertical position is either held or integrated from
 // the sum of the contact forces on its atoms plus gravity on its total mass. Atoms do not interact
 // with each other. Shapes (how atoms fill an outline) live in scenario/.
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
+#include <functional>
 #include <numbers>
 #include <vector>
 
@@ -22,6 +23,7 @@ enum class HorizontalMotion : std::uint8_t {
   ConstantVelocity,  // x = x0 + v t, vx = v
   RampedSinusoid,    // x = x0 + A min(1, t / t_ramp) sin(2 pi t / T): from rest, Sinusoid after t_ramp
   VelocitySinusoid,  // vx = A sin(2 pi t / T), x = x0 + (A T / 2 pi)(1 - cos(2 pi t / T)): A a speed, from rest
+  Prescribed,        // x = x0 + dx(t), vx(t) from a function the caller gives (the Python module's own drives)
 };
 
 struct ClumpMotion {
@@ -33,6 +35,15 @@ struct ClumpMotion {
   bool verticalFree = false;  // false: y held, vy = 0 (while the bed is made)
   double rampTime = 0.0;   // t_ramp [sqrt(d/g)] (RampedSinusoid); a whole number of periods keeps vx
                            // continuous where the ramp ends, since sin(2 pi t_ramp / T) = 0 there
+  struct Position {
+    double x = 0.0;   // [d]
+    double vx = 0.0;  // [sqrt(g d)]
+  };
+  // Prescribed: t -> (dx, vx), the displacement from x0 and the velocity; and the bound on |vx| it
+  // declares, which the time-step check and the blow-up detector use as the drive's peak speed (the
+  // engine refuses a vx beyond it). Not saved: a world with it cannot be checkpointed.
+  std::function<Position(double)> prescribed = nullptr;
+  double peakSpeed = 0.0;  // [sqrt(g d)]
 
   double omega() const { return 2.0 * std::numbers::pi / period; }  // angular frequency of the sinusoids
   bool sinusoidal() const {  // one of the drives with a period
@@ -40,10 +51,6 @@ struct ClumpMotion {
            kind == HorizontalMotion::VelocitySinusoid;
   }
 
-  struct Position {
-    double x = 0.0;   // [d]
-    double vx = 0.0;  // [sqrt(g d)]
-  };
   // Where the motion puts the clump at time t: the one formula of each kind, used by the engine
   // at every step (World::placeIntruder) and by anything else that needs x(t) or vx(t).
   Position at(double t) const {
@@ -66,6 +73,10 @@ struct ClumpMotion {
       case HorizontalMotion::VelocitySinusoid: {
         const double w = omega();
         return {x0 + amplitude / w * (1.0 - std::cos(w * t)), amplitude * std::sin(w * t)};
+      }
+      case HorizontalMotion::Prescribed: {
+        const Position d = prescribed(t);
+        return {x0 + d.x, d.vx};
       }
     }
     return {x0, 0.0};

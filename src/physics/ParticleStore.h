@@ -4,12 +4,20 @@
 // Layout: indices [0, grainCount) are mobile grains, [grainCount, size()) frozen base particles.
 // The grain range is re-sorted spatially for locality; `tag` keeps each particle's stable id.
 // Units: lengths in d, time in sqrt(d/g), mass in rho d^3 (sphere model) or rho d^2 (disc).
+#include <array>
 #include <cstdint>
+#include <string_view>
 #include <vector>
+
+#include "core/Choice.h"
 
 namespace wiggle {
 
-enum class MassModel { Sphere, Disc };
+enum class MassModel : std::uint8_t { Sphere, Disc };  // grains.mass_model
+template <>
+struct ChoiceNames<MassModel> {
+  static constexpr std::array<std::string_view, 2> names{"sphere", "disc"};
+};
 
 // Mass and rotational inertia coefficient of a grain of radius r and density rho (docs/PHYSICS.md §3).
 double particleMass(MassModel model, double density, double radius);

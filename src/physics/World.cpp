@@ -143,6 +143,9 @@ void World::setIntruderMotion(const ClumpMotion& motion) {
   if (motion.sinusoidal() && !(motion.period > 0)) throw Error("drive period must be > 0");
   if (motion.kind == HorizontalMotion::RampedSinusoid && !(motion.rampTime > 0 && std::isfinite(motion.rampTime)))
     throw Error("drive ramp time must be > 0 and finite");
+  if (motion.kind == HorizontalMotion::Prescribed &&
+      (!motion.prescribed || !(motion.peakSpeed > 0) || !std::isfinite(motion.peakSpeed)))
+    throw Error("a prescribed drive needs its function and a peak speed > 0");
   requireFinite(motion.x0, "drive centre");
   requireFinite(motion.amplitude, "drive amplitude");
   requireFinite(motion.velocity, "drive velocity");
@@ -262,6 +265,10 @@ void World::prepare() {
 void World::placeIntruder() {
   if (!hasIntruder_) return;
   const ClumpMotion::Position p = motion_.at(time());
+  if (motion_.kind == HorizontalMotion::Prescribed && !(std::isfinite(p.x) && std::fabs(p.vx) <= motion_.peakSpeed))
+    throw Error("the prescribed drive gave x = " + formatNumber(p.x) + ", vx = " + formatNumber(p.vx) +
+                " at t = " + formatNumber(time()) + ": x must be finite and |vx| at most its peak speed " +
+                formatNumber(motion_.peakSpeed));
   clumpState_.x = p.x;
   clumpState_.vx = p.vx;
 }

@@ -34,6 +34,7 @@ double World::peakDriveSpeed() const {
     case HorizontalMotion::RampedSinusoid: return motion_.amplitude * (omega + 1.0 / motion_.rampTime);  // a bound
     case HorizontalMotion::ConstantVelocity: return std::fabs(motion_.velocity);
     case HorizontalMotion::VelocitySinusoid: return std::fabs(motion_.amplitude);
+    case HorizontalMotion::Prescribed: return motion_.peakSpeed;
   }
   return 0.0;
 }
@@ -52,11 +53,11 @@ void World::checkTimeStep() const {
   const double duration = contactTime(def_.contact, s.radius[lightest], s.mass[lightest], speed);
   const double limit = duration / def_.minStepsPerContact;
   if (def_.dt > limit)
-    throw Error(
-        "run.dt = " + formatNumber(def_.dt) + " is too large: a " + std::string(contactLawName(def_.contact.law)) +
-        " contact between the lightest grains (d = " + formatNumber(2 * s.radius[lightest]) + ") at impact speed " +
-        formatNumber(speed) + " lasts " + formatNumber(duration) + ", which needs dt <= " + formatNumber(limit) + " (" +
-        formatNumber(def_.minStepsPerContact) + " steps per contact)");
+    throw Error("run.dt = " + formatNumber(def_.dt) + " is too large: a " + std::string(choiceName(def_.contact.law)) +
+                " contact between the lightest grains (d = " + formatNumber(2 * s.radius[lightest]) +
+                ") at impact speed " + formatNumber(speed) + " lasts " + formatNumber(duration) +
+                ", which needs dt <= " + formatNumber(limit) + " (" + formatNumber(def_.minStepsPerContact) +
+                " steps per contact)");
 }
 
 // The full scan of the blow-up detector (docs/RELIABILITY.md, "The blow-up detector"). Each bound

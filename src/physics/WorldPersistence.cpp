@@ -18,6 +18,10 @@ namespace wiggle {
 constexpr std::uint32_t kFirstFormatWithLaw = 3;
 
 void World::save(BinaryWriter& out) const {
+  if (motion_.kind == HorizontalMotion::Prescribed)
+    throw Error(
+        "a world driven by a prescribed function cannot be saved (the function is not data): "
+        "give it a built-in drive first");
   out.value(def_.boxWidth);
   out.value(def_.dt);
   out.value(def_.gravity);
@@ -103,7 +107,7 @@ WorldDef readDef(BinaryReader& in) {
   def.gravity = in.value<double>();
   def.density = in.value<double>();
   const auto massModel = in.value<std::uint8_t>();
-  if (massModel > 1) throw Error(in.what() + " is corrupt: unknown mass model");
+  if (!isChoice<MassModel>(massModel)) throw Error(in.what() + " is corrupt: unknown mass model");
   def.massModel = static_cast<MassModel>(massModel);
   def.contact.kn = in.value<double>();
   def.contact.kt = in.value<double>();
@@ -112,8 +116,7 @@ WorldDef readDef(BinaryReader& in) {
   def.contact.mu = in.value<double>();
   if (in.formatVersion() >= kFirstFormatWithLaw) {
     const auto law = in.value<ContactLaw>();
-    if (static_cast<std::size_t>(law) >= kContactLawNames.size())
-      throw Error(in.what() + " is corrupt: unknown contact law");
+    if (!isChoice<ContactLaw>(law)) throw Error(in.what() + " is corrupt: unknown contact law");
     def.contact.law = law;
   }
   def.skin = in.value<double>();

@@ -51,7 +51,7 @@ WorldDef worldDefFor(const RunConfig& config) {
   // The fastest a grain falls without the drive: from the top of the last batch poured (thrown
   // down at bed.pour_speed when the pour is random).
   def.referenceImpactSpeed = std::sqrt(2.0 * def.gravity * (config.box.bedHeight + config.bed.batchHeight));
-  if (config.bed.pour == "random")
+  if (config.bed.pour == BedPour::Random)
     def.referenceImpactSpeed = std::sqrt(def.referenceImpactSpeed * def.referenceImpactSpeed +
                                          config.bed.pourSpeed * config.bed.pourSpeed);
   return def;
@@ -82,9 +82,10 @@ std::string pouredBedKey(const RunConfig& c, const ClumpDef& clump) {
   h.add(clump.offsetY);
   // The lattice pour hashes nothing more, so its beds keep the keys they had before bed.pour existed
   // (its bed ignores pour_fraction and pour_speed).
-  if (c.bed.pour != "lattice") {
+  if (c.bed.pour != BedPour::Lattice) {
     h.addValue(kRandomPourFormat);
-    h.addBytes(c.bed.pour.data(), c.bed.pour.size());
+    const std::string_view pour = choiceName(c.bed.pour);  // the name's bytes, as when it was a string
+    h.addBytes(pour.data(), pour.size());
     h.addValue(c.bed.pourFraction);
     h.addValue(c.bed.pourSpeed);
   }
@@ -108,7 +109,7 @@ const ClumpDef kNoIntruder{};
 std::string baseBedKey(const RunConfig& c) { return pouredBedKey(c, kNoIntruder); }
 
 std::string bedKey(const RunConfig& c, const ClumpDef& clump) {
-  if (c.bed.cavity == "poured") return pouredBedKey(c, clump);
+  if (c.bed.cavity == BedCavity::Poured) return pouredBedKey(c, clump);
   Hasher h;
   h.addValue(kCarvedFormat);
   const std::string base = baseBedKey(c);
@@ -224,7 +225,7 @@ void pourLatticeBatch(const RunConfig& config, const ClumpDef& clump, PartialBed
 // top of the region with bed.pour_speed, as LAMMPS's fix pour sets it: the batch then falls as one
 // continuous stream rather than as a block.
 void pourBatch(const RunConfig& config, const ClumpDef& clump, PartialBed& p) {
-  if (config.bed.pour == "random") {
+  if (config.bed.pour == BedPour::Random) {
     double highest = 0.5;  // as the lattice finds it
     const ParticleStore& s = p.world.particles();
     for (std::uint32_t i = 0; i < s.grainCount; ++i) highest = std::max(highest, s.y[i] + s.radius[i]);
@@ -378,7 +379,7 @@ World carveBed(const RunConfig& config, const ClumpDef& clump, World base, const
 
 World makeBed(const RunConfig& config, const ClumpDef& clump, const BedProgress& progress) {
   const BedSaver noSaving = [](const PartialBed&) {};
-  if (config.bed.cavity == "carved")
+  if (config.bed.cavity == BedCavity::Carved)
     return carveBed(config, clump, finishBed(config, kNoIntruder, startBed(config, kNoIntruder), progress, noSaving),
                     progress, noSaving);
   return finishBed(config, clump, startBed(config, clump), progress, noSaving);
@@ -600,7 +601,7 @@ CachedBed obtainCarvedBed(const RunConfig& config, const ClumpDef& clump, const 
 
 CachedBed obtainBed(const RunConfig& config, const ClumpDef& clump, const BedProgress& progress) {
   if (!config.bed.file.empty()) return pinnedBed(config, clump);
-  if (config.bed.cavity == "carved") return obtainCarvedBed(config, clump, progress);
+  if (config.bed.cavity == BedCavity::Carved) return obtainCarvedBed(config, clump, progress);
   return obtainPouredBed(config, clump, bedKey(config, clump), progress);
 }
 

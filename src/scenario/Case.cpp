@@ -26,7 +26,7 @@ std::uint64_t stepsOf(double interval, double dt, const char* key) {
 }  // namespace
 
 HorizontalMotion driveKind(const DriveDef& drive) {
-  if (drive.form == "velocity") return HorizontalMotion::VelocitySinusoid;  // a ramp is refused by validation
+  if (drive.form == DriveForm::Velocity) return HorizontalMotion::VelocitySinusoid;  // a ramp is refused by validation
   return drive.rampPeriods > 0 ? HorizontalMotion::RampedSinusoid : HorizontalMotion::Sinusoid;
 }
 
@@ -55,9 +55,9 @@ void checkGeometry(const RunConfig& config, const ClumpDef& clump) {
   const double swing = displacementAmplitude(config.drive, config.drive.period);
   const double needed = width + 2.0 * swing + 4.0 * config.grains.dMax;
   if (config.box.width < needed)
-    throw Error("box.width = " + formatNumber(config.box.width) + " is too narrow for the " + config.intruder.shape +
-                " (" + formatNumber(width) + " wide) moving +-" + formatNumber(swing) + ": need at least " +
-                formatNumber(std::ceil(needed)));
+    throw Error("box.width = " + formatNumber(config.box.width) + " is too narrow for the " +
+                std::string(choiceName(config.intruder.shape)) + " (" + formatNumber(width) + " wide) moving +-" +
+                formatNumber(swing) + ": need at least " + formatNumber(std::ceil(needed)));
   const double bottom = config.intruder.y0 + minY, top = config.intruder.y0 + maxY;
   if (bottom < 0.5 + 2.0 * config.grains.dMax)
     throw Error("intruder.y0 = " + formatNumber(config.intruder.y0) + " puts the intruder's bottom at y = " + formatNumber(bottom) +
@@ -83,7 +83,7 @@ Case prepareCase(const RunConfig& config) {
   c.shape = makeShape(config.intruder);
   const OutlineBox box = boundingBox(c.shape.outline);
   if (!(box.width() <= config.box.width && box.height() <= config.box.bedHeight))
-    throw Error(std::string(config.intruder.shape == "polygon" ? "intruder.vertices" : "intruder.shape") +
+    throw Error(std::string(config.intruder.shape == ShapeName::Polygon ? "intruder.vertices" : "intruder.shape") +
                 ": the outline is " + formatNumber(box.width()) + " x " + formatNumber(box.height()) +
                 ", larger than the bed (box.width = " + formatNumber(config.box.width) +
                 ", box.bed_height = " + formatNumber(config.box.bedHeight) + ")");

@@ -62,7 +62,7 @@ void writeModel(const std::string& path, const RunConfig& config, const Shape& s
   std::vector<std::array<double, 2>> outline(shape.outline.begin(), shape.outline.end());
   const CavityGeometry g = cavityGeometry(outline);
   nlohmann::json j;
-  j["shape"] = config.intruder.shape;
+  j["shape"] = std::string(choiceName(config.intruder.shape));
   j["angle"] = config.intruder.angle;
   j["y0"] = g.y0;
   j["h"] = g.h;
@@ -83,7 +83,7 @@ void writeModel(const std::string& path, const RunConfig& config, const Shape& s
     return 0.5 * (cavityRiseRate(g, g.left, period, amplitude) + cavityRiseRate(g, g.right, period, amplitude));
   };
   j["amplitude"] = config.drive.amplitude;
-  j["drive_form"] = config.drive.form;
+  j["drive_form"] = std::string(choiceName(config.drive.form));
   j["period"] = config.drive.period;  // the period vy_at_period is for
   nlohmann::json curve = nlohmann::json::array();
   for (int k = 1; k <= 120; ++k) curve.push_back({0.1 * k, modelRate(0.1 * k)});
@@ -306,7 +306,7 @@ RunSummary summarise(const Case& run, const std::string& dir, const World& world
   summary.contacts = world.touchingPairs();
   summary.intruderPairs = world.intruderPairs().size();
   summary.stateBytesPerGrain = static_cast<double>(world.stateBytes()) / std::max(1u, world.grainCount());
-  summary.shape = config.intruder.shape;
+  summary.shape = std::string(choiceName(config.intruder.shape));
   summary.amplitude = config.drive.amplitude;
   summary.period = config.drive.period;
   summary.mu = config.contact.mu;

@@ -60,8 +60,9 @@ std::array<double, 2> writeLammpsData(const World& world, const RunConfig& confi
   yHi += 5.0;  // the upper y boundary is shrink-wrapped (fm), so this is only a minimum
 
   d.reserve(atoms * 160 + 1024);
-  d += "wiggle export-lammps: " + config.intruder.shape + ", W = " + num(width) + ", bed height " +
-       num(config.box.bedHeight) + ", seed " + std::to_string(config.box.seed) + ", t = 0 of the drive\n\n";
+  d += "wiggle export-lammps: " + std::string(choiceName(config.intruder.shape)) + ", W = " + num(width) +
+       ", bed height " + num(config.box.bedHeight) + ", seed " + std::to_string(config.box.seed) +
+       ", t = 0 of the drive\n\n";
   d += std::to_string(atoms) + " atoms\n3 atom types\n\n";
   d += "0 " + num(width) + " xlo xhi\n" + num(yLo) + " " + num(yHi) + " ylo yhi\n-0.5 0.5 zlo zhi\n\n";
   // atom_style sphere: id type diameter density x y z. The ids are wiggle's (tag + 1, the intruder's
@@ -121,9 +122,9 @@ std::string lammpsInput(const World& world, const RunConfig& config, const RunSc
   const ContactParams& p = def.contact;
   const bool disc = def.massModel == MassModel::Disc;
   const double omega = motion.omega();  // the value World::placeIntruder uses
-  in += "# wiggle export-lammps: " + config.intruder.shape + " intruder, A = " + num(motion.amplitude) +
-        ", T = " + num(motion.period) + ", mu = " + num(p.mu) + ", " + std::to_string(s.grainCount) +
-        " grains (docs/LAMMPS-EXPORT.md)\n";
+  in += "# wiggle export-lammps: " + std::string(choiceName(config.intruder.shape)) +
+        " intruder, A = " + num(motion.amplitude) + ", T = " + num(motion.period) + ", mu = " + num(p.mu) + ", " +
+        std::to_string(s.grainCount) + " grains (docs/LAMMPS-EXPORT.md)\n";
   in += "# Run: lmp -in in.wiggle    or    mpirun -np 2 lmp -in in.wiggle\n";
   in += "# Run length: -var nsteps N (default run.duration / run.dt). Intruder trajectory: trajectory.csv,\n";
   in += "# columns t,x,y,vx,vy,fy as wiggle's (fy = vertical contact force on the intruder).\n";
@@ -138,7 +139,7 @@ std::string lammpsInput(const World& world, const RunConfig& config, const RunSc
   if (disc) in += "set group grains density/disc " + num(def.density) + "\nset group base density/disc " + num(def.density) + "\n";
   in += "# Every intruder atom carries the clump's total mass M: meff = m M / (m + M) as in wiggle.\n";
   in += "set group intruder mass " + num(clump.mass) + "\n\n";
-  in += "pair_style gran/" + std::string(contactLawName(p.law)) + "/history " + num(p.kn) + " " + num(p.kt) + " " +
+  in += "pair_style gran/" + std::string(choiceName(p.law)) + "/history " + num(p.kn) + " " + num(p.kt) + " " +
         num(p.gammaN) + " " + num(p.gammaT) + " " + num(p.mu) + " 1\n";
   in += "pair_coeff * *\n";
   in += "neighbor " + num(def.skin) + " bin\n";

@@ -225,47 +225,55 @@ std::string fixed3(double value) {
 }  // namespace
 
 const std::vector<std::string>& paperShapeNames() {
-  static const std::vector<std::string> names = {"disk", "square", "rect_narrow", "rect_wide",
-                                                 "triangle"};
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> all;
+    for (const std::string_view name : ChoiceNames<ShapeName>::names)
+      if (name != choiceName(ShapeName::Polygon)) all.emplace_back(name);
+    return all;
+  }();
   return names;
 }
 
-Shape makeShape(const std::string& name, const Outline& vertices, double angleDegrees) {
+Shape makeShape(ShapeName kind, const Outline& vertices, double angleDegrees) {
   if (!std::isfinite(angleDegrees)) throw Error("intruder.angle: not a finite number");
   Shape shape;
-  shape.name = name;
+  shape.name = choiceName(kind);
+  if (kind != ShapeName::Polygon && !vertices.empty())
+    throw Error("intruder.vertices: only used with shape = \"polygon\", not '" + shape.name + "'");
   Outline raw;
-  if (name == "polygon") {
-    if (vertices.empty()) throw Error("intruder.vertices: shape 'polygon' needs a vertex list");
-    requireValidPolygon(vertices, "intruder.vertices");
-    raw = counterClockwise(vertices);
-    const OutlinePoint c = areaCentroid(raw);
-    raw = translated(std::move(raw), -c[0], -c[1]);
-  } else {
-    if (!vertices.empty())
-      throw Error("intruder.vertices: only used with shape = \"polygon\", not '" + name + "'");
-    if (name == "disk") {
+  switch (kind) {
+    case ShapeName::Polygon: {
+      if (vertices.empty()) throw Error("intruder.vertices: shape 'polygon' needs a vertex list");
+      requireValidPolygon(vertices, "intruder.vertices");
+      raw = counterClockwise(vertices);
+      const OutlinePoint c = areaCentroid(raw);
+      raw = translated(std::move(raw), -c[0], -c[1]);
+      break;
+    }
+    case ShapeName::Disk:
       // A disk is rotation-invariant: the angle is ignored and the outline stays exact.
       shape.isDisk = true;
       shape.diskRadius = 0.5 * kDiskDiameter;
       shape.outline = diskOutline(shape.diskRadius);
       return shape;
-    }
-    if (name == "square") {
-      raw = rectangle(6.5, 6.5);
-    } else if (name == "rect_narrow") {
-      raw = rectangle(4.5, 9.5);
-    } else if (name == "rect_wide") {
-      raw = rectangle(9.5, 4.5);
-    } else if (name == "triangle") {
-      raw = triangleOutline(9.5);
-    } else {
-      throw Error("intruder.shape: unknown shape '" + name +
-                  "' (expected disk, square, rect_narrow, rect_wide, triangle or polygon)");
-    }
+    case ShapeName::Square: raw = rectangle(6.5, 6.5); break;
+    case ShapeName::RectNarrow: raw = rectangle(4.5, 9.5); break;
+    case ShapeName::RectWide: raw = rectangle(9.5, 4.5); break;
+    case ShapeName::Triangle: raw = triangleOutline(9.5); break;
   }
   shape.outline = rotated(std::move(raw), angleDegrees);
   return shape;
+}
+
+Shape makeShape(const std::string& name, const Outline& vertices, double angleDegrees) {
+  const std::optional<ShapeName> kind = choiceNamed<ShapeName>(name);
+  if (!kind) {
+    std::string known;
+    for (const std::string_view n : ChoiceNames<ShapeName>::names)
+      known += (known.empty() ? "" : ", ") + std::string(n);
+    throw Error("intruder.shape: unknown shape '" + name + "' (expected one of " + known + ")");
+  }
+  return makeShape(*kind, vertices, angleDegrees);
 }
 
 Shape makeShape(const IntruderDef& def) {
@@ -303,12 +311,12 @@ double intruderMass(const IntruderDef& def, MassModel model, double density) {
   if (!std::isfinite(def.mass) || def.mass < 0.0)
     throw Error("intruder.mass: must be positive (or 0 for the mass rule), got " + fixed3(def.mass));
   if (def.mass > 0.0) return def.mass;
-  return def.massRule == "glued_disk" ? gluedDiskMass(model, density) : defaultIntruderMass(model, density);
+  return def.massRule == MassRule::GluedDisk ? gluedDiskMass(model, density) : defaultIntruderMass(model, density);
 }
 
 ClumpOptions clumpOptionsFor(const IntruderDef& def) {
   ClumpOptions options;
-  if (def.surface == "glued") options.maxSpacing = 2.0 * options.atomRadius;
+  if (def.surface == IntruderSurface::Glued) options.maxSpacing = 2.0 * options.atomRadius;
   return options;
 }
 

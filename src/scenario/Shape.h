@@ -31,10 +31,11 @@ struct Shape {
 // The paper's five shapes, in the order OS1..OS5.
 const std::vector<std::string>& paperShapeNames();
 
-// Builds the outline of a named shape ("polygon" takes `vertices`, in any order and frame) rotated
-// by angleDegrees counter-clockwise about its centroid. Throws wiggle::Error on an unknown name, a
-// paper shape given vertices, or an invalid polygon (too few vertices, repeated vertices, zero area,
-// non-finite numbers, self-intersection).
+// Builds the outline of a shape (Polygon takes `vertices`, in any order and frame) rotated by
+// angleDegrees counter-clockwise about its centroid. Throws wiggle::Error on a paper shape given
+// vertices, or an invalid polygon (too few vertices, repeated vertices, zero area, non-finite
+// numbers, self-intersection); the named form also on an unknown name.
+Shape makeShape(ShapeName kind, const Outline& vertices = {}, double angleDegrees = 0.0);
 Shape makeShape(const std::string& name, const Outline& vertices = {}, double angleDegrees = 0.0);
 Shape makeShape(const IntruderDef& def);
 

@@ -53,7 +53,7 @@ double estimatedBedSeconds(const RunConfig& config, double nsPerParticleStep, bo
   // b batches; then the whole bed relaxes.
   const double batches = std::max(1.0, std::ceil(config.box.bedHeight / config.bed.batchHeight));
   const double pourTime = 0.5 * (batches + 1.0) * CostModel::bedTimePerBatch;
-  const bool carved = config.bed.cavity == "carved";
+  const bool carved = config.bed.cavity == BedCavity::Carved;
   const double relaxTime = config.bed.relaxDamping > 0 ? CostModel::dampedRelaxTime
                            : carved                    ? CostModel::carvedRelaxTime
                                                        : CostModel::bedRelaxTime;
@@ -75,12 +75,12 @@ SweepPlan makeSweepPlan(SweepSpec spec, const std::string& outDir) {
     p.runDir = "cases/" + c.name;
     p.dir = outDir + "/" + p.runDir;
     p.estimatedParticles = estimatedParticles(c.config);
-    p.steps = static_cast<std::uint64_t>(std::llround(c.config.run.duration / c.config.run.dt));
     try {
       // The same checks `wiggle run` makes before touching the bed, so a bad case fails here with
       // the message the run would give, without a process or a bed being spent on it.
-      const ClumpDef clump = prepareCase(c.config).clump;
-      if (c.config.bed.file.empty()) p.bedKey = bedKey(c.config, clump);  // a pinned bed is never made
+      const Case run = prepareCase(c.config);
+      p.steps = run.steps.total;
+      if (c.config.bed.file.empty()) p.bedKey = bedKey(c.config, run.clump);  // a pinned bed is never made
     } catch (const Error& e) {
       p.state = CaseState::Failed;
       p.error = e.what();
@@ -119,8 +119,8 @@ SweepPlan makeSweepPlan(SweepSpec spec, const std::string& outDir) {
           bed.cachePath = bedCachePath(c.config, p.bedKey);
           // Carved beds of one seed share a base bed: it is poured once, by the first of them.
           const std::string base = baseBedKey(c.config);
-          const bool baseToPour = c.config.bed.cavity == "carved" && !fs::exists(bedCachePath(c.config, base)) &&
-                                  basesToPour.insert(base).second;
+          const bool baseToPour = c.config.bed.cavity == BedCavity::Carved &&
+                                  !fs::exists(bedCachePath(c.config, base)) && basesToPour.insert(base).second;
           bed.estimatedSeconds = estimatedBedSeconds(c.config, plan.speed.ns, baseToPour);
           plan.beds.push_back(bed);
         }

@@ -11,7 +11,8 @@ source tree (its tracked files, no build, nothing set in the environment but PAT
    first with nothing built (it must raise the package's own WiggleError saying what to do, not a
    raw FileNotFoundError), then with the copy built (build/release linked to BUILD_DIR): it must
    find the build tree's wiggle and return the run.
-3. docs/PYTHON.md's `import wiggle` line, at the root of the built copy (when the module is built).
+3. docs/PYTHON.md's `import wiggle` line and its ```python examples, at the root of the built copy
+   (when the module is built).
 4. The notebook as `cmake --install` puts it (share/wiggle/examples), run where it was installed,
    and `import wiggle` from where the install puts the module (PYTHONPATH=PREFIX/share/wiggle/python).
 Every command is taken from the documents' text (a test of the text, not of a variant of it).
@@ -120,6 +121,15 @@ def main():
                 if check(done.returncode == 0, f"docs/PYTHON.md's line: exit {done.returncode}: {done.stderr[-1500:]}"):
                     check(re.search(r"^1\.0 [-+0-9.e]+ [0-9a-f]{16}$", done.stdout, re.M) is not None,
                           f"docs/PYTHON.md's line printed {done.stdout!r}")
+                # and its ```python examples, each as written (the module on PYTHONPATH as in the line).
+                with open(os.path.join(tree, "docs", "PYTHON.md"), encoding="utf-8") as f:
+                    blocks = re.findall(r"^```python\n(.*?)^```$", f.read(), re.M | re.S)
+                check(len(blocks) > 0, "docs/PYTHON.md has no ```python example")
+                for k, code in enumerate(blocks):
+                    done = shell(f"PYTHONPATH=build/release/python /usr/bin/python3 -c {shlex.quote(code)}", tree, home,
+                                 cache)
+                    check(done.returncode == 0, f"docs/PYTHON.md's python example {k + 1}: exit {done.returncode}: "
+                                                f"{done.stderr[-1500:]}")
 
         # 4. The installed notebook, run where it was installed; `import wiggle` from the installed tree.
         prefix = os.path.join(work, "prefix")

@@ -206,7 +206,7 @@ TEST(Config, AwkwardValuesRoundTripBitForBit) {
   c.contact.kt = 123456789012345678.0;  // above 1e15: written in exponent form
   c.contact.gammaN = 0.0;
   c.contact.mu = 5e-324;  // smallest denormal
-  c.intruder.shape = "polygon";
+  c.intruder.shape = ShapeName::Polygon;
   c.intruder.vertices = {{0.0, -1e-300}, {4.25, 0.0}, {-0.0, 3.0 / 7.0}};
   c.intruder.angle = -0.0;
   c.intruder.mass = 1e300;
@@ -259,7 +259,7 @@ TEST(Config, FileValuesAreApplied) {
       "config.toml");
   EXPECT_EQ(c.drive.period, 2.0);
   EXPECT_EQ(c.drive.amplitude, 0.5);
-  EXPECT_EQ(c.intruder.shape, "polygon");
+  EXPECT_EQ(c.intruder.shape, ShapeName::Polygon);
   ASSERT_EQ(c.intruder.vertices.size(), 3u);
   EXPECT_EQ(c.intruder.vertices[1][0], 4.0);
   EXPECT_EQ(c.intruder.vertices[2][1], 3.0);
@@ -372,8 +372,8 @@ TEST(Config, ValidateChecksConfigsBuiltInCode) {
   c.run.dt = -1e-4;
   EXPECT_NE(errorOf([&] { validateRunConfig(c); }).find("run.dt = -0.0001: must be > 0"), std::string::npos);
   c = RunConfig{};
-  c.intruder.shape = "circle";
-  EXPECT_NE(errorOf([&] { validateRunConfig(c); }).find("intruder.shape = \"circle\": must be one of"),
+  c.intruder.shape = static_cast<ShapeName>(17);  // not a shape: a cast in code, or a corrupt file
+  EXPECT_NE(errorOf([&] { validateRunConfig(c); }).find("intruder.shape = \"(no such value)\": must be one of"),
             std::string::npos);
   c = RunConfig{};
   c.box.seed = ~std::uint64_t{0};  // cannot be written as a TOML integer
@@ -389,9 +389,9 @@ TEST(Config, SetValuesAreReadAsToml) {
   applyOverride(c, "drive.period=5");
   EXPECT_EQ(c.drive.period, 5.0);
   applyOverride(c, "intruder.shape=triangle");  // bare word: a string
-  EXPECT_EQ(c.intruder.shape, "triangle");
+  EXPECT_EQ(c.intruder.shape, ShapeName::Triangle);
   applyOverride(c, "intruder.shape=\"square\"");
-  EXPECT_EQ(c.intruder.shape, "square");
+  EXPECT_EQ(c.intruder.shape, ShapeName::Square);
   applyOverride(c, " intruder.vertices = [[0,0],[4,0],[0,3]] ");
   ASSERT_EQ(c.intruder.vertices.size(), 3u);
   EXPECT_EQ(c.intruder.vertices[2][1], 3.0);
@@ -444,11 +444,11 @@ TEST(Config, SetTakesPrecedenceOverTheFileInOrder) {
   TempFile file("[drive]\nperiod = 2\namplitude = 1\n[intruder]\nshape = \"square\"\n");
   const RunConfig fromFile = loadRunConfig(file.path(), {});
   EXPECT_EQ(fromFile.drive.period, 2.0);
-  EXPECT_EQ(fromFile.intruder.shape, "square");
+  EXPECT_EQ(fromFile.intruder.shape, ShapeName::Square);
   const RunConfig c = loadRunConfig(file.path(), {"drive.period=4", "intruder.shape=disk", "drive.period=8"});
   EXPECT_EQ(c.drive.period, 8.0);     // the last --set wins
   EXPECT_EQ(c.drive.amplitude, 1.0);  // the file where --set is silent
-  EXPECT_EQ(c.intruder.shape, "disk");
+  EXPECT_EQ(c.intruder.shape, ShapeName::Disk);
   EXPECT_EQ(c.run.duration, 100.0);   // the default where both are silent
   const RunConfig noFile = loadRunConfig(std::nullopt, {"drive.period=1"});
   EXPECT_EQ(noFile.drive.period, 1.0);

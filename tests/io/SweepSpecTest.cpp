@@ -48,7 +48,7 @@ period = [1, 5]
   EXPECT_EQ(s.parameterKeys, (std::vector<std::string>{"intruder.shape", "drive.period"}));
   EXPECT_EQ(names(s), (std::vector<std::string>{"shape=disk_period=1", "shape=disk_period=5",
                                                 "shape=triangle_period=1", "shape=triangle_period=5"}));
-  const char* shapes[] = {"disk", "disk", "triangle", "triangle"};
+  const ShapeName shapes[] = {ShapeName::Disk, ShapeName::Disk, ShapeName::Triangle, ShapeName::Triangle};
   const double periods[] = {1, 5, 1, 5};
   for (std::size_t i = 0; i < 4; ++i) {
     const SweepCase& c = s.cases[i];
@@ -60,7 +60,7 @@ period = [1, 5]
     EXPECT_EQ(c.config.run.dt, 1e-4);           // default
     ASSERT_EQ(c.parameters.size(), 2u);
     EXPECT_EQ(c.parameters[0].key, "intruder.shape");
-    EXPECT_EQ(c.parameters[0].value, shapes[i]);
+    EXPECT_EQ(c.parameters[0].value, choiceName(shapes[i]));
     EXPECT_EQ(c.parameters[1].key, "drive.period");
     EXPECT_EQ(c.parameters[1].value, i % 2 ? "5" : "1");
   }
@@ -143,7 +143,7 @@ period = [1, 5]
   EXPECT_EQ(s.cases[0].parameters[0].value, "disk");
   EXPECT_EQ(s.cases[0].parameters[2].value, "[]");
   EXPECT_EQ(s.cases[3].parameters[0].value, "right triangle");
-  EXPECT_EQ(s.cases[3].config.intruder.shape, "polygon");
+  EXPECT_EQ(s.cases[3].config.intruder.shape, ShapeName::Polygon);
   EXPECT_EQ(s.cases[3].config.intruder.vertices.size(), 3u);
   EXPECT_EQ(s.cases[3].config.drive.period, 5.0);
   EXPECT_EQ(s.cases[0].config.intruder.vertices.size(), 0u);  // a case does not leak into the next

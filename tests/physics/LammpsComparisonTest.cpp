@@ -71,7 +71,7 @@ World buildWorld(const json& c, Built& b, int velocityUlps = 0) {
   def.massModel = c["mass_model"] == "sphere" ? MassModel::Sphere : MassModel::Disc;
   const json& k = c["contact"];
   def.contact = ContactParams{k["kn"], k["kt"], k["gamma_n"], k["gamma_t"], k["mu"]};
-  def.contact.law = contactLawNamed(k.value("law", "hertz")).value();
+  def.contact.law = choiceNamed<ContactLaw>(k.value("law", "hertz")).value();
   World w(def);
   auto nudge = [velocityUlps](double v) {
     for (int u = 0; u < velocityUlps; ++u) v = std::nextafter(v, 1e300);

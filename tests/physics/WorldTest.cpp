@@ -532,6 +532,46 @@ TEST(World, VelocityDriveHasItsPeakSpeedAndContinuesBitForBit) {
   EXPECT_EQ(a.stateHash(), b.stateHash());
 }
 
+// A prescribed drive (a function of t, the Python module's drives) that computes the sine as
+// ClumpMotion::at does gives the built-in drive's bits; its declared peak speed is the drive's; a
+// value past it stops the step; a world with it is not saved.
+TEST(World, PrescribedDriveOfTheSineIsTheSinusoidBitForBit) {
+  const double amplitude = 1.5, period = 0.5, w = 2.0 * std::numbers::pi / period;
+  auto driven = [&](const ClumpMotion& motion) {
+    World world = makePile(10, 6, 11);
+    world.run(2000);
+    world.setIntruder(ClumpDef{{-0.25, 0.25}, {0.0, 0.0}, 0.25, 3.0}, 5.0, 12.0);
+    world.setIntruderMotion(motion);
+    world.resetClock();
+    return world;
+  };
+  World builtIn = driven({HorizontalMotion::Sinusoid, 5.0, amplitude, period, 0.0, true, 0.0});
+  ClumpMotion prescribed{HorizontalMotion::Prescribed, 5.0, 0.0, 1.0, 0.0, true, 0.0};
+  prescribed.prescribed = [&](double t) {
+    return ClumpMotion::Position{amplitude * std::sin(w * t), amplitude * w * std::cos(w * t)};
+  };
+  prescribed.peakSpeed = amplitude * w;
+  World own = driven(prescribed);
+  EXPECT_EQ(own.peakDriveSpeed(), amplitude * w);
+  builtIn.run(3000);
+  own.run(3000);
+  EXPECT_EQ(own.stateHash(), builtIn.stateHash());
+  BinaryWriter out;
+  EXPECT_THROW(own.save(out), Error);
+
+  ClumpMotion tooFast = prescribed;
+  tooFast.peakSpeed = 0.5 * amplitude * w;
+  try {
+    driven(tooFast).run(3000);
+    FAIL() << "a vx past the declared peak speed was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("at most its peak speed"), std::string::npos) << e.what();
+  }
+  ClumpMotion noBound = prescribed;
+  noBound.peakSpeed = 0.0;
+  EXPECT_THROW(driven(noBound), Error);
+}
+
 TEST(World, RampedDriveSavedMidRampContinuesBitForBit) {
   World a = makePile(10, 6, 11);
   a.run(2000);

@@ -145,7 +145,7 @@ TEST(BedMaker, LatticeBedKeyIsUnchangedAndRandomKeysDiffer) {
   EXPECT_EQ(bedKey(lattice, disk), "b8ece11933d4975e");
   // The random pour has its own keys, one per fraction and speed.
   RunConfig random = defaults;
-  random.bed.pour = "random";
+  random.bed.pour = BedPour::Random;
   const std::string randomKey = bedKey(random, disk);
   EXPECT_NE(randomKey, "b8ece11933d4975e");
   RunConfig other = random;
@@ -249,7 +249,7 @@ TEST(BedMaker, TinyRandomBedComesToRestAndContinuesToTheSameBits) {
 TEST(BedMaker, DampedRelaxationRestsSoonerAndContinuesToTheSameBits) {
   const OneThread oneThread;
   RunConfig config = tinyRandomConfig();
-  config.bed.pour = "lattice";
+  config.bed.pour = BedPour::Lattice;
   config.bed.restEnergy = 1e-6;
   const ClumpDef clump = prepareCase(config).clump;
   const World plain = makeBed(config, clump);
@@ -296,8 +296,8 @@ TEST(BedMaker, DampedRelaxationRestsSoonerAndContinuesToTheSameBits) {
 TEST(BedMaker, CarvedBedsShareOneBaseBedAndRestAroundTheirIntruder) {
   const OneThread oneThread;
   RunConfig config = tinyRandomConfig();
-  config.bed.pour = "lattice";
-  config.bed.cavity = "carved";
+  config.bed.pour = BedPour::Lattice;
+  config.bed.cavity = BedCavity::Carved;
   config.bed.cacheDir = scratch("cache-carved");
   RunConfig triangleConfig = config;
   triangleConfig.intruder.vertices = {{-1.0, -0.6}, {1.0, -0.6}, {0.0, 1.0}};
@@ -308,7 +308,7 @@ TEST(BedMaker, CarvedBedsShareOneBaseBedAndRestAroundTheirIntruder) {
   EXPECT_EQ(baseBedKey(config), baseBedKey(triangleConfig));
   EXPECT_NE(bedKey(config, square), bedKey(triangleConfig, triangle));
   RunConfig poured = config;
-  poured.bed.cavity = "poured";
+  poured.bed.cavity = BedCavity::Poured;
   EXPECT_NE(bedKey(config, square), bedKey(poured, square));
   EXPECT_NE(baseBedKey(config), bedKey(poured, square));
 

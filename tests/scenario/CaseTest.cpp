@@ -57,7 +57,7 @@ TEST(Case, VelocityFormDrivesVxAsTheSinusoidFromRest) {
   RunConfig config;
   config.drive.amplitude = 3.0;
   config.drive.period = 2.0;
-  config.drive.form = "velocity";
+  config.drive.form = DriveForm::Velocity;
   const Case c = prepareCase(config);
   EXPECT_EQ(c.drive.kind, HorizontalMotion::VelocitySinusoid);
   const double x0 = 0.5 * config.box.width, w = std::numbers::pi;
@@ -71,11 +71,11 @@ TEST(Case, VelocityFormDrivesVxAsTheSinusoidFromRest) {
   // what the cavity model reads as its amplitude.
   EXPECT_DOUBLE_EQ(displacementAmplitude(config.drive, 2.0), 3.0 / std::numbers::pi);
   EXPECT_DOUBLE_EQ(displacementAmplitude(config.drive, 8.0), 12.0 / std::numbers::pi);
-  config.drive.form = "displacement";
+  config.drive.form = DriveForm::Displacement;
   EXPECT_DOUBLE_EQ(displacementAmplitude(config.drive, 8.0), 3.0);
   // The box check uses that swing: A = 3 at T = 60 swings 28.6 d either side, too much for the
   // 60 d box with the 7 d disk (the displacement form's +-3 d fits).
-  config.drive.form = "velocity";
+  config.drive.form = DriveForm::Velocity;
   config.drive.period = 60.0;
   try {
     prepareCase(config);

@@ -39,7 +39,7 @@ Extents atomExtents(const ClumpDef& c) {
 
 ClumpDef clumpFor(const std::string& shape, double angle = 0.0) {
   IntruderDef def;
-  def.shape = shape;
+  def.shape = choiceNamed<ShapeName>(shape).value();
   def.angle = angle;
   return makeClump(def, MassModel::Sphere, 1.0);
 }
@@ -238,7 +238,7 @@ TEST(Shape, ConcaveLShape) {
   // An L: 4 x 1 foot and a 1 x 4 upright, given clockwise and off-centre.
   Outline l = {{10, 10}, {10, 14}, {11, 14}, {11, 11}, {14, 11}, {14, 10}};
   IntruderDef def;
-  def.shape = "polygon";
+  def.shape = ShapeName::Polygon;
   for (const auto& p : l) def.vertices.push_back(p);
   const Shape s = makeShape(def);
   EXPECT_GT(signedArea(s.outline), 0.0);  // made counter-clockwise
@@ -290,7 +290,7 @@ TEST(Shape, RejectsBadPolygons) {
 TEST(Shape, RejectsFeaturesTooSmallForAtoms) {
   // A sliver 0.2 wide cannot hold atoms of diameter 0.5 within 0.1.
   IntruderDef def;
-  def.shape = "polygon";
+  def.shape = ShapeName::Polygon;
   def.vertices = {{0, 0}, {5, 0}, {5, 0.2}, {0, 0.2}};
   EXPECT_THROW(makeClump(def, MassModel::Sphere, 1.0), Error);
   // A 30 deg spike: accepted, with the corner's own (larger) deviation.
@@ -311,7 +311,7 @@ TEST(Shape, MassRule) {
   EXPECT_NEAR(defaultIntruderMass(MassModel::Sphere, 1.0),
               kPi * 12.25 * particleMass(MassModel::Sphere, 1.0, 0.5) / (kPi * 0.25), 1e-12);
   IntruderDef def;
-  def.shape = "triangle";
+  def.shape = ShapeName::Triangle;
   EXPECT_NEAR(makeClump(def, MassModel::Sphere, 1.0).mass, 25.656, 0.001);  // same for every shape
   def.mass = 12.5;
   EXPECT_DOUBLE_EQ(makeClump(def, MassModel::Sphere, 1.0).mass, 12.5);
@@ -331,8 +331,8 @@ TEST(Shape, GluedDiskMassIsAHexagonalPackingOfTouchingSpheres) {
   EXPECT_NEAR(gluedDiskMass(MassModel::Sphere, 2.0), 2.0 * gluedDiskMass(MassModel::Sphere, 1.0), 1e-12);
   // The rule gives it to every shape, and an explicit mass still wins.
   IntruderDef def;
-  def.shape = "triangle";
-  def.massRule = "glued_disk";
+  def.shape = ShapeName::Triangle;
+  def.massRule = MassRule::GluedDisk;
   EXPECT_DOUBLE_EQ(makeClump(def, MassModel::Sphere, 1.0).mass, gluedDiskMass(MassModel::Sphere, 1.0));
   def.mass = 12.5;
   EXPECT_DOUBLE_EQ(makeClump(def, MassModel::Sphere, 1.0).mass, 12.5);
@@ -345,8 +345,8 @@ TEST(Shape, GluedSurfaceHasTouchingAtomsAndStillHoldsGrainsOut) {
   std::mt19937_64 rng(11);
   for (const std::string& name : paperShapeNames()) {
     IntruderDef def;
-    def.shape = name;
-    def.surface = "glued";
+    def.shape = choiceNamed<ShapeName>(name).value();
+    def.surface = IntruderSurface::Glued;
     const Shape shape = makeShape(def);
     const ClumpAtoms atoms = buildClumpAtoms(shape, clumpOptionsFor(def));
     const ClumpQuality q = measureClump(shape, atoms, clumpOptionsFor(def));
