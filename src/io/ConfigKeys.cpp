@@ -4,11 +4,8 @@
 
 namespace wiggle::config_keys {
 
-std::string chosen(const KeyInfo& k, const RunConfig& c) { return k.choiceText ? k.choiceText(mut(c)) : k.getChoice(c); }
-void choose(const KeyInfo& k, RunConfig& c, const std::string& v) {
-  if (k.choiceText) k.choiceText(c) = v;
-  else k.setChoice(c, v);
-}
+std::string chosen(const KeyInfo& k, const RunConfig& c) { return k.getChoice(c); }
+void choose(const KeyInfo& k, RunConfig& c, const std::string& v) { k.setChoice(c, v); }
 
 namespace {
 
@@ -40,13 +37,6 @@ KeyInfo choice(std::string_view name, std::vector<std::string_view> choices,
   KeyInfo k{name, Kind::Choice, "", help, noBound, noBound, std::move(choices)};
   k.getChoice = get;
   k.setChoice = set;
-  return k;
-}
-// A choice kept in the config as the chosen name.
-KeyInfo choice(std::string_view name, std::vector<std::string_view> choices, std::string& (*field)(RunConfig&),
-               std::string_view help) {
-  KeyInfo k{name, Kind::Choice, "", help, noBound, noBound, std::move(choices)};
-  k.choiceText = field;
   return k;
 }
 KeyInfo numberList(std::string_view name, std::vector<double>& (*f)(RunConfig&), Bound lo,

@@ -43,9 +43,8 @@ struct KeyInfo {
   std::uint64_t& (*integer)(RunConfig&) = nullptr;
   bool& (*boolean)(RunConfig&) = nullptr;
   std::string& (*text)(RunConfig&) = nullptr;
-  std::string (*getChoice)(const RunConfig&) = nullptr;  // a choice kept as something else (an enum)...
+  std::string (*getChoice)(const RunConfig&) = nullptr;  // a choice: kept as an enum (core/Choice.h)
   void (*setChoice)(RunConfig&, const std::string&) = nullptr;
-  std::string& (*choiceText)(RunConfig&) = nullptr;       // ...or as the chosen name itself
 
   std::vector<double>& (*numberList)(RunConfig&) = nullptr;
   Points& (*pointList)(RunConfig&) = nullptr;
