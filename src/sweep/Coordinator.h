@@ -7,8 +7,8 @@
 #include <string>
 
 #include "sweep/MpiQueue.h"
+#include "sweep/SweepOptions.h"
 #include "sweep/SweepPlan.h"
-#include "sweep/SweepRunner.h"
 
 namespace wiggle {
 
