@@ -24,4 +24,13 @@ FileLock::FileLock(const std::string& path, bool shared, bool wait) {
 
 FileLock::~FileLock() { ::close(fd_); }
 
+bool FileLock::heldExclusivelyElsewhere(const std::string& path) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return false;
+  const bool held = ::flock(fd, LOCK_SH | LOCK_NB) != 0;  // a shared lock is refused only by an exclusive one
+  if (!held) ::flock(fd, LOCK_UN);
+  ::close(fd);
+  return held;
+}
+
 }  // namespace wiggle

@@ -15,6 +15,10 @@ class FileLock {
   FileLock& operator=(const FileLock&) = delete;
   ~FileLock();
 
+  // Whether another process holds `path` locked exclusively (a whole sweep running in its
+  // directory), probed without waiting and without taking the lock; false when the file is absent.
+  static bool heldExclusivelyElsewhere(const std::string& path);
+
  private:
   int fd_ = -1;
 };

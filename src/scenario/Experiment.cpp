@@ -25,6 +25,7 @@
 #include "model/CavityModel.h"
 #include "scenario/BedMaker.h"
 #include "scenario/Checkpoint.h"
+#include "scenario/RunProgress.h"
 #include "scenario/RunSummary.h"
 #include "scenario/SpeedRecord.h"
 
@@ -152,6 +153,27 @@ std::optional<Checkpoint> newestGoodCheckpoint(const std::string& dir, const Run
     log.line("no checkpoint: starting from the bed");
   return std::nullopt;
 }
+
+// progress.json (scenario/RunProgress.h): each stage as it begins, and the run's progress at most
+// every 10 wall seconds (the step loop reports it every 200 steps).
+class ProgressFile {
+ public:
+  ProgressFile(std::string dir, double duration) : dir_(std::move(dir)), duration_(duration) {}
+  void stage(const std::string& what, double fraction = -1.0, double t = 0.0) {
+    writeRunProgress(dir_, {what, fraction, t, duration_, -1.0});
+    last_ = Clock::now();
+  }
+  void running(double fraction, double t, double etaSeconds) {
+    if (secondsSince(last_) < 10.0) return;
+    writeRunProgress(dir_, {"running", fraction, t, duration_, etaSeconds});
+    last_ = Clock::now();
+  }
+
+ private:
+  std::string dir_;
+  double duration_;
+  Clock::time_point last_ = Clock::now();
+};
 
 // A run's start from its bed (cached or made now), the drive started; the bed's key, origin and
 // wall time go into `state`.
@@ -320,7 +342,7 @@ RunSummary summarise(const Case& run, const std::string& dir, const World& world
 // Returns false when options.stopAfterSteps stopped it first.
 bool stepToTheEnd(const Case& run, const RunOptions& options, const std::string& configToml, World& world,
                   RunState& state, FieldObserver& fields, RunObservers& observers, ProgressLine& progress,
-                  LogFile& log) {
+                  ProgressFile& progressFile, LogFile& log) {
   const RunSchedule& steps = run.steps;
   const std::string& dir = options.outDir;
   const double particles = static_cast<double>(world.particles().size());
@@ -355,10 +377,11 @@ bool stepToTheEnd(const Case& run, const RunOptions& options, const std::string&
       const double eta = done > 0 ? state.runWallSeconds / static_cast<double>(step) *
                                         static_cast<double>(steps.total - step)
                                   : -1.0;
-      progress.update("[run] " + formatNumber(100.0 * static_cast<double>(step) / static_cast<double>(steps.total)) +
-                      "%  t = " + formatNumber(world.time()) + " / " + formatNumber(run.config.run.duration) +
-                      "  ETA " + formatDuration(eta) + "  " + formatNumber(nsPerParticleStep) +
-                      " ns/particle-step  y = " + formatNumber(world.intruder().y));
+      const double fraction = static_cast<double>(step) / static_cast<double>(steps.total);
+      progressFile.running(fraction, world.time(), eta);
+      progress.update("[run] " + formatNumber(100.0 * fraction) + "%  t = " + formatNumber(world.time()) + " / " +
+                      formatNumber(run.config.run.duration) + "  ETA " + formatDuration(eta) + "  " +
+                      formatNumber(nsPerParticleStep) + " ns/particle-step  y = " + formatNumber(world.intruder().y));
       if (const int signal = stopSignalReceived(); signal != 0) {
         writeCheckpoint(dir, configToml, world, state, fields);
         progress.clear();
@@ -457,12 +480,16 @@ RunOutcome runExperiment(const Case& run, const RunOptions& options) {
 
   RunState state;
   FieldObserver fields(config.fields, config.box.width);
+  ProgressFile progressFile(dir, config.run.duration);
   std::optional<World> loaded;
   if (options.resume) {
     if (std::optional<Checkpoint> checkpoint = newestGoodCheckpoint(dir, config, configToml, log)) {
       loaded.emplace(std::move(checkpoint->world));
       state = std::move(checkpoint->state);
       fields = std::move(checkpoint->fields);
+      progressFile.stage("resumed from its checkpoint",
+                         static_cast<double>(loaded->stepCount()) / static_cast<double>(run.steps.total),
+                         loaded->time());
     }
   }
 
@@ -474,7 +501,9 @@ RunOutcome runExperiment(const Case& run, const RunOptions& options) {
   std::optional<StopSignalGuard> stopOnSignal;
   stopOnSignal.emplace();
   if (!loaded) {
+    progressFile.stage("making or loading its bed");
     loaded.emplace(startFromBed(run, state, log, progress));
+    progressFile.stage(state.bedFromCache ? "bed loaded from the cache, run started" : "bed made, run started");
     // A run without dumps leaves no dump file (not an empty one); one with dumps starts it afresh.
     std::error_code ec;
     if (run.steps.dumpEvery)
@@ -502,7 +531,7 @@ RunOutcome runExperiment(const Case& run, const RunOptions& options) {
 
   bool finished = false;
   try {
-    finished = stepToTheEnd(run, options, configToml, world, state, fields, observers, progress, log);
+    finished = stepToTheEnd(run, options, configToml, world, state, fields, observers, progress, progressFile, log);
   } catch (...) {
     progress.clear();
     throw;
@@ -515,7 +544,10 @@ RunOutcome runExperiment(const Case& run, const RunOptions& options) {
   }
   writeCheckpoint(dir, configToml, world, state, fields);
   stopOnSignal.reset();
-  return writeRunOutputs(run, dir, world, state, fields, log);
+  progressFile.stage("writing its results", 1.0, world.time());
+  RunOutcome outcome = writeRunOutputs(run, dir, world, state, fields, log);
+  progressFile.stage("finished", 1.0, world.time());
+  return outcome;
 }
 
 }  // namespace wiggle

@@ -1,9 +1,5 @@
 #include "sweep/SweepStatus.h"
 
-#include <fcntl.h>
-#include <sys/file.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -14,7 +10,9 @@
 #include "core/Error.h"
 #include "core/Format.h"
 #include "io/AtomicFile.h"
+#include "io/FileLock.h"
 #include "scenario/Experiment.h"
+#include "scenario/RunProgress.h"
 #include "sweep/ResultsTable.h"
 
 namespace wiggle {
@@ -23,44 +21,18 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// True when another process (a running sweep) holds the lock SweepRunner takes on the directory.
-bool lockHeld(const std::string& dir) {
-  const std::string path = dir + "/.sweep.lock";
-  if (!fs::exists(path)) return false;
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) return false;
-  const bool held = ::flock(fd, LOCK_SH | LOCK_NB) != 0;
-  if (!held) ::flock(fd, LOCK_UN);
-  ::close(fd);
-  return held;
-}
-
-// How far a running case is, from its log.txt (scenario/Experiment.cpp writes it): the fraction
-// of its run from the last "[run] 43.2%  t = ..." line (-1 when none yet: the log gets one every
-// 30 s), else what it is doing from the lines its start writes.
+// How far a running case is: its progress.json (scenario/RunProgress.h), which the run writes at
+// each stage and every few seconds as it steps.
 struct CaseProgress {
   double fraction = -1.0;
   std::string stage = "starting";
 };
 
-CaseProgress caseProgress(const std::string& logPath) {
+CaseProgress caseProgress(const std::string& caseDir) {
   CaseProgress p;
-  if (!fs::exists(logPath)) return p;
-  std::istringstream lines(readFile(logPath));
-  for (std::string line; std::getline(lines, line);) {
-    if (const auto at = line.find("[run] "); at != std::string::npos) {
-      double percent = 0.0;
-      if (std::sscanf(line.c_str() + at, "[run] %lf%%", &percent) == 1) p.fraction = percent / 100.0;
-    } else if (line.find(" run --resume in ") != std::string::npos || line.find(" run in ") != std::string::npos) {
-      p.stage = "making or loading its bed";  // the start line of each (re)start, before the bed
-      p.fraction = -1.0;
-    } else if (line.find("bed loaded from ") != std::string::npos) {
-      p.stage = "bed loaded from the cache, run started, no progress line yet";
-    } else if (line.find("bed made and cached") != std::string::npos) {
-      p.stage = "bed made, run started, no progress line yet";
-    } else if (line.find("resumed from ") != std::string::npos) {
-      p.stage = "resumed from its checkpoint, no progress line yet";
-    }
+  if (const std::optional<RunProgress> run = readRunProgress(caseDir)) {
+    p.fraction = run->fraction;
+    p.stage = run->stage;
   }
   return p;
 }
@@ -119,7 +91,7 @@ SweepStatus readSweepStatus(const std::string& dir) {
   const auto warningsIt = std::find(header.begin(), header.end(), "warnings");
   SweepStatus s;
   s.dir = dir;
-  s.sweepRunning = lockHeld(dir);
+  s.sweepRunning = FileLock::heldExclusivelyElsewhere(dir + "/.sweep.lock");
   const SweepLogFacts log = readSweepLog(dir + "/sweep.log");
   s.jobs = log.jobs;
   s.name = log.name;
@@ -149,7 +121,7 @@ SweepStatus readSweepStatus(const std::string& dir) {
       finishedWall += c.wallSeconds;
       ++finished;
     } else if (c.status == "running") {
-      const CaseProgress progress = caseProgress(caseDir + "/log.txt");
+      const CaseProgress progress = caseProgress(caseDir);
       c.fraction = progress.fraction;
       c.stage = progress.stage;
       c.warnings = readRunWarnings(caseDir);

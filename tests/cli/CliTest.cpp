@@ -468,7 +468,7 @@ namespace wiggle {
 namespace {
 
 // `wiggle status DIR` on a sweep directory as a stopped sweep leaves it: every state counted, the
-// running case's progress from its log, the failure's error (a quoted CSV cell with a comma), the
+// running case's progress from its progress.json, the failure's error (a quoted CSV cell with a comma), the
 // estimate from the finished cases over the sweep's jobs, and no sweep holding the directory.
 TEST_F(Cli, StatusSummarisesASweepDirectory) {
   const fs::path dir = root_ / "sweep";
@@ -483,8 +483,8 @@ TEST_F(Cli, StatusSummarisesASweepDirectory) {
       << "b,cases/b,running,,,,3,,,,,,\n"
       << "c,cases/c,failed,,,,1,,,,,\"box.width = 5 is too narrow, really\",\n"
       << "d,cases/d,pending,,,,2,,,,,,\n";
-  std::ofstream(dir / "cases" / "b" / "log.txt") << "2026-11-24 10:00:00  [run] 10%  t = 10 / 100\n"
-                                                  << "2026-11-24 10:00:30  [run] 25%  t = 25 / 100  ETA 1m\n";
+  std::ofstream(dir / "cases" / "b" / "progress.json")
+      << R"({"stage": "running", "fraction": 0.25, "t": 25, "duration": 100, "eta_s": 60})";
   std::ofstream(dir / "sweep.log") << "2026-11-24 09:00:00  wiggle sweep s: 4 cases; 2 jobs x 1 threads; host h\n";
   const Result r = wiggle("status " + quoted(dir.string()));
   ASSERT_EQ(r.status, 0) << r.err;
@@ -505,14 +505,13 @@ TEST_F(Cli, StatusSummarisesASweepDirectory) {
 // One truth for a case's state: results.csv says ok but the case's summary.json is garbage, so the
 // sweep would run it again (its --dry-run says so): `wiggle status` must not call it done. When
 // only failed cases are left, a rerun retries them: not "nothing left to run". A running case
-// whose log says its bed was loaded is not "making its bed".
+// whose progress.json says its bed was loaded is not "making its bed".
 TEST_F(Cli, StatusAgreesWithTheSweepOnWhatIsLeft) {
   const fs::path dir = root_ / "sweep";
   for (const char* c : {"a", "b", "c"}) fs::create_directories(dir / "cases" / c);
   std::ofstream(dir / "cases" / "a" / "summary.json") << "{garbage";
-  std::ofstream(dir / "cases" / "c" / "log.txt")
-      << "2026-11-24 10:00:00  wiggle 0.1.0 (git x) run --resume in cases/c with 1 thread, avx2 force kernels\n"
-      << "2026-11-24 10:00:01  bed loaded from /cache/bed-1.bin (200 grains, surface 12, 0.1 s)\n";
+  std::ofstream(dir / "cases" / "c" / "progress.json")
+      << R"({"stage": "bed loaded from the cache, run started", "fraction": -1, "t": 0, "duration": 100, "eta_s": -1})";
   std::ofstream(dir / "results.csv") << "case,run_dir,status,vy,vy_slope,wall_s,drive.period,error\n"
                                      << "a,cases/a,ok,0.1,0.1,600,5,\n"
                                      << "b,cases/b,failed,,,,3,blew up\n"

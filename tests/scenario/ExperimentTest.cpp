@@ -21,6 +21,7 @@
 #include "scenario/Checkpoint.h"
 #include "scenario/Experiment.h"
 #include "scenario/LammpsExport.h"
+#include "scenario/RunProgress.h"
 #include "scenario/RunSummary.h"
 
 namespace wiggle {
@@ -65,6 +66,11 @@ TEST(Experiment, ResumedRunIsBitwiseIdenticalToAnUninterruptedOne) {
   const RunOutcome reference = runExperiment(prepareCase(config), quiet(straight));
   ASSERT_EQ(reference.status, "ok");
   ASSERT_NE(readFile(straight + "/log.txt").find("bed made"), std::string::npos);
+  const std::optional<RunProgress> done = readRunProgress(straight);  // what `wiggle status` reads
+  ASSERT_TRUE(done.has_value());
+  EXPECT_EQ(done->stage, "finished");
+  EXPECT_EQ(done->fraction, 1.0);
+  EXPECT_DOUBLE_EQ(done->t, config.run.duration);
 
   RunOptions stop = quiet(interrupted);
   stop.stopAfterSteps = 1700;  // mid-period, between samples and dump frames

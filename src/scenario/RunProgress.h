@@ -1,0 +1,26 @@
+#pragma once
+// A run directory's progress.json: what the run is doing and how far it is, written by the run
+// (scenario/Experiment.cpp) as it goes and read by `wiggle status` and `wiggle report`
+// (sweep/SweepStatus), so that they read data, not the log lines written for people. Written
+// atomically (io/AtomicFile): a reader sees the previous state or the new one, never half of one.
+// docs/OUTPUT-FORMATS.md lists its fields.
+#include <optional>
+#include <string>
+
+namespace wiggle {
+
+struct RunProgress {
+  std::string stage;         // what it is doing, in words: "making or loading its bed", "running", ...
+  double fraction = -1.0;    // of the run's steps done; -1 before the run's first step
+  double t = 0.0;            // the run's time [sqrt(d/g)]
+  double duration = 0.0;     // run.duration [sqrt(d/g)]
+  double etaSeconds = -1.0;  // wall seconds left, estimated; -1 when not known yet
+};
+
+std::string runProgressPath(const std::string& runDir);
+void writeRunProgress(const std::string& runDir, const RunProgress& progress);
+// The run's progress, or nothing when it has none (not started, or run by a wiggle that did not
+// write it) or it cannot be read.
+std::optional<RunProgress> readRunProgress(const std::string& runDir);
+
+}  // namespace wiggle
