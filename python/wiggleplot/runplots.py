@@ -274,6 +274,22 @@ FIELD_ROWS = (
 )
 
 
+ARROW_SPACING = 2.5  # [d] between the velocity arrows drawn on the |v| maps, as the paper's figures 9-11
+
+
+def velocity_arrows(ax, grids, j, vmax):
+    """The mean velocity's direction and size on a |v| map: arrows every ARROW_SPACING, scaled so
+    that a speed of vmax (the row's colour limit) spans 0.9 of the spacing; none where masked."""
+    xs, ys = grids["x"], grids["y"]
+    step = max(1, int(round(ARROW_SPACING / (xs[1] - xs[0])))) if len(xs) > 1 else 1
+    gx, gy = np.meshgrid(xs[::step], ys[::step])
+    u = grids["vx"][j][::step, ::step]
+    v = grids["vy"][j][::step, ::step]
+    length = 0.9 * step * (xs[1] - xs[0] if len(xs) > 1 else 1.0)
+    ax.quiver(gx, gy, u, v, color="white", edgecolor="black", linewidth=0.3, angles="xy", scale_units="xy",
+              scale=max(vmax, 1e-12) / length, width=0.006, headwidth=3.5, pivot="mid")
+
+
 def field_data(run):
     """(grids, outline, outline source) for the field maps, or None when there is no fields.csv."""
     try:
@@ -316,6 +332,8 @@ def plot_fields(run, out_dir, formats):
             cm.set_bad("white")
             image = ax.imshow(grids[name][j], origin="lower", extent=extent, cmap=cm, vmin=vmin,
                               vmax=vmax, interpolation="nearest")
+            if name == "speed":
+                velocity_arrows(ax, grids, j, vmax)
             if outline is not None:
                 ax.add_patch(Polygon(outline, closed=True, facecolor="0.55", edgecolor="black", lw=0.6))
             ax.set_aspect("equal")
