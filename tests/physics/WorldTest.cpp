@@ -45,6 +45,25 @@ World makePile(int columns, int rows, std::uint64_t seed, double clearX = -100, 
   return w;
 }
 
+// Two worlds in the same state stay in the same state, bit for bit, over `steps` more steps.
+void expectSameCourse(World& a, World& b, std::uint64_t steps) {
+  EXPECT_EQ(a.stateHash(), b.stateHash());
+  a.run(steps);
+  b.run(steps);
+  EXPECT_EQ(a.stateHash(), b.stateHash());
+}
+
+// The world written by save and read back by load, the whole state read (a round trip of the
+// checkpoints' and beds' payload).
+World savedAndLoaded(const World& w) {
+  BinaryWriter out;
+  w.save(out);
+  BinaryReader in(out.bytes().data(), out.bytes().size(), "test state");
+  World loaded = World::load(in);
+  EXPECT_TRUE(in.atEnd());
+  return loaded;
+}
+
 std::uint32_t indexOfTag(const ParticleStore& s, std::uint32_t tag) {
   return static_cast<std::uint32_t>(std::find(s.tag.begin(), s.tag.end(), tag) - s.tag.begin());
 }
@@ -255,15 +274,9 @@ TEST(World, BitwiseIdenticalForEveryForceKernel) {
 TEST(World, SaveAndLoadContinueBitForBit) {
   World a = makePile(10, 6, 11);
   a.run(3000);
-  BinaryWriter out;
-  a.save(out);
-  BinaryReader in(out.bytes().data(), out.bytes().size(), "test state");
-  World b = World::load(in);
-  EXPECT_TRUE(in.atEnd());
+  World b = savedAndLoaded(a);
   EXPECT_EQ(a.stateHash(), b.stateHash());
-  a.run(2000);
-  b.run(2000);
-  EXPECT_EQ(a.stateHash(), b.stateHash());
+  expectSameCourse(a, b, 2000);
 }
 
 // The same pile under the Hooke law: the law is used (another state), saved and restored.
@@ -276,14 +289,9 @@ TEST(World, HookeWorldKeepsItsLawThroughSaveAndLoad) {
   a.run(10000);  // the lattice has fallen onto the base by t = 0.7: contacts under each law
   hertz.run(10000);
   EXPECT_NE(a.stateHash(), hertz.stateHash());
-  BinaryWriter out;
-  a.save(out);
-  BinaryReader in(out.bytes().data(), out.bytes().size(), "test state");
-  World b = World::load(in);
+  World b = savedAndLoaded(a);
   EXPECT_EQ(b.def().contact.law, ContactLaw::Hooke);
-  a.run(2000);
-  b.run(2000);
-  EXPECT_EQ(a.stateHash(), b.stateHash());
+  expectSameCourse(a, b, 2000);
 }
 
 // A state written before the law was saved (state format 2: no law byte after mu) loads as the
@@ -303,9 +311,7 @@ TEST(World, StateOfTheOldestFormatLoadsAsHertz) {
   EXPECT_TRUE(in.atEnd());
   EXPECT_EQ(b.def().contact.law, ContactLaw::Hertz);
   EXPECT_EQ(a.stateHash(), b.stateHash());
-  a.run(1000);
-  b.run(1000);
-  EXPECT_EQ(a.stateHash(), b.stateHash());
+  expectSameCourse(a, b, 1000);
 }
 
 TEST(World, TruncatedStateIsRejected) {
@@ -522,14 +528,9 @@ TEST(World, VelocityDriveHasItsPeakSpeedAndContinuesBitForBit) {
   const double w = 2.0 * std::numbers::pi / 0.5;
   EXPECT_NEAR(a.intruder().x, 5.0 + 1.5 / w * (1 - std::cos(w * a.time())), 1e-12);
   EXPECT_NEAR(a.intruder().vx, 1.5 * std::sin(w * a.time()), 1e-12);
-  BinaryWriter out;
-  a.save(out);
-  BinaryReader in(out.bytes().data(), out.bytes().size(), "test state");
-  World b = World::load(in);
+  World b = savedAndLoaded(a);
   EXPECT_EQ(b.intruderMotion().kind, HorizontalMotion::VelocitySinusoid);
-  a.run(5000);
-  b.run(5000);
-  EXPECT_EQ(a.stateHash(), b.stateHash());
+  expectSameCourse(a, b, 5000);
 }
 
 // A prescribed drive (a function of t, the Python module's drives) that computes the sine as
@@ -579,11 +580,7 @@ TEST(World, RampedDriveSavedMidRampContinuesBitForBit) {
   a.setIntruderMotion({HorizontalMotion::RampedSinusoid, 5.0, 1.0, 0.5, 0.0, true, 1.0});
   a.resetClock();
   a.run(3000);  // t = 0.3, inside the ramp
-  BinaryWriter out;
-  a.save(out);
-  BinaryReader in(out.bytes().data(), out.bytes().size(), "test state");
-  World b = World::load(in);
-  EXPECT_TRUE(in.atEnd());
+  World b = savedAndLoaded(a);
   EXPECT_EQ(b.intruderMotion().rampTime, 1.0);
   a.run(10000);  // across the end of the ramp
   b.run(10000);
