@@ -11,8 +11,9 @@ source tree (its tracked files, no build, nothing set in the environment but PAT
    first with nothing built (it must raise the package's own WiggleError saying what to do, not a
    raw FileNotFoundError), then with the copy built (build/release linked to BUILD_DIR): it must
    find the build tree's wiggle and return the run.
-3. docs/PYTHON.md's `import wiggle` line and its ```python examples, at the root of the built copy
-   (when the module is built).
+3. docs/PYTHON.md's `import wiggle` line, its ```python examples and the engine's notebook
+   (examples/engine.ipynb) by its documented command, at the root of the built copy (when the
+   module is built).
 4. The notebook as `cmake --install` puts it (share/wiggle/examples), run where it was installed,
    and `import wiggle` from where the install puts the module (PYTHONPATH=PREFIX/share/wiggle/python).
 Every command is taken from the documents' text (a test of the text, not of a variant of it).
@@ -28,6 +29,7 @@ import sys
 import tempfile
 
 NOTEBOOK_COMMAND = "jupyter nbconvert --to notebook --execute examples/figures.ipynb"
+ENGINE_NOTEBOOK_COMMAND = "PYTHONPATH=$PWD/build/release/python jupyter nbconvert --to notebook --execute examples/engine.ipynb"
 failures = []
 
 
@@ -62,8 +64,8 @@ def shell(command, cwd, home, extra=None):
                           timeout=1200)
 
 
-def executed_notebook_ok(path, what):
-    """Whether the executed notebook at `path` holds figures 5 and 14 and no error."""
+def executed_notebook_ok(path, what, figures=3, what_figures="figures 5, 14 and a trajectory"):
+    """Whether the executed notebook at `path` holds its figures and no error."""
     if not check(os.path.exists(path), f"{what}: no executed notebook {path}"):
         return
     with open(path, encoding="utf-8") as f:
@@ -72,7 +74,7 @@ def executed_notebook_ok(path, what):
     images = sum("image/png" in o.get("data", {}) for o in outputs)
     errors = [o for o in outputs if o.get("output_type") == "error"]
     check(not errors, f"{what}: the notebook raised {errors[:1]}")
-    check(images >= 3, f"{what}: {images} figures shown, expected figures 5, 14 and a trajectory")
+    check(images >= figures, f"{what}: {images} figures shown, expected {what_figures}")
 
 
 def main():
@@ -121,6 +123,14 @@ def main():
                 if check(done.returncode == 0, f"docs/PYTHON.md's line: exit {done.returncode}: {done.stderr[-1500:]}"):
                     check(re.search(r"^1\.0 [-+0-9.e]+ [0-9a-f]{16}$", done.stdout, re.M) is not None,
                           f"docs/PYTHON.md's line printed {done.stdout!r}")
+                # the engine's notebook, by the command docs/PYTHON.md and the notebook give;
+                for where in (os.path.join("docs", "PYTHON.md"), os.path.join("examples", "engine.ipynb")):
+                    check(documented(os.path.join(tree, where), ENGINE_NOTEBOOK_COMMAND),
+                          f"{where} no longer gives the engine notebook's command")
+                done = shell(ENGINE_NOTEBOOK_COMMAND, tree, home, cache)
+                if check(done.returncode == 0, f"`{ENGINE_NOTEBOOK_COMMAND}`: exit {done.returncode}: {done.stderr[-1500:]}"):
+                    executed_notebook_ok(os.path.join(tree, "examples", "engine.nbconvert.ipynb"), "engine notebook",
+                                         figures=2, what_figures="the grains with the path, and y(t) with the counts")
                 # and its ```python examples, each as written (the module on PYTHONPATH as in the line).
                 with open(os.path.join(tree, "docs", "PYTHON.md"), encoding="utf-8") as f:
                     blocks = re.findall(r"^```python\n(.*?)^```$", f.read(), re.M | re.S)
