@@ -13,8 +13,8 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string file = wiggle::fuzz::withValidChecksum(data, size);
   try {
-    const std::string payload = wiggle::parseStateFile(file, "fuzz.bin", "bed");
-    wiggle::BinaryReader in(payload.data(), payload.size(), "fuzz.bin");
+    const wiggle::StatePayload payload = wiggle::parseStateFile(file, "fuzz.bin", "bed");
+    wiggle::BinaryReader in(payload.bytes.data(), payload.bytes.size(), "fuzz.bin", payload.version);
     const std::string key = in.string();
     const wiggle::World world = wiggle::parseCachedBed(file, "fuzz.bin", key);
     (void)world.stateHash();

@@ -15,8 +15,8 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string file = wiggle::fuzz::withValidChecksum(data, size);
   try {
-    const std::string payload = wiggle::parseStateFile(file, "fuzz.bin", "checkpoint");
-    wiggle::BinaryReader in(payload.data(), payload.size(), "fuzz.bin");
+    const wiggle::StatePayload payload = wiggle::parseStateFile(file, "fuzz.bin", "checkpoint");
+    wiggle::BinaryReader in(payload.bytes.data(), payload.bytes.size(), "fuzz.bin", payload.version);
     const std::string configToml = in.string();
     const wiggle::RunConfig config = wiggle::parseRunConfig(configToml, "fuzz.bin config");
     wiggle::Checkpoint checkpoint = wiggle::parseCheckpoint(file, "fuzz.bin", config, configToml);
