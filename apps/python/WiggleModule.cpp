@@ -15,11 +15,13 @@
 #include <string>
 #include <vector>
 
+#include "analysis/RiseRate.h"
 #include "core/Error.h"
 #include "core/Format.h"
 #include "io/Config.h"
 #include "physics/World.h"
 #include "scenario/Case.h"
+#include "scenario/Checkpoint.h"
 #include "scenario/Experiment.h"
 
 namespace py = pybind11;
@@ -54,6 +56,7 @@ class PyCase {
     world_.emplace(std::move(bed.world));
     if (drive) installDrive(*drive, peakSpeed);
     world_->evaluateForces();  // the start's forces, as `wiggle run` evaluates them before its first step
+    record_.sample(world_->intruder(), world_->time());  // and its first sample, as `wiggle run` takes it
   }
 
   void step(std::uint64_t n) {
@@ -61,7 +64,9 @@ class PyCase {
     try {
       py::gil_scoped_release release;
       if (threads_ > 0) omp_set_num_threads(threads_);
-      world_->run(n);
+      world_->runWatchingIntruder(n, [this](const ClumpState& intruder, std::uint64_t step, double time) {
+        record_.recordStep(run_.steps, intruder, step, time);
+      });
     } catch (const py::error_already_set& e) {
       failed_ = "its drive raised " + std::string(e.what());
       throw;
@@ -97,6 +102,28 @@ class PyCase {
     return a;
   }
 
+  // The run's own record so far (RunState: the trajectory samples and the phase bins, as `wiggle
+  // run` keeps them) and the rise rate by its rules over the paper's window of the time stepped so
+  // far, as if the run ended now (analysis/RiseRate.h).
+  const RunState& record() const { return record_; }
+  py::dict riseRate() const {
+    const RateWindow window = paperWindow(world_->time());
+    const double period = run_.config.drive.period;
+    const RiseRate rate = measureRiseRate(record_.samples, window, period, run_.surfacedHeight);
+    const SettledRate settled = measureSettledRate(record_.samples, window, period, rate, SettleRule{});
+    py::dict d;
+    d["vy"] = rate.vy;
+    d["vy_slope"] = rate.slope;
+    d["t_i"] = rate.tInitial;  // summary.json's names (docs/summary-schema.json)
+    d["t_f"] = rate.tFinal;
+    d["plateau"] = rate.plateau;
+    d["vy_window_periods"] = rate.windowPeriods;
+    d["vy_settled"] = settled.vy;
+    d["t_settled"] = settled.tSettled;
+    d["settled"] = settled.settled;
+    return d;
+  }
+
   const World& world() const { return *world_; }
   const Case& run() const { return run_; }
   const std::string& bedPath() const { return bedPath_; }
@@ -120,6 +147,7 @@ class PyCase {
   int threads_;
   std::optional<World> world_;
   std::string bedPath_;
+  RunState record_;                    // what `wiggle run` records of the intruder (recordStep)
   py::object drive_;                   // a Python drive (setDrive), alive as long as the world calls it
   std::optional<std::string> failed_;  // why the last step failed
 };
@@ -158,6 +186,49 @@ PYBIND11_MODULE(wiggle, m) {
       .def(
           "state_hash", [](const PyCase& c) { return c.world().stateHash(); },
           "The hash of the whole dynamic state, as summary.json's state_hash")
+      .def("rise_rate", &PyCase::riseRate,
+           "V_y by wiggle run's rules over t = 0.1 t to t, t the time stepped so far: what summary.json would say "
+           "had the run ended now, by its names (vy, vy_slope, t_i, t_f, plateau, vy_window_periods, vy_settled, "
+           "t_settled, settled)")
+      .def_property_readonly(
+          "trajectory",
+          [](const PyCase& c) {
+            const auto& samples = c.record().samples;
+            py::dict d;
+            const std::pair<const char*, double wiggle::TrajectorySample::*> columns[] = {
+                {"t", &wiggle::TrajectorySample::t},   {"x", &wiggle::TrajectorySample::x},
+                {"y", &wiggle::TrajectorySample::y},   {"vx", &wiggle::TrajectorySample::vx},
+                {"vy", &wiggle::TrajectorySample::vy}, {"fy", &wiggle::TrajectorySample::fy}};
+            for (const auto& [name, member] : columns) {
+              py::array_t<double> a(samples.size());
+              auto out = a.mutable_unchecked<1>();
+              for (std::size_t i = 0; i < samples.size(); ++i) out(i) = samples[i].*member;
+              d[name] = a;
+            }
+            return d;
+          },
+          "The intruder's samples so far, every run.sample_interval from t = 0, as trajectory.csv's columns "
+          "t, x, y, vx, vy, fy (copies)")
+      .def_property_readonly(
+          "phase_rates",
+          [](const PyCase& c) {
+            const wiggle::RunState& r = c.record();
+            py::array_t<double> centre(wiggle::kPhaseBins), mean(wiggle::kPhaseBins);
+            py::array_t<std::uint64_t> count(wiggle::kPhaseBins);
+            for (int k = 0; k < wiggle::kPhaseBins; ++k) {
+              centre.mutable_at(k) = k + 0.5;
+              count.mutable_at(k) = r.phaseCount[k];
+              mean.mutable_at(k) =
+                  r.phaseCount[k] ? r.phaseSum[k] / static_cast<double>(r.phaseCount[k]) : std::nan("");
+            }
+            py::dict d;
+            d["phase_center"] = centre;
+            d["vy_mean"] = mean;
+            d["samples"] = count;
+            return d;
+          },
+          "Mean v_y of the intruder per phase bin (10 phi / pi, 20 bins) over the steps after t_i = 0.1 "
+          "run.duration, as phase_rates.csv's columns")
       .def_property_readonly(
           "t", [](const PyCase& c) { return c.world().time(); }, "Time [sqrt(d/g)]")
       .def_property_readonly(

@@ -12,6 +12,7 @@
 #include "core/BinaryStream.h"
 #include "io/RunConfig.h"
 #include "physics/World.h"
+#include "scenario/Case.h"
 
 namespace wiggle {
 
@@ -27,6 +28,22 @@ struct RunState {
   double bedWallSeconds = 0.0;
   std::string bedKey;
   bool bedFromCache = false;
+
+  // A trajectory sample of the intruder now.
+  void sample(const ClumpState& intruder, double time) {
+    samples.push_back({time, intruder.x, intruder.y, intruder.vx, intruder.vy, intruder.contactFy});
+  }
+  // What a run records of the intruder after each step (the one rule, used by `wiggle run` and the
+  // Python module): its v_y in the step's phase bin once past t_i, and a sample every
+  // run.sample_interval.
+  void recordStep(const RunSchedule& steps, const ClumpState& intruder, std::uint64_t step, double time) {
+    if (step > steps.firstMeasured) {
+      const auto bin = static_cast<std::size_t>((step % steps.period) * kPhaseBins / steps.period);
+      phaseSum[bin] += intruder.vy;
+      ++phaseCount[bin];
+    }
+    if (step % steps.sampleEvery == 0) sample(intruder, time);
+  }
 
   void save(BinaryWriter& out) const;
   void load(BinaryReader& in);

@@ -214,8 +214,7 @@ class RunObservers {
   RunObservers(const Case& run, RunState& state, FieldObserver& fields, std::string dumpPath)
       : run_(run), state_(state), fields_(fields), dumpPath_(std::move(dumpPath)) {}
 
-  void sample(const ClumpState& c, double time) { state_.samples.push_back({time, c.x, c.y, c.vx, c.vy, c.contactFy}); }
-  void sample(const World& world) { sample(world.intruder(), world.time()); }
+  void sample(const World& world) { state_.sample(world.intruder(), world.time()); }
 
   void dumpFrame(const World& world) {
     const std::string frame = lammpsDumpFrame(world);
@@ -225,13 +224,7 @@ class RunObservers {
 
   // After every step, from the intruder's state alone (World::runWatchingIntruder).
   void afterStep(const ClumpState& intruder, std::uint64_t step, double time) {
-    const RunSchedule& steps = run_.steps;
-    if (step > steps.firstMeasured) {
-      const int bin = static_cast<int>((step % steps.period) * kPhaseBins / steps.period);
-      state_.phaseSum[bin] += intruder.vy;
-      ++state_.phaseCount[bin];
-    }
-    if (step % steps.sampleEvery == 0) sample(intruder, time);
+    state_.recordStep(run_.steps, intruder, step, time);
   }
 
   // Whether the grains are observed after this step: a field frame or a dump frame.

@@ -58,7 +58,10 @@ class Engine(unittest.TestCase):
         subprocess.run([WIGGLE, "run", cls.config, "--out", out, "--threads", "1"], check=True,
                        stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         with open(os.path.join(out, "summary.json")) as f:
-            cls.cli_hash = json.load(f)["state_hash"]
+            cls.summary = json.load(f)
+        cls.cli_hash = cls.summary["state_hash"]
+        cls.cli_trajectory = np.genfromtxt(os.path.join(out, "trajectory.csv"), delimiter=",", names=True)
+        cls.cli_phase_rates = np.genfromtxt(os.path.join(out, "phase_rates.csv"), delimiter=",", names=True)
 
     @classmethod
     def tearDownClass(cls):
@@ -78,6 +81,22 @@ class Engine(unittest.TestCase):
         by_time.advance(0.25)
         by_time.advance(0.5)
         self.assertEqual(by_time.state_hash(), self.cli_hash)
+
+    def test_the_run_record_and_its_rates_are_wiggle_runs(self):
+        # Stepped to the run's end, the case's own record gives summary.json's numbers and the files' columns.
+        c = wiggle.Case(self.config, threads=1)
+        c.step(2500)
+        c.step(2500)
+        rate = c.rise_rate()
+        for key in ("vy", "vy_slope", "t_i", "t_f", "plateau", "vy_window_periods", "vy_settled", "t_settled", "settled"):
+            self.assertEqual(rate[key], self.summary[key], key)  # the same doubles, by summary.json's names
+        traj = c.trajectory
+        self.assertEqual(len(traj["t"]), len(self.cli_trajectory))
+        for name in ("t", "x", "y", "vx", "vy", "fy"):  # the CSV holds 10 significant digits
+            np.testing.assert_allclose(traj[name], self.cli_trajectory[name], rtol=1e-9, atol=1e-12, err_msg=name)
+        rates = c.phase_rates
+        np.testing.assert_array_equal(rates["samples"], self.cli_phase_rates["samples"])
+        np.testing.assert_allclose(rates["vy_mean"], self.cli_phase_rates["vy_mean"], rtol=1e-9, atol=1e-12)
 
     def test_arrays_are_read_only_views_of_the_engine(self):
         c = wiggle.Case(self.config, threads=1)
