@@ -11,6 +11,7 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -18,6 +19,7 @@
 #include "analysis/RiseRate.h"
 #include "core/Error.h"
 #include "core/Format.h"
+#include "io/AtomicFile.h"
 #include "io/Config.h"
 #include "physics/World.h"
 #include "scenario/Case.h"
@@ -53,10 +55,41 @@ class PyCase {
       : run_(prepareCase(loadRunConfig(configPath, overridesOf(overrides)))), threads_(threads) {
     CachedBed bed = startRun(run_);
     bedPath_ = bed.path;
+    record_.bedKey = bed.key;
+    record_.bedFromCache = bed.fromCache;
     world_.emplace(std::move(bed.world));
     if (drive) installDrive(*drive, peakSpeed);
     world_->evaluateForces();  // the start's forces, as `wiggle run` evaluates them before its first step
     record_.sample(world_->intruder(), world_->time());  // and its first sample, as `wiggle run` takes it
+  }
+
+  // A run directory's case, from its newest checkpoint (as `wiggle run --resume` takes it).
+  static PyCase load(const std::string& dir, int threads) {
+    const std::string configPath = dir + "/config.toml";
+    if (!std::filesystem::exists(configPath)) throw Error("load: " + dir + " holds no run (no config.toml)");
+    const std::string configToml = readFile(configPath);
+    Case run = prepareCase(parseRunConfig(configToml, configPath));
+    const std::string path = checkpointPath(dir);
+    if (!std::filesystem::exists(path)) throw Error("load: " + dir + " holds no checkpoint.bin");
+    Checkpoint checkpoint = parseCheckpoint(readFile(path), path, run.config, configToml);
+    return PyCase(std::move(run), std::move(checkpoint), threads);
+  }
+
+  // The case as a run directory that `wiggle run --out DIR --resume` continues and Case.load reads:
+  // its config.toml and the checkpoint `wiggle run` would have written at this step. The Python
+  // case takes no field or dump frames, so a config with them is refused rather than saved without
+  // them; a case with a Python drive cannot be saved (World::save).
+  void save(const std::string& dir) const {
+    const RunConfig& config = run_.config;
+    if (config.fields.enabled || run_.steps.dumpEvery)
+      throw Error("save: the Python case takes no field or dump frames, so a checkpoint of it would miss them: "
+                  "make the case with fields.enabled = false and run.dump_interval = 0");
+    if (std::filesystem::exists(checkpointPath(dir)) || std::filesystem::exists(dir + "/summary.json"))
+      throw Error("save: " + dir + " already holds a run");
+    std::filesystem::create_directories(dir);
+    const std::string configToml = toToml(config);
+    writeFileAtomically(dir + "/config.toml", configToml);
+    writeCheckpoint(dir, configToml, *world_, record_, FieldObserver(config.fields, config.box.width));
   }
 
   void step(std::uint64_t n) {
@@ -129,6 +162,11 @@ class PyCase {
   const std::string& bedPath() const { return bedPath_; }
 
  private:
+  PyCase(Case run, Checkpoint checkpoint, int threads) : run_(std::move(run)), threads_(threads) {
+    world_.emplace(std::move(checkpoint.world));
+    record_ = std::move(checkpoint.state);
+  }
+
   void installDrive(const py::function& drive, double peakSpeed) {
     wiggle::ClumpMotion motion = world_->intruderMotion();
     motion.kind = wiggle::HorizontalMotion::Prescribed;
@@ -177,6 +215,13 @@ PYBIND11_MODULE(wiggle, m) {
           "config_path: a run config (None: the defaults); overrides: {\"drive.period\": 2.0, ...} as --set; "
           "threads: OpenMP threads while stepping (0: as the environment says); drive, peak_speed: the "
           "intruder's x driven by drive(t) -> (dx, vx) from t = 0 instead of the config's drive (see set_drive)")
+      .def_static("load", &PyCase::load, py::arg("dir"), py::arg("threads") = 0,
+                  "The case of a run directory, from its newest checkpoint, as `wiggle run --out DIR --resume` "
+                  "continues it (the same bits)")
+      .def("save", &PyCase::save, py::arg("dir"),
+           "Write the case as a run directory (config.toml and the checkpoint `wiggle run` writes at this step): "
+           "`wiggle run --out DIR --resume` finishes it, Case.load(DIR) continues it. Needs fields.enabled = false "
+           "and run.dump_interval = 0, and the config's drive")
       .def("step", &PyCase::step, py::arg("n") = 1, "Advance n steps (the GIL is released meanwhile)")
       .def("advance", &PyCase::advance, py::arg("t"), "Step to time t [sqrt(d/g)]")
       .def("set_drive", &PyCase::setDrive, py::arg("drive"), py::arg("peak_speed"),

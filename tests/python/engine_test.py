@@ -98,6 +98,33 @@ class Engine(unittest.TestCase):
         np.testing.assert_array_equal(rates["samples"], self.cli_phase_rates["samples"])
         np.testing.assert_allclose(rates["vy_mean"], self.cli_phase_rates["vy_mean"], rtol=1e-9, atol=1e-12)
 
+    def test_save_and_load_are_wiggle_runs_checkpoints(self):
+        # Saved mid-run, the case is a run directory: `wiggle run --resume` finishes it and
+        # Case.load continues it, both to wiggle run's bits.
+        c = wiggle.Case(self.config, threads=1)
+        c.step(2000)
+        saved = os.path.join(self.tmp.name, "saved")
+        c.save(saved)
+        with self.assertRaisesRegex(wiggle.Error, "already holds a run"):
+            c.save(saved)
+        again = wiggle.Case.load(saved, threads=1)
+        self.assertEqual(again.steps, 2000)
+        self.assertEqual(again.state_hash(), c.state_hash())
+        again.step(3000)
+        self.assertEqual(again.state_hash(), self.cli_hash)
+        self.assertEqual(again.rise_rate()["vy"], self.summary["vy"])  # its record came with it
+        subprocess.run([WIGGLE, "run", "--out", saved, "--resume", "--threads", "1"], check=True,
+                       stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        with open(os.path.join(saved, "summary.json")) as f:
+            finished = json.load(f)
+        self.assertEqual(finished["state_hash"], self.cli_hash)
+        self.assertEqual(finished["vy"], self.summary["vy"])
+        with self.assertRaisesRegex(wiggle.Error, "fields.enabled = false"):
+            wiggle.Case(self.config, overrides={"fields.enabled": True}, threads=1).save(
+                os.path.join(self.tmp.name, "with-fields"))
+        with self.assertRaisesRegex(wiggle.Error, "holds no run"):
+            wiggle.Case.load(os.path.join(self.tmp.name, "nowhere"))
+
     def test_arrays_are_read_only_views_of_the_engine(self):
         c = wiggle.Case(self.config, threads=1)
         x = c.x
