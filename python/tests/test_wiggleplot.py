@@ -12,7 +12,7 @@ import unittest
 import numpy as np
 
 from tests import synthetic
-from wiggleplot import cli, geomplots, prepare, readers, runplots, sweepplots
+from wiggleplot import cli, geomplots, prepare, readers, report, runplots, sweepplots
 from wiggleplot.report import Report
 
 
@@ -485,7 +485,7 @@ class FigureFilesTest(DataDirs):
 
     def test_os_errors_are_one_line_without_errno(self):
         e = PermissionError(13, "Permission denied", "/ro/figures/trajectory.png")
-        self.assertEqual(cli.os_error_line(e), "/ro/figures/trajectory.png: Permission denied")
+        self.assertEqual(report.os_error_line(e), "/ro/figures/trajectory.png: Permission denied")
 
 
 if __name__ == "__main__":

@@ -60,13 +60,6 @@ def make_out_dir(out, given):
     return None
 
 
-def os_error_line(e):
-    """One line for an OSError: 'PATH: Permission denied', not "[Errno 13] Permission denied: 'PATH'"."""
-    if e.strerror and e.filename:
-        return f"{e.filename}: {e.strerror}"
-    return str(e).splitlines()[0] if str(e) else type(e).__name__
-
-
 def fail(message, code=2):
     print(f"wiggleplot: {message}", file=sys.stderr)
     return code
@@ -80,7 +73,7 @@ def main(argv=None):
     except ImportError as e:
         return fail(f"{e.name} is not installed (Debian: apt-get install python3-matplotlib python3-numpy)", 3)
     from wiggleplot import geomplots, readers, runplots, sweepplots
-    from wiggleplot.report import Report
+    from wiggleplot.report import Report, os_error_line
 
     if args.movie and runplots.find_ffmpeg() is None:  # asked for, so its absence is an error
         return fail("--movie needs ffmpeg, which is not installed (Debian: apt-get install ffmpeg)", 3)

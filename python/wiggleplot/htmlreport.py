@@ -95,7 +95,7 @@ def draw_missing_figures(sweep_dir, report):
     if sweep_figures(fig_dir):
         return None
     from wiggleplot import sweepplots
-    from wiggleplot.cli import os_error_line
+    from wiggleplot.report import os_error_line
     try:
         os.makedirs(fig_dir, exist_ok=True)
         sweepplots.plot_sweep(sweep_dir, fig_dir, ["png", "pdf"], report)

@@ -1,5 +1,13 @@
-"""What a plotting call did: the files it wrote and the notes on what it skipped and why."""
+"""What a plotting call did: the files it wrote and the notes on what it skipped and why; and an
+OSError said in one line, as the command line and the HTML report both say it."""
 import sys
+
+
+def os_error_line(e):
+    """One line for an OSError: 'PATH: Permission denied', not "[Errno 13] Permission denied: 'PATH'"."""
+    if e.strerror and e.filename:
+        return f"{e.filename}: {e.strerror}"
+    return str(e).splitlines()[0] if str(e) else type(e).__name__
 
 
 class Report:
