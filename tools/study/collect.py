@@ -1,11 +1,12 @@
 #!/usr/bin/python3
 """Copy a sweep's results (not its checkpoints or dumps) into the repository, so they outlive the machine.
 
-    tools/study/collect.py SWEEP_DIR DEST
+    tools/study/collect.py SWEEP_DIR DEST [--fields]
 
 Copies SWEEP_DIR/results.csv and sweep.log, and for every case directory the files that are the
 result and how it was made: config.toml, summary.json, trajectory.csv, phase_rates.csv, model.json,
-log.txt (a case still running contributes its config and log only). Checkpoints, dumps and beds
+log.txt (a case still running contributes its config and log only); with --fields also each case's
+fields.csv (about 2 MB at the default grid), for a study whose result is its field maps. Checkpoints, dumps and beds
 stay behind: they are large and any of them can be made again from the config, bit for bit.
 Run it again as the sweep goes on; it overwrites what it copied before, except that DEST/sweep.log
 keeps the lines of earlier sweep directories: a later session continues the sweep from the sweep
@@ -37,10 +38,14 @@ def read_lines(path):
 
 
 def main():
-    if len(sys.argv) != 3:
+    args = sys.argv[1:]
+    with_fields = "--fields" in args
+    args = [a for a in args if a != "--fields"]
+    if len(args) != 2:
         print("usage: " + __doc__.strip().splitlines()[2].strip(), file=sys.stderr)
         sys.exit(2)
-    src, dest = sys.argv[1], sys.argv[2]
+    src, dest = args
+    files = CASE_FILES + (("fields.csv",) if with_fields else ())
     if not os.path.isfile(os.path.join(src, "results.csv")):
         print(f"collect: {src} is not a sweep directory (no results.csv)", file=sys.stderr)
         sys.exit(2)
@@ -53,7 +58,7 @@ def main():
     copied = 0
     cases = os.path.join(src, "cases")
     for case in sorted(os.listdir(cases)) if os.path.isdir(cases) else []:
-        for name in CASE_FILES:
+        for name in files:
             path = os.path.join(cases, case, name)
             if os.path.exists(path):
                 os.makedirs(os.path.join(dest, "cases", case), exist_ok=True)
