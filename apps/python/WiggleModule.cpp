@@ -25,6 +25,7 @@
 #include "scenario/Case.h"
 #include "scenario/Checkpoint.h"
 #include "scenario/Experiment.h"
+#include "scenario/Remeasure.h"
 
 namespace py = pybind11;
 
@@ -82,13 +83,11 @@ class PyCase {
   void save(const std::string& dir) const {
     const RunConfig& config = run_.config;
     if (config.fields.enabled || run_.steps.dumpEvery)
-      throw Error("save: the Python case takes no field or dump frames, so a checkpoint of it would miss them: "
-                  "make the case with fields.enabled = false and run.dump_interval = 0");
-    if (std::filesystem::exists(checkpointPath(dir)) || std::filesystem::exists(dir + "/summary.json"))
-      throw Error("save: " + dir + " already holds a run");
-    std::filesystem::create_directories(dir);
+      throw Error(
+          "save: the Python case takes no field or dump frames, so a checkpoint of it would miss them: "
+          "make the case with fields.enabled = false and run.dump_interval = 0");
     const std::string configToml = toToml(config);
-    writeFileAtomically(dir + "/config.toml", configToml);
+    prepareRunDirectory(dir, config, configToml, /*resume=*/false);  // as `wiggle run --out DIR` starts one
     writeCheckpoint(dir, configToml, *world_, record_, FieldObserver(config.fields, config.box.width));
   }
 
@@ -140,10 +139,7 @@ class PyCase {
   // far, as if the run ended now (analysis/RiseRate.h).
   const RunState& record() const { return record_; }
   py::dict riseRate() const {
-    const RateWindow window = paperWindow(world_->time());
-    const double period = run_.config.drive.period;
-    const RiseRate rate = measureRiseRate(record_.samples, window, period, run_.surfacedHeight);
-    const SettledRate settled = measureSettledRate(record_.samples, window, period, rate, SettleRule{});
+    const auto [rate, settled] = measureRunRates(run_, record_.samples, paperWindow(world_->time()));
     py::dict d;
     d["vy"] = rate.vy;
     d["vy_slope"] = rate.slope;

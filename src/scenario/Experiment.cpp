@@ -25,6 +25,7 @@
 #include "model/CavityModel.h"
 #include "scenario/BedMaker.h"
 #include "scenario/Checkpoint.h"
+#include "scenario/Remeasure.h"
 #include "scenario/RunProgress.h"
 #include "scenario/RunSummary.h"
 #include "scenario/SpeedRecord.h"
@@ -91,30 +92,6 @@ void writeModel(const std::string& path, const RunConfig& config, const Shape& s
   j["curve"] = curve;
   j["vy_at_period"] = modelRate(config.drive.period);
   writeFileAtomically(path, j.dump(2) + "\n");
-}
-
-
-// The run directory's rules: made if missing; a run already there is continued only with --resume,
-// and only by a config that can continue it; leftovers of a write cut short are removed; the
-// config is written.
-void prepareRunDirectory(const std::string& dir, const RunConfig& config, const std::string& configToml,
-                         bool resume) {
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec) throw Error("cannot create output directory " + dir + ": " + ec.message());
-  if (config.run.dumpInterval > 0) fs::create_directories(dir + "/dumps", ec);
-  const bool hasCheckpoint = fs::exists(checkpointPath(dir)) || fs::exists(previousCheckpointPath(dir));
-  if (!resume && (hasCheckpoint || fs::exists(dir + "/summary.json")))
-    throw Error(dir + " already holds a run: use --resume to continue it, or choose another --out");
-  if (resume && fs::exists(dir + "/config.toml")) {
-    const RunConfig previous = parseRunConfig(readFile(dir + "/config.toml"), dir + "/config.toml");
-    if (const std::string why = whyRunCannotContinue(previous, config); !why.empty())
-      throw Error("--resume: cannot continue the run in " + dir + ": " + why);
-  }
-  if (resume) removeLeftoverTemporaries(dir);  // of a run killed while writing a file
-  else
-    fs::remove(runWarningsPath(dir), ec);  // a new run has no history
-  writeFileAtomically(dir + "/config.toml", configToml);
 }
 
 // Says `warning` on the console, in the log and in warnings.txt (hence in summary.json).
@@ -402,10 +379,8 @@ bool stepToTheEnd(const Case& run, const RunOptions& options, const std::string&
 RunOutcome writeRunOutputs(const Case& run, const std::string& dir, const World& world, const RunState& state,
                         const FieldObserver& fields, LogFile& log) {
   const RunConfig& config = run.config;
-  const RateWindow window = paperWindow(config.run.duration);
-  const RiseRate rate = measureRiseRate(state.samples, window, config.drive.period, run.surfacedHeight);
   const SettleRule rule;
-  const SettledRate settled = measureSettledRate(state.samples, window, config.drive.period, rate, rule);
+  const auto [rate, settled] = measureRunRates(run, state.samples, paperWindow(config.run.duration), rule);
   writeTrajectoryCsv(dir + "/trajectory.csv", state.samples);
   writePhaseRates(dir + "/phase_rates.csv", state);
   if (config.fields.enabled) fields.writeCsv(dir + "/fields.csv");
@@ -451,6 +426,26 @@ std::string RunOutcome::resultLine() const {
     line += text;
   }
   return line + "; summary in " + summaryPath;
+}
+
+void prepareRunDirectory(const std::string& dir, const RunConfig& config, const std::string& configToml, bool resume) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw Error("cannot create output directory " + dir + ": " + ec.message());
+  if (config.run.dumpInterval > 0) fs::create_directories(dir + "/dumps", ec);
+  const bool hasCheckpoint = fs::exists(checkpointPath(dir)) || fs::exists(previousCheckpointPath(dir));
+  if (!resume && (hasCheckpoint || fs::exists(dir + "/summary.json")))
+    throw Error(dir + " already holds a run: use --resume to continue it, or choose another --out");
+  if (resume && fs::exists(dir + "/config.toml")) {
+    const RunConfig previous = parseRunConfig(readFile(dir + "/config.toml"), dir + "/config.toml");
+    if (const std::string why = whyRunCannotContinue(previous, config); !why.empty())
+      throw Error("--resume: cannot continue the run in " + dir + ": " + why);
+  }
+  if (resume)
+    removeLeftoverTemporaries(dir);  // of a run killed while writing a file
+  else
+    fs::remove(runWarningsPath(dir), ec);  // a new run has no history
+  writeFileAtomically(dir + "/config.toml", configToml);
 }
 
 CachedBed startRun(const Case& run, const BedProgress& progress) {

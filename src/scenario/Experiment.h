@@ -50,6 +50,11 @@ std::vector<std::string> readRunWarnings(const std::string& runDir);
 // step from here, after World::evaluateForces. Throws wiggle::Error as obtainBed does.
 CachedBed startRun(const Case& run, const BedProgress& progress = {});
 
+// The run directory's rules: made if missing; a run already there is continued only with `resume`,
+// and only by a config that can continue it; leftovers of a write cut short are removed; the
+// config is written. Throws wiggle::Error naming the directory.
+void prepareRunDirectory(const std::string& dir, const RunConfig& config, const std::string& configToml, bool resume);
+
 // Runs the case into options.outDir (or continues it there with options.resume).
 RunOutcome runExperiment(const Case& run, const RunOptions& options);
 

@@ -11,6 +11,13 @@
 
 namespace wiggle {
 
+RunRates measureRunRates(const Case& run, const std::vector<TrajectorySample>& samples, RateWindow window,
+                         const SettleRule& rule) {
+  const double period = run.config.drive.period;
+  const RiseRate rate = measureRiseRate(samples, window, period, run.surfacedHeight);
+  return {rate, measureSettledRate(samples, window, period, rate, rule)};
+}
+
 Remeasured remeasureRun(const std::string& runDir, const RemeasureRequest& request) {
   const std::string configPath = runDir + "/config.toml";
   const std::string trajectoryPath = runDir + "/trajectory.csv";
@@ -32,8 +39,9 @@ Remeasured remeasureRun(const std::string& runDir, const RemeasureRequest& reque
                 " (t = " + formatNumber(end) + ")");
   if (window.from < samples.front().t)
     throw Error("--from " + formatNumber(window.from) + " is before the start of " + trajectoryPath);
-  r.rate = measureRiseRate(samples, window, r.period, run.surfacedHeight);
-  r.settled = measureSettledRate(samples, window, r.period, r.rate, request.rule);
+  const RunRates rates = measureRunRates(run, samples, window, request.rule);
+  r.rate = rates.rate;
+  r.settled = rates.settled;
   return r;
 }
 

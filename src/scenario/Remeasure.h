@@ -4,10 +4,23 @@
 // rule's result recorded into a summary.json written before the rule existed.
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "analysis/RiseRate.h"
 
 namespace wiggle {
+
+struct Case;
+
+// Both rules over a window of a case's samples (its period, its surfaced height): the one
+// computation behind summary.json (the run's own window), `wiggle rate` (any window) and the
+// Python case (the window so far).
+struct RunRates {
+  RiseRate rate;
+  SettledRate settled;
+};
+RunRates measureRunRates(const Case& run, const std::vector<TrajectorySample>& samples, RateWindow window,
+                         const SettleRule& rule = {});
 
 struct RemeasureRequest {
   std::optional<double> from, to;  // t_i and the end of the data used; default 0.1 x `to` and the run's end

@@ -21,22 +21,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// How far a running case is: its progress.json (scenario/RunProgress.h), which the run writes at
-// each stage and every few seconds as it steps.
-struct CaseProgress {
-  double fraction = -1.0;
-  std::string stage = "starting";
-};
-
-CaseProgress caseProgress(const std::string& caseDir) {
-  CaseProgress p;
-  if (const std::optional<RunProgress> run = readRunProgress(caseDir)) {
-    p.fraction = run->fraction;
-    p.stage = run->stage;
-  }
-  return p;
-}
-
 // From sweep.log's start lines, the last of each: the jobs ("... 1 jobs x 1 threads ...") and the
 // sweep's name ("wiggle sweep NAME: 10 cases, ..." or, from an array task, "wiggle sweep NAME --case 3: ...").
 struct SweepLogFacts {
@@ -121,7 +105,8 @@ SweepStatus readSweepStatus(const std::string& dir) {
       finishedWall += c.wallSeconds;
       ++finished;
     } else if (c.status == "running") {
-      const CaseProgress progress = caseProgress(caseDir);
+      // How far it is: its progress.json, which the run rewrites at each stage and every few seconds.
+      const RunProgress progress = readRunProgress(caseDir).value_or(RunProgress{"starting"});
       c.fraction = progress.fraction;
       c.stage = progress.stage;
       c.warnings = readRunWarnings(caseDir);

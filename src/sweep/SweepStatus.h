@@ -16,8 +16,8 @@ struct CaseStatus {
   std::string error;    // failed: the recorded error
   double vy = 0.0;      // ok: the rise rate
   double wallSeconds = 0.0;  // ok: the case's wall time
-  double fraction = -1.0;    // running: the fraction of run.duration done (its log's last progress line), else -1
-  std::string stage;         // running, before its first progress line: what its log says it is doing
+  double fraction = -1.0;    // running: the fraction of its steps done (its progress.json), else -1
+  std::string stage;         // running, before its first step: what its progress.json says it is doing
   std::vector<std::string> warnings;  // ok: summary.json's; running: its warnings.txt so far
 };
 
@@ -40,7 +40,7 @@ std::string formatSweepStatus(const SweepStatus& status);
 // The status as JSON, for `wiggle report` to hand to the plotting package: {"dir", "name",
 // "sweep_running", "jobs", "eta_s" (null when unknown), "text" (what `wiggle status` prints),
 // "cases": [{"name", "status", "error", "vy", "wall_s", "fraction", "warnings"}]} (vy and wall_s null unless ok,
-// fraction null unless a running case's log says how far it got).
+// fraction null unless a running case's progress.json says how far it got).
 std::string sweepStatusJson(const SweepStatus& status);
 
 }  // namespace wiggle
