@@ -3,6 +3,7 @@
 // the state's size and its hash.
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <string>
 
 #include "core/Format.h"
@@ -14,7 +15,7 @@ namespace wiggle {
 double contactTime(const ContactParams& contact, double radius, double mass, double speed) {
   const double meff = 0.5 * mass;
   switch (contact.law) {
-    case ContactLaw::Hooke: return std::acos(-1.0) * std::sqrt(meff / contact.kn);
+    case ContactLaw::Hooke: return std::numbers::pi * std::sqrt(meff / contact.kn);
     case ContactLaw::Hertz: break;
   }
   const double reff = 0.5 * radius;
