@@ -12,10 +12,13 @@
 
 #include <cmath>
 #include <filesystem>
+#include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "analysis/LammpsDump.h"
 #include "analysis/RiseRate.h"
 #include "core/Error.h"
 #include "core/Format.h"
@@ -26,6 +29,7 @@
 #include "scenario/Checkpoint.h"
 #include "scenario/Experiment.h"
 #include "scenario/Remeasure.h"
+#include "scenario/RunObservers.h"
 
 namespace py = pybind11;
 
@@ -49,11 +53,29 @@ std::vector<std::string> overridesOf(const py::dict& overrides) {
   return sets;
 }
 
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// Rows visited by `forEach` as a dict of NumPy columns, each column's value of a row given by a getter.
+template <class Row>
+py::dict columnsOf(const std::function<void(const std::function<void(const Row&)>&)>& forEach,
+                   const std::vector<std::pair<const char*, std::function<double(const Row&)>>>& columns) {
+  std::vector<std::vector<double>> values(columns.size());
+  forEach([&](const Row& row) {
+    for (std::size_t k = 0; k < columns.size(); ++k) values[k].push_back(columns[k].second(row));
+  });
+  py::dict d;
+  for (std::size_t k = 0; k < columns.size(); ++k)
+    d[columns[k].first] = py::array_t<double>(values[k].size(), values[k].data());
+  return d;
+}
+
 class PyCase {
  public:
   PyCase(const std::optional<std::string>& configPath, const py::dict& overrides, int threads,
          const std::optional<py::function>& drive, double peakSpeed)
-      : run_(prepareCase(loadRunConfig(configPath, overridesOf(overrides)))), threads_(threads) {
+      : run_(prepareCase(loadRunConfig(configPath, overridesOf(overrides)))),
+        threads_(threads),
+        fields_(run_.config.fields, run_.config.box.width) {
     CachedBed bed = startRun(run_);
     bedPath_ = bed.path;
     record_.bedKey = bed.key;
@@ -77,18 +99,18 @@ class PyCase {
   }
 
   // The case as a run directory that `wiggle run --out DIR --resume` continues and Case.load reads:
-  // its config.toml and the checkpoint `wiggle run` would have written at this step. The Python
-  // case takes no field or dump frames, so a config with them is refused rather than saved without
-  // them; a case with a Python drive cannot be saved (World::save).
+  // its config.toml and the checkpoint `wiggle run` would have written at this step, field frames
+  // included. The Python case writes no dump file, so a config with dumps is refused rather than
+  // saved without its frames; a case with a Python drive cannot be saved (World::save).
   void save(const std::string& dir) const {
     const RunConfig& config = run_.config;
-    if (config.fields.enabled || run_.steps.dumpEvery)
+    if (run_.steps.dumpEvery)
       throw Error(
-          "save: the Python case takes no field or dump frames, so a checkpoint of it would miss them: "
-          "make the case with fields.enabled = false and run.dump_interval = 0");
+          "save: the Python case writes no dump frames, so a run continued from its checkpoint would miss "
+          "them: make the case with run.dump_interval = 0 (case.frame() gives a frame whenever you ask)");
     const std::string configToml = toToml(config);
     prepareRunDirectory(dir, config, configToml, /*resume=*/false);  // as `wiggle run --out DIR` starts one
-    writeCheckpoint(dir, configToml, *world_, record_, FieldObserver(config.fields, config.box.width));
+    writeCheckpoint(dir, configToml, *world_, record_, fields_);
   }
 
   void step(std::uint64_t n) {
@@ -96,9 +118,10 @@ class PyCase {
     try {
       py::gil_scoped_release release;
       if (threads_ > 0) omp_set_num_threads(threads_);
-      world_->runWatchingIntruder(n, [this](const ClumpState& intruder, std::uint64_t step, double time) {
-        record_.recordStep(run_.steps, intruder, step, time);
-      });
+      // Observed as `wiggle run` observes (its trajectory samples, phase bins and field frames); no
+      // dump file. The observers hold references to members, so they are made per call (a PyCase moves).
+      RunObservers observers(run_, record_, fields_, /*dumpPath=*/"");
+      observers.stepTowards(*world_, world_->stepCount() + n);
     } catch (const py::error_already_set& e) {
       failed_ = "its drive raised " + std::string(e.what());
       throw;
@@ -128,8 +151,9 @@ class PyCase {
   }
 
   // A read-only view of one of the store's arrays; `self` keeps the case alive while it exists.
-  py::array_t<double> view(const std::vector<double>& data, py::handle self) const {
-    py::array_t<double> a({data.size()}, {sizeof(double)}, data.data(), self);
+  template <class T>
+  py::array_t<T> view(const std::vector<T>& data, py::handle self) const {
+    py::array_t<T> a({data.size()}, {sizeof(T)}, data.data(), self);
     a.attr("setflags")(py::arg("write") = false);
     return a;
   }
@@ -138,6 +162,7 @@ class PyCase {
   // run` keeps them) and the rise rate by its rules over the paper's window of the time stepped so
   // far, as if the run ended now (analysis/RiseRate.h).
   const RunState& record() const { return record_; }
+  const FieldObserver& fields() const { return fields_; }
   py::dict riseRate() const {
     const auto [rate, settled] = measureRunRates(run_, record_.samples, paperWindow(world_->time()));
     py::dict d;
@@ -158,7 +183,8 @@ class PyCase {
   const std::string& bedPath() const { return bedPath_; }
 
  private:
-  PyCase(Case run, Checkpoint checkpoint, int threads) : run_(std::move(run)), threads_(threads) {
+  PyCase(Case run, Checkpoint checkpoint, int threads)
+      : run_(std::move(run)), threads_(threads), fields_(std::move(checkpoint.fields)) {
     world_.emplace(std::move(checkpoint.world));
     record_ = std::move(checkpoint.state);
   }
@@ -182,6 +208,7 @@ class PyCase {
   std::optional<World> world_;
   std::string bedPath_;
   RunState record_;                    // what `wiggle run` records of the intruder (recordStep)
+  FieldObserver fields_;               // and its field frames (fields.enabled)
   py::object drive_;                   // a Python drive (setDrive), alive as long as the world calls it
   std::optional<std::string> failed_;  // why the last step failed
 };
@@ -216,8 +243,8 @@ PYBIND11_MODULE(wiggle, m) {
                   "continues it (the same bits)")
       .def("save", &PyCase::save, py::arg("dir"),
            "Write the case as a run directory (config.toml and the checkpoint `wiggle run` writes at this step): "
-           "`wiggle run --out DIR --resume` finishes it, Case.load(DIR) continues it. Needs fields.enabled = false "
-           "and run.dump_interval = 0, and the config's drive")
+           "`wiggle run --out DIR --resume` finishes it, Case.load(DIR) continues it. Needs run.dump_interval = 0 "
+           "and the config's drive")
       .def("step", &PyCase::step, py::arg("n") = 1, "Advance n steps (the GIL is released meanwhile)")
       .def("advance", &PyCase::advance, py::arg("t"), "Step to time t [sqrt(d/g)]")
       .def("set_drive", &PyCase::setDrive, py::arg("drive"), py::arg("peak_speed"),
@@ -234,19 +261,17 @@ PYBIND11_MODULE(wiggle, m) {
       .def_property_readonly(
           "trajectory",
           [](const PyCase& c) {
-            const auto& samples = c.record().samples;
-            py::dict d;
-            const std::pair<const char*, double wiggle::TrajectorySample::*> columns[] = {
-                {"t", &wiggle::TrajectorySample::t},   {"x", &wiggle::TrajectorySample::x},
-                {"y", &wiggle::TrajectorySample::y},   {"vx", &wiggle::TrajectorySample::vx},
-                {"vy", &wiggle::TrajectorySample::vy}, {"fy", &wiggle::TrajectorySample::fy}};
-            for (const auto& [name, member] : columns) {
-              py::array_t<double> a(samples.size());
-              auto out = a.mutable_unchecked<1>();
-              for (std::size_t i = 0; i < samples.size(); ++i) out(i) = samples[i].*member;
-              d[name] = a;
-            }
-            return d;
+            using Sample = wiggle::TrajectorySample;
+            return wiggle::columnsOf<Sample>(
+                [&c](const std::function<void(const Sample&)>& visit) {
+                  for (const Sample& s : c.record().samples) visit(s);
+                },
+                {{"t", [](const Sample& s) { return s.t; }},
+                 {"x", [](const Sample& s) { return s.x; }},
+                 {"y", [](const Sample& s) { return s.y; }},
+                 {"vx", [](const Sample& s) { return s.vx; }},
+                 {"vy", [](const Sample& s) { return s.vy; }},
+                 {"fy", [](const Sample& s) { return s.fy; }}});
           },
           "The intruder's samples so far, every run.sample_interval from t = 0, as trajectory.csv's columns "
           "t, x, y, vx, vy, fy (copies)")
@@ -255,21 +280,66 @@ PYBIND11_MODULE(wiggle, m) {
           [](const PyCase& c) {
             const wiggle::RunState& r = c.record();
             py::array_t<double> centre(wiggle::kPhaseBins), mean(wiggle::kPhaseBins);
-            py::array_t<std::uint64_t> count(wiggle::kPhaseBins);
+            py::array_t<std::uint64_t> bin(wiggle::kPhaseBins), count(wiggle::kPhaseBins);
             for (int k = 0; k < wiggle::kPhaseBins; ++k) {
+              bin.mutable_at(k) = static_cast<std::uint64_t>(k);
               centre.mutable_at(k) = k + 0.5;
               count.mutable_at(k) = r.phaseCount[k];
               mean.mutable_at(k) =
                   r.phaseCount[k] ? r.phaseSum[k] / static_cast<double>(r.phaseCount[k]) : std::nan("");
             }
             py::dict d;
+            d["bin"] = bin;
             d["phase_center"] = centre;
             d["vy_mean"] = mean;
             d["samples"] = count;
             return d;
           },
           "Mean v_y of the intruder per phase bin (10 phi / pi, 20 bins) over the steps after t_i = 0.1 "
-          "run.duration, as phase_rates.csv's columns")
+          "run.duration, as phase_rates.csv's columns bin, phase_center, vy_mean, samples")
+      .def_property_readonly(
+          "fields",
+          [](const PyCase& c) -> py::object {
+            if (!c.run().config.fields.enabled) return py::none();
+            return wiggle::columnsOf<wiggle::FieldObserver::Row>(
+                [&c](const std::function<void(const wiggle::FieldObserver::Row&)>& visit) {
+                  c.fields().forEachRow(visit);
+                },
+                {{"phase", [](const auto& r) { return r.phase; }},
+                 {"x", [](const auto& r) { return r.x; }},
+                 {"y", [](const auto& r) { return r.y; }},
+                 {"phi", [](const auto& r) { return r.sample ? r.sample->phi : wiggle::kNaN; }},
+                 {"vx", [](const auto& r) { return r.sample ? r.sample->vx : wiggle::kNaN; }},
+                 {"vy", [](const auto& r) { return r.sample ? r.sample->vy : wiggle::kNaN; }},
+                 {"sxx", [](const auto& r) { return r.sample ? r.sample->sxx : wiggle::kNaN; }},
+                 {"sxy", [](const auto& r) { return r.sample ? r.sample->symmetricShear() : wiggle::kNaN; }},
+                 {"syy", [](const auto& r) { return r.sample ? r.sample->syy : wiggle::kNaN; }},
+                 {"pressure", [](const auto& r) { return r.sample ? r.sample->pressure : wiggle::kNaN; }},
+                 {"frames", [](const auto& r) { return static_cast<double>(r.frames); }}});
+          },
+          "The field maps so far (fields.enabled; else None): fields.csv's columns phase, x, y, phi, vx, vy, sxx, "
+          "sxy, syy, pressure, frames, NaN where fields.csv leaves a cell empty (copies)")
+      .def(
+          "frame",
+          [](const PyCase& c) {
+            const wiggle::ParticleFrame f = wiggle::particleFrame(c.world());
+            py::dict d;
+            d["step"] = f.step;
+            d["t"] = f.time;
+            d["box"] = py::make_tuple(py::make_tuple(0.0, f.boxWidth), py::make_tuple(f.yLo, f.yHi),
+                                      py::make_tuple(-0.5, 0.5));
+            d["intruder"] = py::make_tuple(c.world().intruder().x, c.world().intruder().y);
+            d["id"] = py::array_t<std::uint64_t>(f.id.size(), f.id.data());
+            d["type"] = py::array_t<int>(f.type.size(), f.type.data());
+            const std::pair<const char*, const std::vector<double>*> columns[] = {
+                {"x", &f.x},   {"y", &f.y},   {"radius", &f.radius}, {"vx", &f.vx},
+                {"vy", &f.vy}, {"fx", &f.fx}, {"fy", &f.fy},         {"tqz", &f.tqz}};
+            for (const auto& [name, column] : columns) d[name] = py::array_t<double>(column->size(), column->data());
+            return d;
+          },
+          "The current step as a dump frame: step, t, box, intruder (its centre) and the columns id, type (1 grain, 2 "
+          "base, 3 intruder "
+          "atom), x, y, radius, vx, vy, fx, fy, tqz, as dump.lammpstrj holds them at full precision (copies)")
       .def_property_readonly(
           "t", [](const PyCase& c) { return c.world().time(); }, "Time [sqrt(d/g)]")
       .def_property_readonly(
@@ -298,7 +368,7 @@ PYBIND11_MODULE(wiggle, m) {
           },
           "The intruder's centre, velocity and the grains' vertical force on it [d, sqrt(g d), m g]");
   // The particle arrays (grains, then the frozen base): read-only views of the engine's memory.
-  const auto array = [&cls](const char* name, std::vector<double> wiggle::ParticleStore::*member, const char* doc) {
+  const auto array = [&cls]<class T>(const char* name, std::vector<T> wiggle::ParticleStore::*member, const char* doc) {
     cls.def_property_readonly(
         name,
         [member](py::object self) {
@@ -315,4 +385,7 @@ PYBIND11_MODULE(wiggle, m) {
   array("fx", &wiggle::ParticleStore::fx, "Forces' x, contacts and gravity [m g]");
   array("fy", &wiggle::ParticleStore::fy, "Forces' y, contacts and gravity [m g]");
   array("radius", &wiggle::ParticleStore::radius, "Radii [d]");
+  array("tag", &wiggle::ParticleStore::tag,
+        "Each particle's own number (uint32; the dump's id is tag + 1): an array index changes when the engine "
+        "re-sorts the grains, a tag never");
 }

@@ -17,7 +17,7 @@ For analysis (pandas from Debian: python3-pandas):
 
     import wiggleplot as wp
     sweep = wp.load_sweep("fig5")             # results.csv as a DataFrame
-    run = wp.load_case("fig5", "shape=disk_period=5")
+    run = wp.load_case("fig5", "shape=disk_period=5")   # or wp.load_run(DIR), wp.load_run(case)
     run.trajectory.plot(x="t", y="y")
     wp.plot_sweep("fig5", "fig5/figures")     # the paper's figures of a sweep
 """
@@ -39,11 +39,13 @@ def plot_sweep(sweep_dir, out_dir, formats=("png",)):
     return list(report.written)
 
 
-def plot_run(run_dir, out_dir, formats=("png",)):
-    """Draws a run's figures (figs 2, 3-4, 8, 9-11) into out_dir; returns the files written."""
+def plot_run(run, out_dir, formats=("png",), frames=None):
+    """Draws a run's figures (figs 2, 3-4, 8, 9-11) into out_dir; returns the files written. `run`:
+    a run directory, or a live case of the engine module (wiggle.Case, docs/PYTHON.md), whose
+    snapshots are the case.frame() dicts in `frames` (default: its current step)."""
     from wiggleplot import runplots
     from wiggleplot.report import Report
     report = Report(quiet=True)
     os.makedirs(out_dir, exist_ok=True)
-    runplots.plot_run(run_dir, out_dir, list(formats), report)
+    runplots.plot_run(run, out_dir, list(formats), report, frames=frames)
     return list(report.written)

@@ -70,7 +70,10 @@ class RunData:
 def load_run(run_dir):
     """Reads a run directory (`wiggle run --out DIR`, or a sweep's DIR/cases/NAME). Files that are
     not there (a run still going, fields off) are None; a directory without a trajectory or a
-    summary is refused with FileNotFoundError."""
+    summary is refused with FileNotFoundError. A live case of the engine module (wiggle.Case) is
+    read the same way: its record so far, `summary` its rise_rate() (`dir` None, no model)."""
+    if is_live_case(run_dir):
+        return _live_run(run_dir)
     summary_path = os.path.join(run_dir, "summary.json")
     trajectory_path = os.path.join(run_dir, "trajectory.csv")
     if not os.path.exists(summary_path) and not os.path.exists(trajectory_path):
@@ -83,6 +86,22 @@ def load_run(run_dir):
                    fields=_frame(os.path.join(run_dir, "fields.csv")),
                    model=readers.read_json(model_path) if os.path.exists(model_path) else None,
                    config=config)
+
+
+def is_live_case(source):
+    """Whether `source` is a live case of the engine module (wiggle.Case) rather than a path."""
+    return hasattr(source, "state_hash") and hasattr(source, "frame")
+
+
+def _live_run(case):
+    import tomllib
+    pandas = _pandas()
+
+    def frame(columns):
+        return None if columns is None else with_units(pandas.DataFrame(dict(columns)))
+    return RunData(dir=None, summary=dict(case.rise_rate()), trajectory=frame(case.trajectory),
+                   phase_rates=frame(case.phase_rates), fields=frame(case.fields), model=None,
+                   config=tomllib.loads(case.config))
 
 
 def load_sweep(sweep_dir):

@@ -2,12 +2,14 @@
 phase-resolved rate (fig. 8), the coarse-grained fields (figs 9-11) and an optional movie."""
 import os
 import shutil
+import tomllib
 
 import numpy as np
 from matplotlib.collections import EllipseCollection
 from matplotlib.patches import Polygon
 
 from wiggleplot import prepare, readers, style
+from wiggleplot.data import is_live_case
 from wiggleplot.style import plt
 
 
@@ -59,6 +61,17 @@ class Run:
                 parts.append(fmt.format(float(v)))
         return ", ".join(parts)
 
+    def phase_rates(self):
+        """phase_rates.csv's columns; FileNotFoundError or readers.FormatError when it cannot."""
+        return readers.read_phase_rates(self.dir)
+
+    def fields(self):
+        """fields.csv's columns, or None when the run has none; readers.FormatError when unreadable."""
+        try:
+            return readers.read_fields(self.dir)
+        except FileNotFoundError:
+            return None
+
     def dump(self):
         if not self._dump_tried:
             self._dump_tried = True
@@ -76,7 +89,7 @@ class Run:
     def intruder_outline(self):
         """The intruder's outline in its own frame (relative to the centre the trajectory and the
         fields use): geometry.json's outline when the run directory has one, else the envelope of
-        the intruder atoms (type 3) of the first dump frame shifted by the trajectory's centre."""
+        the intruder atoms (type 3) of the first dump frame about the trajectory's centre then."""
         path = os.path.join(self.dir, "geometry.json")
         if os.path.exists(path):
             try:
@@ -86,20 +99,73 @@ class Run:
         dump = self.dump()
         if dump is None or self.trajectory is None:
             return None, None
-        frame = dump.frame(0)
-        mine = frame["type"] == 3
-        if not mine.any():
-            return None, None
         t0 = dump.steps[0] * self.dt
         traj = self.trajectory
-        cx = float(np.interp(t0, traj["t"], traj["x"]))
-        cy = float(np.interp(t0, traj["t"], traj["y"]))
-        atoms = np.column_stack([frame["x"][mine] - cx, frame["y"][mine] - cy])
-        # Undo a periodic wrap in x (the box is periodic; the intruder may straddle the seam).
-        width = frame.box[0][1] - frame.box[0][0]
-        atoms[:, 0] -= width * np.round(atoms[:, 0] / width)
-        radius = float(np.median(frame["radius"][mine]))
-        return prepare.envelope_of_atoms(atoms, radius), "dump atoms"
+        centre = (float(np.interp(t0, traj["t"], traj["x"])), float(np.interp(t0, traj["t"], traj["y"])))
+        return _outline_of_atoms(dump.frame(0), centre), "dump atoms"
+
+
+def _outline_of_atoms(frame, centre):
+    """The envelope of a frame's intruder atoms (type 3) about the intruder's centre, or None."""
+    mine = frame["type"] == 3
+    if not mine.any():
+        return None
+    atoms = np.column_stack([frame["x"][mine] - centre[0], frame["y"][mine] - centre[1]])
+    # Undo a periodic wrap in x (the box is periodic; the intruder may straddle the seam).
+    width = frame.box[0][1] - frame.box[0][0]
+    atoms[:, 0] -= width * np.round(atoms[:, 0] / width)
+    radius = float(np.median(frame["radius"][mine]))
+    return prepare.envelope_of_atoms(atoms, radius)
+
+
+class FrameList:
+    """Frames a live case handed out (wiggle.Case.frame()) in the Dump's interface: steps, frame(i)."""
+
+    def __init__(self, frames):
+        self.frames = list(frames)
+        self.steps = [int(f["step"]) for f in self.frames]
+
+    def __len__(self):
+        return len(self.frames)
+
+    def frame(self, index):
+        f = self.frames[index]
+        columns = {k: np.asarray(v) for k, v in f.items() if k not in ("step", "t", "box", "intruder")}
+        return readers.DumpFrame(int(f["step"]), [list(b) for b in f["box"]], columns)
+
+
+class LiveRun(Run):
+    """A live case of the engine module (`import wiggle`: wiggle.Case) as a run: its config, its
+    rise rate so far in place of summary.json, its trajectory, phase bins and field maps from the
+    engine, and as the dump the frames the caller took with case.frame() (by default the current
+    step alone). There is no cavity model (model.json is `wiggle run`'s)."""
+
+    def __init__(self, case, report, frames=None):
+        self.dir = None
+        self.report = report
+        self.case = case
+        self.config = tomllib.loads(case.config)
+        self.summary = dict(case.rise_rate())
+        self.trajectory = case.trajectory
+        self.model = None
+        self.dt = case.dt
+        self._frames = FrameList(frames if frames else [case.frame()])
+
+    def phase_rates(self):
+        return self.case.phase_rates
+
+    def fields(self):
+        return self.case.fields
+
+    def dump(self):
+        return self._frames
+
+    def frame_times(self):
+        return np.array([float(f["t"]) for f in self._frames.frames])
+
+    def intruder_outline(self):
+        first = self._frames.frames[0]
+        return _outline_of_atoms(self._frames.frame(0), first["intruder"]), "frame atoms"
 
 
 # --- fig. 2: y(t) - y(0) --------------------------------------------------------------------------
@@ -234,7 +300,7 @@ def plot_snapshots(run, out_dir, formats, times=None, count=6):
 
 def plot_phase_rates(run, out_dir, formats):
     try:
-        rates = readers.read_phase_rates(run.dir)
+        rates = run.phase_rates()
     except FileNotFoundError:
         run.report.note("no phase_rates.csv: phase-rate figure skipped")
         return
@@ -292,9 +358,8 @@ def velocity_arrows(ax, grids, j, vmax):
 
 def field_data(run):
     """(grids, outline, outline source) for the field maps, or None when there is no fields.csv."""
-    try:
-        fields = readers.read_fields(run.dir)
-    except FileNotFoundError:
+    fields = run.fields()
+    if fields is None:
         return None
     radius = float(readers.config_value(run.config, "fields.radius", 15.0))
     outline, source = run.intruder_outline()
@@ -484,9 +549,11 @@ def write_movie(run, out_dir, fps=10):
     run.report.wrote([path])
 
 
-def plot_run(run_dir, out_dir, formats, report, times=None, movie=False):
+def plot_run(source, out_dir, formats, report, times=None, movie=False, frames=None):
+    """A run's figures from its directory or from a live wiggle.Case (LiveRun; `frames`: the
+    case.frame() dicts its snapshots and movie show)."""
     style.apply()
-    run = Run(run_dir, report)
+    run = LiveRun(source, report, frames) if is_live_case(source) else Run(source, report)
     plot_trajectory(run, out_dir, formats)
     plot_snapshots(run, out_dir, formats, times=times)
     plot_phase_rates(run, out_dir, formats)

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <limits>
 #include <numbers>
+#include <optional>
 
 #include <omp.h>
 
@@ -377,30 +378,37 @@ FieldSample FieldObserver::sample(std::size_t phaseIndex, std::size_t ix, std::s
   return out;
 }
 
-void FieldObserver::writeCsv(const std::string& path) const {
-  std::string out = "phase,x,y,phi,vx,vy,sxx,sxy,syy,pressure,frames\n";
-  char line[512];
+void FieldObserver::forEachRow(const std::function<void(const Row&)>& visit) const {
   for (std::size_t p = 0; p < def_.phases.size(); ++p) {
     const std::uint64_t count = frames_[p];
     for (std::size_t iy = 0; iy < n_; ++iy)
       for (std::size_t ix = 0; ix < n_; ++ix) {
-        const double x = gridCoordinate(ix), y = gridCoordinate(iy);
-        if (count == 0) {
-          std::snprintf(line, sizeof line, "%.10g,%.10g,%.10g,,,,,,,,0\n", def_.phases[p], x, y);
-        } else {
-          const FieldSample f = sample(p, ix, iy);
-          char vx[40] = "", vy[40] = "";
-          if (!std::isnan(f.vx)) {
-            std::snprintf(vx, sizeof vx, "%.10g", f.vx);
-            std::snprintf(vy, sizeof vy, "%.10g", f.vy);
-          }
-          std::snprintf(line, sizeof line, "%.10g,%.10g,%.10g,%.10g,%s,%s,%.10g,%.10g,%.10g,%.10g,%llu\n",
-                        def_.phases[p], x, y, f.phi, vx, vy, f.sxx, 0.5 * (f.sxy + f.syx), f.syy,
-                        f.pressure, static_cast<unsigned long long>(count));
-        }
-        out += line;
+        std::optional<FieldSample> f;
+        if (count != 0) f = sample(p, ix, iy);
+        visit(Row{def_.phases[p], gridCoordinate(ix), gridCoordinate(iy), count, f ? &*f : nullptr});
       }
   }
+}
+
+void FieldObserver::writeCsv(const std::string& path) const {
+  std::string out = "phase,x,y,phi,vx,vy,sxx,sxy,syy,pressure,frames\n";
+  char line[512];
+  forEachRow([&](const Row& row) {
+    if (!row.sample) {
+      std::snprintf(line, sizeof line, "%.10g,%.10g,%.10g,,,,,,,,0\n", row.phase, row.x, row.y);
+    } else {
+      const FieldSample& f = *row.sample;
+      char vx[40] = "", vy[40] = "";
+      if (!std::isnan(f.vx)) {
+        std::snprintf(vx, sizeof vx, "%.10g", f.vx);
+        std::snprintf(vy, sizeof vy, "%.10g", f.vy);
+      }
+      std::snprintf(line, sizeof line, "%.10g,%.10g,%.10g,%.10g,%s,%s,%.10g,%.10g,%.10g,%.10g,%llu\n", row.phase, row.x,
+                    row.y, f.phi, vx, vy, f.sxx, f.symmetricShear(), f.syy, f.pressure,
+                    static_cast<unsigned long long>(row.frames));
+    }
+    out += line;
+  });
   writeFileAtomically(path, out);
 }
 

@@ -27,6 +27,7 @@
 // take bands of grid rows, so the result is bitwise the same for any thread count.
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,7 @@ struct FieldSample {
   double vx = 0.0, vy = 0.0;         // velocity [sqrt(g d)]; NaN where the averaged Phi is 0
   double sxx = 0.0, sxy = 0.0, syx = 0.0, syy = 0.0;  // stress, compression negative [m g / d]
   double pressure = 0.0;             // -(sxx + syy) / 2
+  double symmetricShear() const { return 0.5 * (sxy + syx); }  // fields.csv's sxy
 };
 
 class FieldObserver {
@@ -71,6 +73,15 @@ class FieldObserver {
   double gridCoordinate(std::size_t k) const;
   // Frame average at grid point (ix, iy) (x index, y index) of a phase; throws if it has no frames.
   FieldSample sample(std::size_t phaseIndex, std::size_t ix, std::size_t iy) const;
+
+  // Every grid point of every phase in fields.csv's row order (phase, then y, then x fastest), with
+  // its frame count and, when that is not 0, its frame average (else none).
+  struct Row {
+    double phase, x, y;
+    std::uint64_t frames;
+    const FieldSample* sample;  // null for a phase without frames
+  };
+  void forEachRow(const std::function<void(const Row&)>& visit) const;
 
   // CSV `phase,x,y,phi,vx,vy,sxx,sxy,syy,pressure,frames`, one row per grid point per phase (x
   // fastest); sxy is the symmetric part (sxy + syx)/2. Values are empty for a phase without frames,

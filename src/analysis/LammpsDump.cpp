@@ -49,39 +49,63 @@ ContactSums contactSums(const World& world, std::size_t atoms) {
 
 }  // namespace
 
-std::string lammpsDumpFrame(const World& world) {
+ParticleFrame particleFrame(const World& world) {
   const ParticleStore& s = world.particles();
   const std::size_t atoms = world.hasIntruder() ? world.clump().offsetX.size() : 0;
   const ContactSums sums = contactSums(world, atoms);
-  double yLo = 0.0, yHi = 1.0;
+  ParticleFrame f;
+  f.step = world.stepCount();
+  f.time = world.time();
+  f.boxWidth = world.def().boxWidth;
   for (double y : s.y) {
-    yLo = std::min(yLo, y - 1.0);
-    yHi = std::max(yHi, y + 1.0);
+    f.yLo = std::min(f.yLo, y - 1.0);
+    f.yHi = std::max(f.yHi, y + 1.0);
   }
+  auto add = [&f](std::uint64_t id, int type, double x, double y, double radius, double vx, double vy, double fx,
+                  double fy, double tqz) {
+    f.id.push_back(id);
+    f.type.push_back(type);
+    f.x.push_back(x);
+    f.y.push_back(y);
+    f.radius.push_back(radius);
+    f.vx.push_back(vx);
+    f.vy.push_back(vy);
+    f.fx.push_back(fx);
+    f.fy.push_back(fy);
+    f.tqz.push_back(tqz);
+  };
+  std::uint32_t maxTag = 0;
+  for (std::uint32_t i = 0; i < s.size(); ++i) {
+    maxTag = std::max(maxTag, s.tag[i]);
+    if (i < s.grainCount) {
+      add(s.tag[i] + 1, 1, s.x[i], s.y[i], s.radius[i], s.vx[i], s.vy[i], s.fx[i], s.fy[i], s.torque[i]);
+    } else {
+      const std::size_t b = i - s.grainCount;
+      add(s.tag[i] + 1, 2, s.x[i], s.y[i], s.radius[i], s.vx[i], s.vy[i], sums.baseFx[b], sums.baseFy[b],
+          sums.baseTorque[b]);
+    }
+  }
+  const ClumpState& c = world.intruder();
+  for (std::size_t a = 0; a < atoms; ++a)
+    add(maxTag + 2 + a, 3, c.x + world.clump().offsetX[a], c.y + world.clump().offsetY[a], world.clump().atomRadius,
+        c.vx, c.vy, sums.atomFx[a], sums.atomFy[a], sums.atomTorque[a]);
+  return f;
+}
+
+std::string lammpsDumpFrame(const World& world) {
+  const ParticleFrame f = particleFrame(world);
   std::string out;
-  out.reserve((s.size() + atoms) * 110 + 256);
+  out.reserve(f.id.size() * 110 + 256);
   char line[320];
   std::snprintf(line, sizeof line,
                 "ITEM: TIMESTEP\n%llu\nITEM: NUMBER OF ATOMS\n%zu\nITEM: BOX BOUNDS pp ff pp\n"
                 "0 %.17g\n%.17g %.17g\n-0.5 0.5\nITEM: ATOMS id type x y z radius vx vy fx fy tqz\n",
-                static_cast<unsigned long long>(world.stepCount()), s.size() + atoms, world.def().boxWidth, yLo, yHi);
+                static_cast<unsigned long long>(f.step), f.id.size(), f.boxWidth, f.yLo, f.yHi);
   out += line;
-  std::uint32_t maxTag = 0;
-  for (std::uint32_t i = 0; i < s.size(); ++i) {
-    maxTag = std::max(maxTag, s.tag[i]);
-    const bool grain = i < s.grainCount;
-    const double fx = grain ? s.fx[i] : sums.baseFx[i - s.grainCount];
-    const double fy = grain ? s.fy[i] : sums.baseFy[i - s.grainCount];
-    const double torque = grain ? s.torque[i] : sums.baseTorque[i - s.grainCount];
-    std::snprintf(line, sizeof line, "%u %d %.9g %.9g 0 %.9g %.6g %.6g %.6g %.6g %.6g\n", s.tag[i] + 1, grain ? 1 : 2,
-                  s.x[i], s.y[i], s.radius[i], s.vx[i], s.vy[i], fx, fy, torque);
-    out += line;
-  }
-  const ClumpState& c = world.intruder();
-  for (std::size_t a = 0; a < atoms; ++a) {
-    std::snprintf(line, sizeof line, "%zu 3 %.9g %.9g 0 %.9g %.6g %.6g %.6g %.6g %.6g\n", maxTag + 2 + a,
-                  c.x + world.clump().offsetX[a], c.y + world.clump().offsetY[a], world.clump().atomRadius, c.vx, c.vy,
-                  sums.atomFx[a], sums.atomFy[a], sums.atomTorque[a]);
+  for (std::size_t i = 0; i < f.id.size(); ++i) {
+    std::snprintf(line, sizeof line, "%llu %d %.9g %.9g 0 %.9g %.6g %.6g %.6g %.6g %.6g\n",
+                  static_cast<unsigned long long>(f.id[i]), f.type[i], f.x[i], f.y[i], f.radius[i], f.vx[i], f.vy[i],
+                  f.fx[i], f.fy[i], f.tqz[i]);
     out += line;
   }
   return out;

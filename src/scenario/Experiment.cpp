@@ -13,7 +13,6 @@
 #include <sstream>
 
 #include "analysis/FieldObserver.h"
-#include "analysis/LammpsDump.h"
 #include "analysis/RiseRate.h"
 #include "core/Console.h"
 #include "core/Error.h"
@@ -26,6 +25,7 @@
 #include "scenario/BedMaker.h"
 #include "scenario/Checkpoint.h"
 #include "scenario/Remeasure.h"
+#include "scenario/RunObservers.h"
 #include "scenario/RunProgress.h"
 #include "scenario/RunSummary.h"
 #include "scenario/SpeedRecord.h"
@@ -183,55 +183,6 @@ World startFromBed(const Case& run, RunState& state, LogFile& log, ProgressLine&
   return std::move(bed.world);
 }
 
-// What the step loop feeds: after every step, the phase bins (after t_i) and the trajectory
-// samples, which read only the intruder; at the steps that need the grains (needsGrainsAt), the
-// field frames and the dump frames. All kept in the RunState a checkpoint saves.
-class RunObservers {
- public:
-  RunObservers(const Case& run, RunState& state, FieldObserver& fields, std::string dumpPath)
-      : run_(run), state_(state), fields_(fields), dumpPath_(std::move(dumpPath)) {}
-
-  void sample(const World& world) { state_.sample(world.intruder(), world.time()); }
-
-  void dumpFrame(const World& world) {
-    const std::string frame = lammpsDumpFrame(world);
-    appendToFile(dumpPath_, frame);
-    state_.dumpBytes += frame.size();
-  }
-
-  // After every step, from the intruder's state alone (World::runWatchingIntruder).
-  void afterStep(const ClumpState& intruder, std::uint64_t step, double time) {
-    state_.recordStep(run_.steps, intruder, step, time);
-  }
-
-  // Whether the grains are observed after this step: a field frame or a dump frame.
-  bool needsGrainsAt(std::uint64_t step) const { return fieldPhaseAt(step) || dumpAt(step); }
-
-  // The grain observations of the world's current step (after afterStep).
-  void observeGrains(const World& world) {
-    const std::uint64_t step = world.stepCount();
-    if (const std::size_t p = fieldPhaseAt(step)) fields_.addFrame(world, p - 1);
-    if (dumpAt(step)) dumpFrame(world);
-  }
-
- private:
-  bool dumpAt(std::uint64_t step) const { return run_.steps.dumpEvery && step % run_.steps.dumpEvery == 0; }
-
-  // 1 + the fields.phases entry whose frame is taken after this step; 0 for none.
-  std::size_t fieldPhaseAt(std::uint64_t step) const {
-    const RunSchedule& steps = run_.steps;
-    if (!run_.config.fields.enabled || step <= steps.firstMeasured) return 0;
-    for (std::size_t p = 0; p < steps.fieldPhaseStep.size(); ++p)
-      if (step % steps.period == steps.fieldPhaseStep[p]) return p + 1;
-    return 0;
-  }
-
-  const Case& run_;
-  RunState& state_;
-  FieldObserver& fields_;
-  std::string dumpPath_;
-};
-
 // What makes the result less than it seems, in sentences (summary.json's warnings).
 std::vector<std::string> runWarnings(const RiseRate& rate, double averagedFrom, const RunConfig& config) {
   std::vector<std::string> warnings;
@@ -324,18 +275,9 @@ bool stepToTheEnd(const Case& run, const RunOptions& options, const std::string&
   auto stopAfterAt = [&](std::uint64_t step) {
     return options.stopAfterSteps && step - startStep >= options.stopAfterSteps;
   };
-  auto mustStopAt = [&](std::uint64_t step) {
-    return progressAt(step) || observers.needsGrainsAt(step) || stopAfterAt(step);
-  };
   while (world.stepCount() < steps.total) {
-    // The steps to the next one whose grains somebody looks at run as one stretch (World::run's
-    // fused passes); the intruder is observed after each of them.
-    std::uint64_t to = world.stepCount() + 1;
-    while (!mustStopAt(to)) ++to;
-    world.runWatchingIntruder(to - world.stepCount(), [&](const ClumpState& intruder, std::uint64_t step, double time) {
-      observers.afterStep(intruder, step, time);
-    });
-    observers.observeGrains(world);
+    observers.stepTowards(world, steps.total,
+                          [&](std::uint64_t step) { return progressAt(step) || stopAfterAt(step); });
     const std::uint64_t step = world.stepCount();
     if (progressAt(step)) {
       state.runWallSeconds += secondsSince(chunkStart);

@@ -131,13 +131,16 @@ def main():
                 if check(done.returncode == 0, f"`{ENGINE_NOTEBOOK_COMMAND}`: exit {done.returncode}: {done.stderr[-1500:]}"):
                     executed_notebook_ok(os.path.join(tree, "examples", "engine.nbconvert.ipynb"), "engine notebook",
                                          figures=2, what_figures="the grains with the path, and y(t) with the counts")
-                # and its ```python examples, each as written (the module on PYTHONPATH as in the line).
+                # and its ```python examples, each as written (the module and the plotting package on
+                # PYTHONPATH, as the page says).
                 with open(os.path.join(tree, "docs", "PYTHON.md"), encoding="utf-8") as f:
                     blocks = re.findall(r"^```python\n(.*?)^```$", f.read(), re.M | re.S)
                 check(len(blocks) > 0, "docs/PYTHON.md has no ```python example")
+                check(documented(os.path.join(tree, "docs", "PYTHON.md"), "PYTHONPATH=build/release/python:python"),
+                      "docs/PYTHON.md no longer says the path its ```python examples run with")
                 for k, code in enumerate(blocks):
-                    done = shell(f"PYTHONPATH=build/release/python /usr/bin/python3 -c {shlex.quote(code)}", tree, home,
-                                 cache)
+                    done = shell(f"PYTHONPATH=build/release/python:python /usr/bin/python3 -c {shlex.quote(code)}",
+                                 tree, home, cache)
                     check(done.returncode == 0, f"docs/PYTHON.md's python example {k + 1}: exit {done.returncode}: "
                                                 f"{done.stderr[-1500:]}")
 

@@ -5,7 +5,8 @@
 
 The same config stepped from Python, in any split of step() calls, ends in the same state hash as
 `wiggle run` writes in summary.json; the arrays are read-only views of the engine's memory; bad
-input raises wiggle.Error with the command's one-line message. A tiny bed (20 x 12 d) in a private
+input raises wiggle.Error with the command's one-line message; field maps, frames and the plotting
+package on the live case are wiggle run's files. A tiny bed (20 x 12 d) in a private
 cache: about 10 s."""
 import json
 import math
@@ -17,8 +18,10 @@ import unittest
 
 MODULE_DIR, WIGGLE = sys.argv[1], sys.argv[2]
 sys.path.insert(0, MODULE_DIR)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
 import numpy as np  # noqa: E402
 import wiggle  # noqa: E402
+import wiggleplot as wp  # noqa: E402
 
 TINY = """[box]
 width = 20.0
@@ -119,11 +122,87 @@ class Engine(unittest.TestCase):
             finished = json.load(f)
         self.assertEqual(finished["state_hash"], self.cli_hash)
         self.assertEqual(finished["vy"], self.summary["vy"])
-        with self.assertRaisesRegex(wiggle.Error, "fields.enabled = false"):
-            wiggle.Case(self.config, overrides={"fields.enabled": True}, threads=1).save(
-                os.path.join(self.tmp.name, "with-fields"))
+        with self.assertRaisesRegex(wiggle.Error, "run.dump_interval = 0"):
+            wiggle.Case(self.config, overrides={"run.dump_interval": 0.1}, threads=1).save(
+                os.path.join(self.tmp.name, "with-dumps"))
         with self.assertRaisesRegex(wiggle.Error, "holds no run"):
             wiggle.Case.load(os.path.join(self.tmp.name, "nowhere"))
+
+    def test_field_maps_and_frames_are_wiggle_runs(self):
+        # With fields on (a 4 d grid, phases 0, 5 and 10: phase 0 falls on no step after t_i here) and dumps every 0.1: the live case's field
+        # maps are fields.csv's, its frame() the dump's last frame, and a case saved half way with
+        # its field frames is finished by `wiggle run --resume` to the same fields.csv, byte for byte.
+        sets = {"fields.enabled": True, "fields.radius": 4.0, "fields.spacing": 1.0, "fields.phases": [0.0, 5.0, 10.0],
+                "run.dump_interval": 0.1}
+        out = os.path.join(self.tmp.name, "fields-run")
+        subprocess.run([WIGGLE, "run", self.config, "--out", out, "--threads", "1"]
+                       + [a for k, v in sets.items() for a in ("--set", f"{k}={json.dumps(v)}")],
+                       check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        csv = np.genfromtxt(os.path.join(out, "fields.csv"), delimiter=",", names=True)
+        c = wiggle.Case(self.config, overrides=sets, threads=1)
+        self.assertTrue(np.all(c.fields["frames"] == 0))  # none before t_i
+        for n in (1234, 2000, 1766):
+            c.step(n)
+        with open(os.path.join(out, "summary.json")) as f:
+            self.assertEqual(c.state_hash(), json.load(f)["state_hash"])
+        fields = c.fields
+        self.assertEqual(len(fields["phase"]), len(csv))
+        self.assertEqual(sorted(set(zip(fields["phase"], fields["frames"]))), [(0, 0), (5, 1), (10, 1)])
+        for name in csv.dtype.names:  # the CSV holds 10 significant digits; NaN where it is empty
+            np.testing.assert_allclose(fields[name], csv[name], rtol=1e-9, atol=1e-12, equal_nan=True, err_msg=name)
+        frame, dump = c.frame(), self.last_dump_frame(os.path.join(out, "dumps", "dump.lammpstrj"))
+        self.assertEqual(frame["step"], 5000)
+        np.testing.assert_array_equal(frame["id"], dump[:, 0])
+        np.testing.assert_array_equal(frame["type"], dump[:, 1])
+        columns = {"x": 2, "y": 3, "radius": 5, "vx": 6, "vy": 7, "fx": 8, "fy": 9, "tqz": 10}  # 9 and 6 digits
+        for name, k in columns.items():
+            np.testing.assert_allclose(frame[name], dump[:, k], rtol=5e-6, atol=1e-12, err_msg=name)
+        np.testing.assert_array_equal(np.sort(c.tag[:c.particle_count]) + 1, np.sort(frame["id"][frame["type"] < 3]))
+
+        half = wiggle.Case(self.config, overrides={**sets, "run.dump_interval": 0.0}, threads=1)
+        half.step(3000)
+        saved = os.path.join(self.tmp.name, "fields-saved")
+        half.save(saved)
+        subprocess.run([WIGGLE, "run", "--out", saved, "--resume", "--threads", "1"], check=True,
+                       stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        with open(os.path.join(out, "fields.csv")) as a, open(os.path.join(saved, "fields.csv")) as b:
+            self.assertEqual(a.read(), b.read())
+        self.assertIsNone(wiggle.Case(self.config, threads=1).fields)  # fields off: none
+
+    def test_wiggleplot_reads_and_draws_the_live_case_as_a_run_directory(self):
+        # load_run(case) holds what load_run(DIR) holds for the same run; plot_run(case) draws the
+        # figures a run directory gives (snapshots from the frames the caller took).
+        sets = {"fields.enabled": True, "fields.radius": 4.0, "fields.spacing": 1.0, "fields.phases": [5.0]}
+        out = os.path.join(self.tmp.name, "plot-run")
+        subprocess.run([WIGGLE, "run", self.config, "--out", out, "--threads", "1", "--no-plot"]
+                       + [a for k, v in sets.items() for a in ("--set", f"{k}={json.dumps(v)}")],
+                       check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        c = wiggle.Case(self.config, overrides=sets, threads=1)
+        frames = [c.frame()]
+        c.step(5000)
+        frames.append(c.frame())
+        live, disk = wp.load_run(c), wp.load_run(out)
+        self.assertIsNone(live.dir)
+        self.assertEqual(live.config, disk.config)
+        for name in ("vy", "vy_slope", "t_i", "t_f"):
+            self.assertEqual(live.summary[name], disk.summary[name], name)
+        for table in ("trajectory", "phase_rates", "fields"):
+            a, b = getattr(live, table), getattr(disk, table)
+            self.assertEqual(list(a.columns), list(b.columns), table)
+            np.testing.assert_allclose(a.to_numpy(dtype=float), b.to_numpy(dtype=float), rtol=1e-9, atol=1e-12,
+                                       equal_nan=True, err_msg=table)
+        figures = os.path.join(self.tmp.name, "live-figures")
+        written = wp.plot_run(c, figures, frames=frames)
+        self.assertEqual(sorted(os.path.basename(f) for f in written),
+                         ["fields.png", "phase_rates.png", "snapshots.png", "trajectory.png"])
+
+    @staticmethod
+    def last_dump_frame(path):
+        with open(path) as f:
+            lines = f.read().splitlines()
+        start = max(i for i, line in enumerate(lines) if line.startswith("ITEM: ATOMS")) + 1
+        count = int(lines[start - 6])
+        return np.loadtxt(lines[start:start + count], ndmin=2)
 
     def test_arrays_are_read_only_views_of_the_engine(self):
         c = wiggle.Case(self.config, threads=1)
