@@ -42,19 +42,7 @@ void applyOrder(std::vector<T>& values, const std::vector<std::uint32_t>& order)
 
 void ParticleStore::permute(const std::vector<std::uint32_t>& order) {
   WIGGLE_ASSERT(order.size() <= x.size());
-  applyOrder(x, order);
-  applyOrder(y, order);
-  applyOrder(vx, order);
-  applyOrder(vy, order);
-  applyOrder(omega, order);
-  applyOrder(fx, order);
-  applyOrder(fy, order);
-  applyOrder(torque, order);
-  applyOrder(radius, order);
-  applyOrder(invMass, order);
-  applyOrder(invInertia, order);
-  applyOrder(mass, order);
-  applyOrder(tag, order);
+  forEachArray([&order](auto& values, Hashed) { applyOrder(values, order); });
 }
 
 }  // namespace wiggle

@@ -47,6 +47,30 @@ struct ParticleStore {
               double pmass, double pinvMass, double pinvInertia, std::uint32_t ptag);
   // Reorders all arrays: new index k holds old particle order[k] (order is a permutation).
   void permute(const std::vector<std::uint32_t>& order);
+
+  // Whether an array enters the state hash: the dynamic state and the radii do; the masses, which
+  // follow from the radii, do not (World::stateHash).
+  enum class Hashed : bool { No, Yes };
+  // Every per-particle array, in one fixed order (the state file's): visit(array, hashed). Saving,
+  // loading, re-sorting, the state hash and the byte count all go through it, so an array added
+  // here is saved, loaded, re-sorted, hashed and counted with no other list to keep in step (only
+  // append, which gives each array its value, names them again).
+  template <class Visit>
+  void forEachArray(Visit&& visit) {
+    forEachArrayOf(*this, visit);
+  }
+  template <class Visit>
+  void forEachArray(Visit&& visit) const {
+    forEachArrayOf(*this, visit);
+  }
+
+ private:
+  template <class Store, class Visit>
+  static void forEachArrayOf(Store& s, Visit& visit) {
+    for (auto* v : {&s.x, &s.y, &s.vx, &s.vy, &s.omega, &s.fx, &s.fy, &s.torque, &s.radius}) visit(*v, Hashed::Yes);
+    for (auto* v : {&s.invMass, &s.invInertia, &s.mass}) visit(*v, Hashed::No);
+    visit(s.tag, Hashed::Yes);
+  }
 };
 
 }  // namespace wiggle

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <type_traits>
 
 #include "core/Format.h"
 #include "core/Hash.h"
@@ -164,8 +165,9 @@ std::size_t World::stateBytes() const {
   const ParticleStore& s = store_;
   const NeighbourList& l = list_;
   const IntruderPairs& ip = intruderPairs_;
-  return arrayBytes(s.x, s.y, s.vx, s.vy, s.omega, s.fx, s.fy, s.torque, s.radius, s.invMass, s.invInertia, s.mass,
-                       s.tag, kinematics_, xAtBuild_, yAtBuild_, pendingNewToOld_) +
+  std::size_t particleBytes = 0;
+  s.forEachArray([&particleBytes](const auto& values, ParticleStore::Hashed) { particleBytes += arrayBytes(values); });
+  return particleBytes + arrayBytes(kinematics_, xAtBuild_, yAtBuild_, pendingNewToOld_) +
          arrayBytes(l.rowStart, l.owner, l.partner, l.shearX, l.shearY, l.forceX, l.forceY, l.torqueArm,
                        l.crossStart, l.crossPair) +
          arrayBytes(ip.grain, ip.atom, ip.shearX, ip.shearY, ip.forceX, ip.forceY, ip.torqueArm, clump_.offsetX,
@@ -176,8 +178,13 @@ std::string World::stateHash() const {
   Hasher h;
   const ParticleStore& s = store_;
   h.addValue(step_);
+  // The particles' identities first, then their hashed arrays in the store's order: the order every
+  // committed state hash was computed in.
   h.add(s.tag);
-  for (const auto* v : {&s.x, &s.y, &s.vx, &s.vy, &s.omega, &s.fx, &s.fy, &s.torque, &s.radius}) h.add(*v);
+  s.forEachArray([&h](const auto& values, ParticleStore::Hashed hashed) {
+    if constexpr (std::is_same_v<std::decay_t<decltype(values)>, std::vector<double>>)
+      if (hashed == ParticleStore::Hashed::Yes) h.add(values);
+  });
   h.add(list_.partner);
   h.add(list_.shearX);
   h.add(list_.shearY);

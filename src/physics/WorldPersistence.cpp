@@ -5,6 +5,7 @@
 // A field added to World is added here too, and the state format version is raised.
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 
 #include "core/Error.h"
 #include "core/BinaryStream.h"
@@ -44,10 +45,7 @@ void World::save(BinaryWriter& out) const {
 
   const ParticleStore& s = store_;
   out.value(s.grainCount);
-  for (const auto* v : {&s.x, &s.y, &s.vx, &s.vy, &s.omega, &s.fx, &s.fy, &s.torque, &s.radius, &s.invMass,
-                        &s.invInertia, &s.mass})
-    out.array(*v);
-  out.array(s.tag);
+  s.forEachArray([&out](const auto& values, ParticleStore::Hashed) { out.array(values); });
 
   out.array(list_.rowStart);
   out.array(list_.partner);
@@ -132,15 +130,14 @@ WorldDef readDef(BinaryReader& in) {
 
 void readParticles(BinaryReader& in, ParticleStore& s) {
   s.grainCount = in.value<std::uint32_t>();
-  for (auto* v : {&s.x, &s.y, &s.vx, &s.vy, &s.omega, &s.fx, &s.fy, &s.torque, &s.radius, &s.invMass,
-                  &s.invInertia, &s.mass})
-    *v = in.array<double>();
-  s.tag = in.array<std::uint32_t>();
+  s.forEachArray([&in](auto& values, ParticleStore::Hashed) {
+    values = in.array<typename std::remove_reference_t<decltype(values)>::value_type>();
+  });
   const std::size_t n = s.x.size();
-  for (const auto* v : {&s.y, &s.vx, &s.vy, &s.omega, &s.fx, &s.fy, &s.torque, &s.radius, &s.invMass,
-                        &s.invInertia, &s.mass})
-    if (v->size() != n) throw Error(in.what() + " is corrupt: particle arrays differ in length");
-  if (s.tag.size() != n || s.grainCount > n) throw Error(in.what() + " is corrupt: particle counts disagree");
+  s.forEachArray([&in, n](const auto& values, ParticleStore::Hashed) {
+    if (values.size() != n) throw Error(in.what() + " is corrupt: particle arrays differ in length");
+  });
+  if (s.grainCount > n) throw Error(in.what() + " is corrupt: particle counts disagree");
 }
 
 // `particles`: the number of particles the partners must index.
