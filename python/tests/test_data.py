@@ -168,3 +168,16 @@ class SchemaTest(unittest.TestCase):
                 used |= set(re.findall(r'summary(?:\.get\(|\[)"([a-z_]+)"', text))
         self.assertTrue(used, "no summary key found: the pattern no longer matches the code")
         self.assertEqual(used - names, set())
+
+    def test_results_columns_and_units_are_the_schemas(self):
+        # docs/results-schema.json is results.csv's column table (a C++ test keeps it so): the columns
+        # the figures must not take for parameters, and the units the DataFrames carry, are its own.
+        import json
+        from wiggleplot import data, prepare
+        with open(os.path.join(REPO, "docs", "results-schema.json")) as f:
+            schema = json.load(f)
+        columns = schema["before_parameters"] + schema["after_parameters"]
+        self.assertEqual(prepare.NON_PARAMETERS, {c["name"] for c in columns} | {"case_label"})
+        for c in columns:
+            if c["unit"]:
+                self.assertEqual(data.UNITS.get(c["name"]), c["unit"], c["name"])

@@ -99,12 +99,73 @@ CaseResult readCaseSummary(const std::string& runDir) {
   return r;
 }
 
+namespace {
+
+// A case's number: empty unless the case is ok.
+std::string okNumber(const ResultRow& row, double value) {
+  return row.result.status == "ok" ? formatNumber(value, 10) : std::string();
+}
+std::string okText(const ResultRow& row, const std::string& text) {
+  return row.result.status == "ok" ? text : std::string();
+}
+
+}  // namespace
+
+const std::vector<ResultColumn>& resultColumnsBeforeParameters() {
+  static const std::vector<ResultColumn> columns = {
+      {"case", "", "the case's name (its run directory's)", [](const ResultRow& r) { return r.sweepCase.name; }},
+      {"run_dir", "", "the case's run directory, relative to the sweep directory",
+       [](const ResultRow& r) { return r.runDir; }},
+      {"status", "", "ok | failed | running | pending", [](const ResultRow& r) { return r.result.status; }},
+      {"vy", "sqrt(g d)", "the rise rate by the run's rule (summary.json's vy)",
+       [](const ResultRow& r) { return okNumber(r, r.result.vy); }},
+      {"vy_slope", "sqrt(g d)", "the least-squares slope of y(t) over the same window",
+       [](const ResultRow& r) { return okNumber(r, r.result.vySlope); }},
+      {"vy_settled", "sqrt(g d)", "the rise rate by the paper's t_f rule",
+       [](const ResultRow& r) { return okNumber(r, r.result.vySettled); }},
+      {"t_settled", "sqrt(d/g)", "the t_f that rule chose",
+       [](const ResultRow& r) { return okNumber(r, r.result.tSettled); }},
+      {"wall_s", "s", "the case's wall time, bed included",
+       [](const ResultRow& r) { return okNumber(r, r.result.wallSeconds); }},
+  };
+  return columns;
+}
+
+const std::vector<ResultColumn>& resultColumnsAfterParameters() {
+  static const std::vector<ResultColumn> columns = {
+      {"n_grains", "", "mobile grains in the bed",
+       [](const ResultRow& r) { return okText(r, std::to_string(r.result.grains)); }},
+      {"steps", "", "time steps run", [](const ResultRow& r) { return okText(r, std::to_string(r.result.steps)); }},
+      {"ns_per_particle_step", "ns", "stepping cost: wall time per particle per step",
+       [](const ResultRow& r) { return okNumber(r, r.result.nsPerParticleStep); }},
+      {"state_hash", "", "the hash of the final state (summary.json's state_hash)",
+       [](const ResultRow& r) { return okText(r, r.result.stateHash); }},
+      {"error", "", "why the case failed or stopped, in one line", [](const ResultRow& r) { return r.result.error; }},
+      {"warnings", "", "summary.json's warnings joined by \" | \"",
+       [](const ResultRow& r) { return okText(r, joinedWarnings(r.result.warnings)); }},
+  };
+  return columns;
+}
+
+nlohmann::json resultsSchema() {
+  auto list = [](const std::vector<ResultColumn>& columns) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const ResultColumn& c : columns) out.push_back({{"name", c.name}, {"unit", c.unit}, {"meaning", c.meaning}});
+    return out;
+  };
+  return {{"before_parameters", list(resultColumnsBeforeParameters())},
+          {"parameters",
+           "one column per parameter, named by its config key: the keys that vary in the sweep, then "
+           "intruder.shape, drive.amplitude, drive.period, contact.mu and box.seed when they do not; a [[case]]'s "
+           "own label is the column case_label"},
+          {"after_parameters", list(resultColumnsAfterParameters())}};
+}
+
 std::vector<std::string> resultColumns(const SweepSpec& spec) {
-  std::vector<std::string> columns = {"case",     "run_dir",    "status",    "vy",
-                                      "vy_slope", "vy_settled", "t_settled", "wall_s"};
+  std::vector<std::string> columns;
+  for (const ResultColumn& c : resultColumnsBeforeParameters()) columns.emplace_back(c.name);
   for (const std::string& k : parameterKeys(spec)) columns.push_back(columnName(k));
-  for (const char* k : {"n_grains", "steps", "ns_per_particle_step", "state_hash", "error", "warnings"})
-    columns.emplace_back(k);
+  for (const ResultColumn& c : resultColumnsAfterParameters()) columns.emplace_back(c.name);
   return columns;
 }
 
@@ -113,16 +174,13 @@ std::string resultsCsv(const SweepSpec& spec, const std::vector<std::string>& ru
   if (runDirs.size() != spec.cases.size() || results.size() != spec.cases.size())
     throw Error("results.csv: internal error: one run directory and result per case expected");
   std::string out;
-  const std::vector<std::string> columns = resultColumns(spec);
-  appendRow(out, columns);
+  appendRow(out, resultColumns(spec));
   const std::vector<std::string> keys = parameterKeys(spec);
   for (std::size_t c = 0; c < spec.cases.size(); ++c) {
     const SweepCase& sc = spec.cases[c];
-    const CaseResult& r = results[c];
-    const bool ok = r.status == "ok";
-    auto number = [ok](double v) { return ok ? formatNumber(v, 10) : std::string(); };
-    std::vector<std::string> row = {sc.name,           runDirs[c],          r.status,           number(r.vy),
-                                    number(r.vySlope), number(r.vySettled), number(r.tSettled), number(r.wallSeconds)};
+    const ResultRow source{sc, runDirs[c], results[c]};
+    std::vector<std::string> row;
+    for (const ResultColumn& column : resultColumnsBeforeParameters()) row.push_back(column.cell(source));
     for (const std::string& k : keys) {
       std::string value;
       for (const SweepParameter& p : sc.parameters)
@@ -130,12 +188,7 @@ std::string resultsCsv(const SweepSpec& spec, const std::vector<std::string>& ru
       if (value.empty() && k != "case") value = configValueString(sc.config, k);
       row.push_back(value);
     }
-    row.push_back(ok ? std::to_string(r.grains) : "");
-    row.push_back(ok ? std::to_string(r.steps) : "");
-    row.push_back(number(r.nsPerParticleStep));
-    row.push_back(ok ? r.stateHash : "");
-    row.push_back(r.error);
-    row.push_back(ok ? joinedWarnings(r.warnings) : "");
+    for (const ResultColumn& column : resultColumnsAfterParameters()) row.push_back(column.cell(source));
     appendRow(out, row);
   }
   return out;

@@ -3,14 +3,15 @@
 // case order, rewritten whole and atomically (temporary file + rename) after every change, so a
 // reader never sees a torn file.
 //
-// Columns: case,run_dir,status,vy,vy_slope,vy_settled,t_settled,wall_s, then one per parameter named by its config key
-// (the keys that vary in the sweep, then intruder.shape, drive.amplitude, drive.period, contact.mu
-// and box.seed when they do not vary, so the plots always find them), then
-// n_grains,steps,ns_per_particle_step,state_hash,error, then warnings (summary.json's, joined by
-// " | "; empty when none).
+// Columns: the fixed ones before the parameters (case ... wall_s), one per parameter named by its
+// config key (the keys that vary in the sweep, then intruder.shape, drive.amplitude, drive.period,
+// contact.mu and box.seed when they do not vary, so the plots always find them), then the fixed ones
+// after (n_grains ... warnings); the fixed ones are the table resultColumnsBeforeParameters /
+// AfterParameters, which docs/results-schema.json repeats for the Python package.
 // status: ok | failed | running | pending (not run yet, or interrupted: it resumes on a rerun).
 // Numbers of a case that is not ok are empty cells. Cells holding a comma, quote or newline are
 // quoted as RFC 4180 says.
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,30 @@ bool caseFinished(const std::string& runDir);
 // Reads <runDir>/summary.json into a CaseResult with status "ok" when the file says so. Throws
 // wiggle::Error when the file is missing or unreadable.
 CaseResult readCaseSummary(const std::string& runDir);
+
+// One row's inputs, which each fixed column reads its cell from.
+struct ResultRow {
+  const SweepCase& sweepCase;
+  const std::string& runDir;
+  const CaseResult& result;
+};
+
+// A column of results.csv that every sweep has (the parameters' columns vary with the sweep): the
+// one table the header, the rows and docs/results-schema.json (which the Python package is checked
+// against) are all made from.
+struct ResultColumn {
+  const char* name;
+  const char* unit;     // "" for none
+  const char* meaning;  // one line
+  std::string (*cell)(const ResultRow&);
+};
+// The columns before the parameters' and after them.
+const std::vector<ResultColumn>& resultColumnsBeforeParameters();
+const std::vector<ResultColumn>& resultColumnsAfterParameters();
+
+// The schema as JSON: {"before_parameters": [{"name", "unit", "meaning"}, ...], "parameters": "...",
+// "after_parameters": [...]} (docs/results-schema.json).
+nlohmann::json resultsSchema();
 
 // The column names for a sweep (see the header comment).
 std::vector<std::string> resultColumns(const SweepSpec& spec);

@@ -2,21 +2,14 @@
 // schema the documents and the Python package use.
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <sstream>
-
 #include "core/Error.h"
 #include "scenario/RunSummary.h"
+#include "support/TestSupport.h"
 
 namespace wiggle {
 namespace {
 
-std::string sourceFile(const std::string& relative) {
-  std::ifstream in(std::string(WIGGLE_SOURCE_DIR) + "/" + relative);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using testing_support::sourceFile;
 
 TEST(RunSummary, ReadsBackWhatItWrites) {
   RunSummary s;

@@ -1,5 +1,5 @@
 #pragma once
-// What several test files need: the message of an expected error, and a scratch directory of the
+// What several test files need: a source file's text, the message of an expected error, and a scratch directory of the
 // test's own. ctest runs every test in a process of its own and several at once (-j), so a test
 // that writes files writes them only under a ScratchDir: named by the process and a counter, made
 // empty, removed at the end (WIGGLE_KEEP_TEST_DIRS=1 keeps it to look at).
@@ -8,12 +8,22 @@
 #include <atomic>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <functional>
+#include <sstream>
 #include <string>
 
 #include "core/Error.h"
 
 namespace wiggle::testing_support {
+
+// A file of the source tree (a document, a schema) as text; empty when missing.
+inline std::string sourceFile(const std::string& relative) {
+  std::ifstream in(std::string(WIGGLE_SOURCE_DIR) + "/" + relative);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
 
 // The message of the wiggle::Error that f throws, or "(no error)".
 inline std::string errorOf(const std::function<void()>& f) {

@@ -149,5 +149,13 @@ TEST(SweepTask, OutcomesSurviveTheTripBetweenRanks) {
   EXPECT_EQ(back.result.status, o.result.status);
 }
 
+TEST(TaskRunner, FailureLineIsTheLastErrorWithoutPrefix) {
+  EXPECT_EQ(failureLine("wiggle: warning: cached bed refused\nwiggle: box.width = 5 is too narrow\n"),
+            "box.width = 5 is too narrow");
+  EXPECT_EQ(failureLine("wiggle: a\nwiggle: warning: b\n\n"), "a");
+  EXPECT_EQ(failureLine("[run] 10%\r[run] 20%\rSegmentation fault\n"), "Segmentation fault");
+  EXPECT_EQ(failureLine(""), "");
+}
+
 }  // namespace
 }  // namespace wiggle

@@ -1,0 +1,102 @@
+// results.csv (sweep/ResultsTable.h): its columns come from one table, which docs/results-schema.json
+// repeats for the Python package; a row's numbers are empty unless the case is ok.
+#include "sweep/ResultsTable.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "io/SweepSpec.h"
+#include "support/TestSupport.h"
+
+namespace wiggle {
+namespace {
+
+using testing_support::sourceFile;
+
+// The schema file the Python package is checked against is this table; on a change, replace
+// docs/results-schema.json by the text this test prints.
+TEST(ResultsTable, SchemaFileIsTheTable) {
+  const std::string expected = resultsSchema().dump(2) + "\n";
+  EXPECT_EQ(sourceFile("docs/results-schema.json"), expected) << "docs/results-schema.json should be:\n" << expected;
+}
+
+TEST(ResultsTable, QuotesCellsThatNeedIt) {
+  EXPECT_EQ(csvCell("disk"), "disk");
+  EXPECT_EQ(csvCell("[0, 5]"), "\"[0, 5]\"");
+  EXPECT_EQ(csvCell("say \"hi\""), "\"say \"\"hi\"\"\"");
+}
+
+TEST(ResultsTable, RowsForPendingOkAndFailedCases) {
+  const SweepSpec spec =
+      parseSweepSpec("[[case]]\nname = \"deep\"\nintruder.y0 = 20\n[grid.drive]\nperiod = [1, 2, 3]\n", "t.toml");
+  std::vector<CaseResult> results(3);
+  results[0].status = "ok";
+  results[0].vy = 0.125;
+  results[0].vySlope = -0.5;
+  results[0].vySettled = 0.25;
+  results[0].tSettled = 60;
+  results[0].wallSeconds = 3;
+  results[0].grains = 100;
+  results[0].steps = 2000;
+  results[0].stateHash = "abc";
+  results[0].warnings = {"one, with a comma", "two"};
+  results[1].status = "failed";
+  results[1].error = "box.width = 5 is too narrow, really";
+  const std::string csv = resultsCsv(spec, {"cases/a", "cases/b", "cases/c"}, results);
+  const auto rows = parseCsv(csv);
+  ASSERT_EQ(rows.size(), 4u);
+  const std::vector<std::string> header = {"case",
+                                           "run_dir",
+                                           "status",
+                                           "vy",
+                                           "vy_slope",
+                                           "vy_settled",
+                                           "t_settled",
+                                           "wall_s",
+                                           "case_label",
+                                           "intruder.y0",
+                                           "drive.period",
+                                           "intruder.shape",
+                                           "drive.amplitude",
+                                           "contact.mu",
+                                           "box.seed",
+                                           "n_grains",
+                                           "steps",
+                                           "ns_per_particle_step",
+                                           "state_hash",
+                                           "error",
+                                           "warnings"};
+  EXPECT_EQ(rows[0], header);
+  EXPECT_EQ(rows[1], (std::vector<std::string>{"deep_period=1",
+                                               "cases/a",
+                                               "ok",
+                                               "0.125",
+                                               "-0.5",
+                                               "0.25",
+                                               "60",
+                                               "3",
+                                               "deep",
+                                               "20",
+                                               "1",
+                                               "disk",
+                                               "3",
+                                               "0.1",
+                                               "1",
+                                               "100",
+                                               "2000",
+                                               "0",
+                                               "abc",
+                                               "",
+                                               "one, with a comma | two"}));
+  EXPECT_EQ(rows[2][2], "failed");
+  EXPECT_EQ(rows[2][3], "");
+  EXPECT_EQ(rows[2][rows[2].size() - 2], "box.width = 5 is too narrow, really");
+  EXPECT_EQ(rows[2].back(), "");
+  EXPECT_EQ(rows[3][2], "pending");
+  EXPECT_EQ(rows[3][10], "3");
+}
+
+}  // namespace
+}  // namespace wiggle
