@@ -108,6 +108,17 @@ std::vector<std::string> configKeys() {
   return out;
 }
 
+std::vector<std::string> configKeyChoices(std::string_view key) {
+  const KeyInfo* k = findKey(key);
+  if (k == nullptr) return {};
+  return {k->choices.begin(), k->choices.end()};
+}
+
+bool keyShapesBed(std::string_view key) {
+  const KeyInfo* k = findKey(key);
+  return k != nullptr && k->bed == BedRole::Shapes;
+}
+
 std::string tomlValueString(const toml::node& value) { return nodeText(value, false); }
 
 std::string configValueString(const RunConfig& config, std::string_view key) {
@@ -401,7 +412,8 @@ std::string configHelp() {
   std::string out =
       "Configuration keys: TOML sections and keys, or --set section.key=value.\n"
       "Lengths in d (mean grain diameter), times in sqrt(d/g); rho = d = g = 1.\n"
-      "Each line: key = default  [unit]  meaning; allowed values.\n";
+      "Each line: key = default  [unit]  meaning; allowed values. (bed): the bed depends on the key, so a\n"
+      "new value makes (and caches) a new bed.\n";
   std::string_view section;
   for (const KeyInfo& k : keyTable()) {
     if (k.section() != section) {
@@ -426,6 +438,7 @@ std::string configHelp() {
       default: break;
     }
     if (!allowed.empty()) line += "; " + allowed;
+    if (k.bed == BedRole::Shapes) line += " (bed)";
     out += line + "\n";
   }
   return out;

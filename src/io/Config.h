@@ -70,6 +70,13 @@ std::string configHelp();
 // All keys "section.key" in table order.
 std::vector<std::string> configKeys();
 
+// The names a choice key takes ("disk", "square", ...); empty for any other key.
+std::vector<std::string> configKeyChoices(std::string_view key);
+
+// Whether the bed a config makes depends on the key: declared beside the key in the key table, and
+// exactly the keys scenario/BedMaker's bed key hashes (BedMakerTest perturbs every key to check it).
+bool keyShapesBed(std::string_view key);
+
 // A key's current value as short display text: numbers in shortest round-trip form ("5", "0.25",
 // "1e-08"), strings without quotes ("disk"), lists as TOML arrays ("[0, 5]"). For results.csv
 // columns and case names. Throws wiggle::Error for an unknown key.

@@ -17,6 +17,9 @@ namespace wiggle::config_keys {
 
 enum class Kind { Number, Integer, Boolean, Text, Choice, NumberList, PointList };
 
+// Whether the bed a config makes depends on the key (Shapes: the bed key hashes it).
+enum class BedRole { Apart, Shapes };
+
 struct Bound {
   bool present = false;
   double value = 0.0;
@@ -39,6 +42,7 @@ struct KeyInfo {
   std::string_view help;   // one line
   Bound lower, upper;      // Number, Integer, and each NumberList element
   std::vector<std::string_view> choices;  // Choice
+  BedRole bed = BedRole::Apart;
   double& (*number)(RunConfig&) = nullptr;
   std::uint64_t& (*integer)(RunConfig&) = nullptr;
   bool& (*boolean)(RunConfig&) = nullptr;

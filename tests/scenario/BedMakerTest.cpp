@@ -7,6 +7,7 @@
 #include <unistd.h>
 #include <algorithm>
 #include <bit>
+#include <cctype>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
@@ -16,6 +17,7 @@
 #include <tuple>
 
 #include "core/Error.h"
+#include "core/Format.h"
 #include "core/StopSignal.h"
 #include "io/AtomicFile.h"
 #include "io/Config.h"
@@ -125,6 +127,71 @@ TEST(BedMaker, RandomBatchIsAPureFunctionOfSeedAndSerial) {
   };
   EXPECT_TRUE(differs(randomPourBatch(randomConfig({"box.seed=2"}), clump, 15.0, 1000)));  // another seed
   EXPECT_TRUE(differs(randomPourBatch(c, clump, 15.0, 1001)));  // the next batch's serial numbers
+}
+
+// Other values of a key to try, as --set text: numbers scaled and shifted (a candidate the config
+// refuses is skipped), the other names of a choice, the other truth value, a changed list; none for
+// text keys (file and directory names: the bed key is that of the config's own bed).
+std::vector<std::string> otherValues(const RunConfig& c, const std::string& key) {
+  const std::string now = configValueToml(c, key);
+  std::vector<std::string> out;
+  if (const auto names = configKeyChoices(key); !names.empty()) {
+    for (const std::string& name : names) out.push_back("\"" + name + "\"");
+  } else if (now == "true" || now == "false") {
+    out.push_back(now == "true" ? "false" : "true");
+  } else if (now.starts_with("[[")) {  // a point list: the outline scaled
+    out.push_back("[[-1.8, -1.8], [1.8, -1.8], [1.8, 1.8], [-1.8, 1.8]]");
+  } else if (now.starts_with("[")) {
+    out.push_back("[1.0]");
+  } else if (!now.empty() && (std::isdigit(static_cast<unsigned char>(now[0])) || now[0] == '-')) {
+    const double v = std::stod(now);
+    if (isRealKey(key)) {
+      for (double x : {v * 1.25, v * 0.8, v * 2, v * 0.5, v + 1, v + 0.5})
+        if (x != v) out.push_back(formatNumber(x, 17));
+    } else {
+      for (double x : {v + 1, v + 2}) out.push_back(std::to_string(static_cast<long long>(x)));
+    }
+  }
+  std::erase(out, now);
+  return out;
+}
+
+// The keys the key table declares as shaping the bed (config's keyShapesBed) are exactly those whose
+// change changes the bed key: every key is set to another value in two configs (the defaults; a
+// random-poured, carved polygon, where the keys that only some protocols or shapes read count), and
+// the bed key must change for a declared key in at least one of them, and for no other key in any.
+TEST(BedMaker, BedKeyHashesExactlyTheKeysDeclaredToShapeTheBed) {
+  const std::vector<RunConfig> bases = {
+      loadRunConfig(std::nullopt, {}),
+      loadRunConfig(std::nullopt,
+                    {"bed.pour=random", "bed.cavity=carved", "bed.relax_damping=1", "intruder.shape=polygon",
+                     "intruder.vertices=[[-1.5,-1.5],[1.5,-1.5],[1.5,1.5],[-1.5,1.5]]"})};
+  for (const std::string& key : configKeys()) {
+    bool tried = false, changed = false;
+    for (const RunConfig& base : bases) {
+      const std::string before = bedKey(base, prepareCase(base).clump);
+      for (const std::string& value : otherValues(base, key)) {
+        RunConfig c = base;
+        std::string after;
+        try {
+          applyOverride(c, key + "=" + value);
+          validateRunConfig(c);
+          after = bedKey(c, prepareCase(c).clump);
+        } catch (const Error&) {
+          continue;  // a value this config refuses: try the next
+        }
+        tried = true;
+        changed = changed || after != before;
+        break;
+      }
+    }
+    if (configValueToml(bases[0], key).starts_with("\"") && configKeyChoices(key).empty()) continue;  // text
+    EXPECT_TRUE(tried) << key << ": no other value of it was accepted; give otherValues one";
+    EXPECT_EQ(changed, keyShapesBed(key))
+        << key
+        << (keyShapesBed(key) ? " is declared to shape the bed, but the bed key ignores it"
+                              : " changes the bed key but is not declared to shape the bed");
+  }
 }
 
 TEST(BedMaker, LatticeBedKeyIsUnchangedAndRandomKeysDiffer) {
