@@ -67,68 +67,68 @@ const std::vector<KeyInfo>& keyTable() {
   static const std::vector<KeyInfo> table = {
       // [box]
       shapesBed(number("box.width", [](C& c) -> double& { return c.box.width; }, above(0), noBound, "d",
-             "box width W, periodic in x; a whole number")),
+                       "box width W, periodic in x; a whole number")),
       shapesBed(number("box.bed_height", [](C& c) -> double& { return c.box.bedHeight; }, above(0), noBound,
-             "d", "target height of the bed's free surface")),
+                       "d", "target height of the bed's free surface")),
       shapesBed(integer("box.seed", [](C& c) -> std::uint64_t& { return c.box.seed; }, atLeast(0), "",
-              "seed of the grain diameters and the pouring (same seed, same bed)")),
+                        "seed of the grain diameters and the pouring (same seed, same bed)")),
       // [grains]
       shapesBed(number("grains.d_min", [](C& c) -> double& { return c.grains.dMin; }, above(0), noBound, "d",
-             "smallest grain diameter (diameters are uniform in [d_min, d_max])")),
+                       "smallest grain diameter (diameters are uniform in [d_min, d_max])")),
       shapesBed(number("grains.d_max", [](C& c) -> double& { return c.grains.dMax; }, above(0), noBound, "d",
-             "largest grain diameter; >= d_min")),
+                       "largest grain diameter; >= d_min")),
       shapesBed(choice(
-          "grains.mass_model", choiceNameList<MassModel>(),
-          [](const C& c) -> std::string { return std::string(choiceName(c.grains.massModel)); },
-          [](C& c, const std::string& v) { c.grains.massModel = *choiceNamed<MassModel>(v); },
-          "grain mass and inertia: sphere m = (4/3) pi r^3, I = (2/5) m r^2; "
-          "disc m = pi r^2, I = (1/2) m r^2")),
+                    "grains.mass_model", choiceNameList<MassModel>(),
+                    [](const C& c) -> std::string { return std::string(choiceName(c.grains.massModel)); },
+                    [](C& c, const std::string& v) { c.grains.massModel = *choiceNamed<MassModel>(v); },
+                    "grain mass and inertia: sphere m = (4/3) pi r^3, I = (2/5) m r^2; "
+                    "disc m = pi r^2, I = (1/2) m r^2")),
       // [contact]
       shapesBed(choice(
-          "contact.law", choiceNameList<ContactLaw>(),
-          [](const C& c) -> std::string { return std::string(choiceName(c.contact.law)); },
-          [](C& c, const std::string& v) { c.contact.law = *choiceNamed<ContactLaw>(v); },
-          "the force law of every contact: hertz = LAMMPS's gran/hertz/history, the paper's; hooke = "
-          "gran/hooke/history, the same law without its sqrt(overlap Reff) factor (a linear spring-dashpot; "
-          "kn and kt are then forces per length, m g / d; docs/PHYSICS.md section 4)")),
+                    "contact.law", choiceNameList<ContactLaw>(),
+                    [](const C& c) -> std::string { return std::string(choiceName(c.contact.law)); },
+                    [](C& c, const std::string& v) { c.contact.law = *choiceNamed<ContactLaw>(v); },
+                    "the force law of every contact: hertz = LAMMPS's gran/hertz/history, the paper's; hooke = "
+                    "gran/hooke/history, the same law without its sqrt(overlap Reff) factor (a linear spring-dashpot; "
+                    "kn and kt are then forces per length, m g / d; docs/PHYSICS.md section 4)")),
       shapesBed(number("contact.kn", [](C& c) -> double& { return c.contact.kn; }, above(0), noBound,
-             "m g / d^2", "normal stiffness K_n (with contact.law = \"hooke\": m g / d)")),
+                       "m g / d^2", "normal stiffness K_n (with contact.law = \"hooke\": m g / d)")),
       shapesBed(number("contact.kt", [](C& c) -> double& { return c.contact.kt; }, above(0), noBound,
-             "m g / d^2", "tangential stiffness K_t (with contact.law = \"hooke\": m g / d)")),
+                       "m g / d^2", "tangential stiffness K_t (with contact.law = \"hooke\": m g / d)")),
       shapesBed(number("contact.gamma_n", [](C& c) -> double& { return c.contact.gammaN; }, atLeast(0),
-             noBound, "1/(d sqrt(d/g))", "normal viscoelastic damping gamma_n")),
+                       noBound, "1/(d sqrt(d/g))", "normal viscoelastic damping gamma_n")),
       shapesBed(number("contact.gamma_t", [](C& c) -> double& { return c.contact.gammaT; }, atLeast(0),
-             noBound, "1/(d sqrt(d/g))", "tangential viscoelastic damping gamma_t")),
+                       noBound, "1/(d sqrt(d/g))", "tangential viscoelastic damping gamma_t")),
       shapesBed(number("contact.mu", [](C& c) -> double& { return c.contact.mu; }, atLeast(0), noBound, "",
-             "Coulomb friction coefficient")),
+                       "Coulomb friction coefficient")),
       // [intruder]
       shapesBed(choice(
-          "intruder.shape", choiceNameList<ShapeName>(),
-          [](const C& c) -> std::string { return std::string(choiceName(c.intruder.shape)); },
-          [](C& c, const std::string& v) { c.intruder.shape = *choiceNamed<ShapeName>(v); },
-          "outline: the paper's OS1..OS5 (docs/SHAPES.md) or \"polygon\" given by intruder.vertices")),
+                    "intruder.shape", choiceNameList<ShapeName>(),
+                    [](const C& c) -> std::string { return std::string(choiceName(c.intruder.shape)); },
+                    [](C& c, const std::string& v) { c.intruder.shape = *choiceNamed<ShapeName>(v); },
+                    "outline: the paper's OS1..OS5 (docs/SHAPES.md) or \"polygon\" given by intruder.vertices")),
       shapesBed(pointList("intruder.vertices", [](C& c) -> Points& { return c.intruder.vertices; }, "d",
-                "outer outline for shape = \"polygon\": at least 3 [x, y] pairs; "
-                "empty for the other shapes")),
+                          "outer outline for shape = \"polygon\": at least 3 [x, y] pairs; "
+                          "empty for the other shapes")),
       shapesBed(number("intruder.angle", [](C& c) -> double& { return c.intruder.angle; }, noBound, noBound,
-             "degrees", "rotation of the outline, counter-clockwise")),
+                       "degrees", "rotation of the outline, counter-clockwise")),
       shapesBed(number("intruder.y0", [](C& c) -> double& { return c.intruder.y0; }, above(0), noBound, "d",
-             "centre height at t = 0 (x0 is the box centre); < box.bed_height")),
+                       "centre height at t = 0 (x0 is the box centre); < box.bed_height")),
       shapesBed(number("intruder.mass", [](C& c) -> double& { return c.intruder.mass; }, atLeast(0), noBound,
-             "rho d^3", "intruder mass; 0 = the one intruder.mass_rule gives")),
+                       "rho d^3", "intruder mass; 0 = the one intruder.mass_rule gives")),
       shapesBed(choice(
-          "intruder.mass_rule", choiceNameList<MassRule>(),
-          [](const C& c) -> std::string { return std::string(choiceName(c.intruder.massRule)); },
-          [](C& c, const std::string& v) { c.intruder.massRule = *choiceNamed<MassRule>(v); },
-          "the mass when intruder.mass = 0, the same for every shape: disk_area = the disk outline's area x "
-          "the grains' mass per area (docs/PHYSICS.md, section 6); glued_disk = the disk built of touching "
-          "0.5 d spheres at grain density (docs/SHAPES.md)")),
+                    "intruder.mass_rule", choiceNameList<MassRule>(),
+                    [](const C& c) -> std::string { return std::string(choiceName(c.intruder.massRule)); },
+                    [](C& c, const std::string& v) { c.intruder.massRule = *choiceNamed<MassRule>(v); },
+                    "the mass when intruder.mass = 0, the same for every shape: disk_area = the disk outline's area x "
+                    "the grains' mass per area (docs/PHYSICS.md, section 6); glued_disk = the disk built of touching "
+                    "0.5 d spheres at grain density (docs/SHAPES.md)")),
       shapesBed(choice(
-          "intruder.surface", choiceNameList<IntruderSurface>(),
-          [](const C& c) -> std::string { return std::string(choiceName(c.intruder.surface)); },
-          [](C& c, const std::string& v) { c.intruder.surface = *choiceNamed<IntruderSurface>(v); },
-          "the clump's atoms: smooth = neighbours at most 0.35 d apart; glued = touching (0.5 d apart), a "
-          "rough surface like the paper's glued spheres (docs/SHAPES.md)")),
+                    "intruder.surface", choiceNameList<IntruderSurface>(),
+                    [](const C& c) -> std::string { return std::string(choiceName(c.intruder.surface)); },
+                    [](C& c, const std::string& v) { c.intruder.surface = *choiceNamed<IntruderSurface>(v); },
+                    "the clump's atoms: smooth = neighbours at most 0.35 d apart; glued = touching (0.5 d apart), a "
+                    "rough surface like the paper's glued spheres (docs/SHAPES.md)")),
       // [drive]
       number("drive.amplitude", [](C& c) -> double& { return c.drive.amplitude; }, atLeast(0),
              noBound, "d",
@@ -148,33 +148,33 @@ const std::vector<KeyInfo>& keyTable() {
           "(1 - cos(2 pi t / T)), from rest, swinging A T / pi to one side"),
       // [bed]
       shapesBed(number("bed.batch_height", [](C& c) -> double& { return c.bed.batchHeight; }, above(0),
-             noBound, "d", "height of each poured layer")),
+                       noBound, "d", "height of each poured layer")),
       shapesBed(choice(
-          "bed.pour", choiceNameList<BedPour>(),
-          [](const C& c) -> std::string { return std::string(choiceName(c.bed.pour)); },
-          [](C& c, const std::string& v) { c.bed.pour = *choiceNamed<BedPour>(v); },
-          "how each batch is placed (docs/PHYSICS.md, section 8): lattice = a loose lattice with small random "
-          "velocities; random = grains at random non-overlapping positions, as LAMMPS's fix pour")),
+                    "bed.pour", choiceNameList<BedPour>(),
+                    [](const C& c) -> std::string { return std::string(choiceName(c.bed.pour)); },
+                    [](C& c, const std::string& v) { c.bed.pour = *choiceNamed<BedPour>(v); },
+                    "how each batch is placed (docs/PHYSICS.md, section 8): lattice = a loose lattice with small random "
+                    "velocities; random = grains at random non-overlapping positions, as LAMMPS's fix pour")),
       shapesBed(choice(
-          "bed.cavity", choiceNameList<BedCavity>(),
-          [](const C& c) -> std::string { return std::string(choiceName(c.bed.cavity)); },
-          [](C& c, const std::string& v) { c.bed.cavity = *choiceNamed<BedCavity>(v); },
-          "how the intruder gets its place in the bed (docs/PHYSICS.md, section 8): poured = the grains are poured "
-          "around the held intruder; carved = the seed's bed is poured once without an intruder (shared by every "
-          "shape and y0), the grains the intruder overlaps are removed and the bed relaxes to rest around it")),
+                    "bed.cavity", choiceNameList<BedCavity>(),
+                    [](const C& c) -> std::string { return std::string(choiceName(c.bed.cavity)); },
+                    [](C& c, const std::string& v) { c.bed.cavity = *choiceNamed<BedCavity>(v); },
+                    "how the intruder gets its place in the bed (docs/PHYSICS.md, section 8): poured = the grains are poured "
+                    "around the held intruder; carved = the seed's bed is poured once without an intruder (shared by every "
+                    "shape and y0), the grains the intruder overlaps are removed and the bed relaxes to rest around it")),
       shapesBed(number("bed.pour_fraction", [](C& c) -> double& { return c.bed.pourFraction; }, above(0), atMost(0.6),
-             "", "pour = \"random\" only: area fraction of grains a batch fills in its insertion region "
-             "(box.width x bed.batch_height, one d_max above the highest grain; fix pour's vol)")),
+                       "", "pour = \"random\" only: area fraction of grains a batch fills in its insertion region "
+                       "(box.width x bed.batch_height, one d_max above the highest grain; fix pour's vol)")),
       shapesBed(number("bed.pour_speed", [](C& c) -> double& { return c.bed.pourSpeed; }, atLeast(0), noBound,
-             "sqrt(g d)", "pour = \"random\" only: downward speed at the top of the insertion region; a grain "
-             "lower in it starts as if it had fallen from there (fix pour's vel; vx = 0)")),
+                       "sqrt(g d)", "pour = \"random\" only: downward speed at the top of the insertion region; a grain "
+                       "lower in it starts as if it had fallen from there (fix pour's vel; vx = 0)")),
       shapesBed(number("bed.settle_speed", [](C& c) -> double& { return c.bed.settleSpeed; }, above(0),
-             noBound, "sqrt(g d)", "the next batch is poured when the rms grain speed is below this")),
+                       noBound, "sqrt(g d)", "the next batch is poured when the rms grain speed is below this")),
       shapesBed(number("bed.rest_energy", [](C& c) -> double& { return c.bed.restEnergy; }, above(0), noBound,
-             "m g d", "final relaxation ends when the kinetic energy per grain, averaged over one time unit, is below this")),
+                       "m g d", "final relaxation ends when the kinetic energy per grain, averaged over one time unit, is below this")),
       shapesBed(number("bed.relax_damping", [](C& c) -> double& { return c.bed.relaxDamping; }, atLeast(0), atMost(100),
-             "sqrt(g/d)", "while the levelled bed relaxes, its grains' velocities decay as exp(-rate t) besides the "
-             "contacts' own damping (applied every 1000 steps), so it comes to rest sooner; 0 = off")),
+                       "sqrt(g/d)", "while the levelled bed relaxes, its grains' velocities decay as exp(-rate t) besides the "
+                       "contacts' own damping (applied every 1000 steps), so it comes to rest sooner; 0 = off")),
       number("bed.max_time", [](C& c) -> double& { return c.bed.maxTime; }, above(0), noBound,
              "sqrt(d/g)", "give up making the bed after this much simulated time"),
       text("bed.file", [](C& c) -> std::string& { return c.bed.file; },
@@ -192,7 +192,7 @@ const std::vector<KeyInfo>& keyTable() {
            "directory of cached beds (\"\" = $WIGGLE_CACHE or ~/.cache/wiggle)"),
       // [run]
       shapesBed(number("run.dt", [](C& c) -> double& { return c.run.dt; }, above(0), noBound, "sqrt(d/g)",
-             "time step")),
+                       "time step")),
       number("run.duration", [](C& c) -> double& { return c.run.duration; }, above(0), noBound,
              "sqrt(d/g)", "simulated time t_total of the run; >= run.dt"),
       number("run.sample_interval", [](C& c) -> double& { return c.run.sampleInterval; }, above(0),
@@ -225,11 +225,11 @@ const std::vector<KeyInfo>& keyTable() {
               "add the kinetic stress to the contact stress"),
       // [engine]
       shapesBed(number("engine.skin", [](C& c) -> double& { return c.engine.skin; }, above(0), noBound, "d",
-             "Verlet skin of the grain neighbour list")),
+                       "Verlet skin of the grain neighbour list")),
       shapesBed(number("engine.intruder_skin", [](C& c) -> double& { return c.engine.intruderSkin; },
-             above(0), noBound, "d", "Verlet skin of the intruder's neighbour list")),
+                       above(0), noBound, "d", "Verlet skin of the intruder's neighbour list")),
       shapesBed(integer("engine.sort_interval", [](C& c) -> std::uint64_t& { return c.engine.sortInterval; },
-              atLeast(1), "steps", "steps between spatial re-sorts of the grains")),
+                        atLeast(1), "steps", "steps between spatial re-sorts of the grains")),
   };
   return table;
 }
