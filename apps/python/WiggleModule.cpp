@@ -91,7 +91,7 @@ class PyCase {
     const std::string configPath = dir + "/config.toml";
     if (!std::filesystem::exists(configPath)) throw Error("load: " + dir + " holds no run (no config.toml)");
     const std::string configToml = readFile(configPath);
-    Case run = prepareCase(parseRunConfig(configToml, configPath));
+    Case run = prepareCase(parseRunConfig(configToml, configPath), BedNeeded::No);  // the checkpoint holds the bed
     const std::string path = checkpointPath(dir);
     if (!std::filesystem::exists(path)) throw Error("load: " + dir + " holds no checkpoint.bin");
     Checkpoint checkpoint = parseCheckpoint(readFile(path), path, run.config, configToml);

@@ -77,7 +77,7 @@ double estimatedGrains(const RunConfig& config) {
   return config.box.width * config.box.bedHeight * kPacking / meanArea;
 }
 
-Case prepareCase(const RunConfig& config) {
+Case prepareCase(const RunConfig& config, BedNeeded bed) {
   Case c;
   c.config = config;
   c.shape = makeShape(config.intruder);
@@ -90,7 +90,7 @@ Case prepareCase(const RunConfig& config) {
   c.clump = makeClump(config.intruder, c.shape, config.grains.massModel, 1.0);
   checkGeometry(config, c.clump);
   // A pinned bed is never made, so it must be there before anything is written.
-  if (!config.bed.file.empty() && !std::filesystem::is_regular_file(config.bed.file))
+  if (bed == BedNeeded::Yes && !config.bed.file.empty() && !std::filesystem::is_regular_file(config.bed.file))
     throw Error("bed.file = " + config.bed.file + ": no such file");
 
   c.drive.kind = driveKind(config.drive);

@@ -45,7 +45,10 @@ struct Case {
 // atom is placed (so a huge polygon cannot exhaust memory); the box must hold the intruder plus
 // twice the amplitude and a few grains on each side; the intruder must sit inside the bed with
 // grains below and above; the bed must not be absurdly large. Throws wiggle::Error naming the key.
-Case prepareCase(const RunConfig& config);
+// `bed`: whether the case will be run from its bed (then a pinned bed.file must exist before anything
+// is written) or is a finished or checkpointed run read again (wiggle rate, Case.load), which needs none.
+enum class BedNeeded : bool { No, Yes };
+Case prepareCase(const RunConfig& config, BedNeeded bed = BedNeeded::Yes);
 
 // The drive's horizontal motion once the run starts (docs/PHYSICS.md §7): the sinusoid of
 // drive.form, ramped when drive.ramp_periods > 0 (displacement form only: io/Config's validation

@@ -25,7 +25,7 @@ Remeasured remeasureRun(const std::string& runDir, const RemeasureRequest& reque
   if (!std::filesystem::is_regular_file(trajectoryPath))
     throw Error(runDir + ": no trajectory.csv: the run has not finished");
   // The case, for its surfaced height (the plateau rule) as the run worked it out.
-  const Case run = prepareCase(parseRunConfig(readFile(configPath), configPath));
+  const Case run = prepareCase(parseRunConfig(readFile(configPath), configPath), BedNeeded::No);
   const std::vector<TrajectorySample> samples = readTrajectoryCsv(trajectoryPath);
 
   Remeasured r;

@@ -382,6 +382,16 @@ TEST_F(Cli, RateMeasuresAFinishedRunAgainAndRecordsTheSettledRate) {
   r = wiggle("rate run --write");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(slurp(work_ / "run" / "summary.json").find("\"vy_settled\""), std::string::npos);
+
+  // A run pinned to a bed file by a relative path is measured again from anywhere: the rates read
+  // the trajectory, not the bed (a sweep of such cases read from another directory).
+  std::string config = slurp(work_ / "run" / "config.toml");
+  const std::size_t file = config.find("file = \"\"");
+  ASSERT_NE(file, std::string::npos);
+  config.replace(file, 9, "file = \"beds/elsewhere.bin\"");
+  std::ofstream(work_ / "run" / "config.toml") << config;
+  r = wiggle("rate run");
+  EXPECT_EQ(r.status, 0) << r.err;
 }
 
 // A run or sweep stopped by SIGINT or SIGTERM saves its work and exits 128 + the signal (130, 143),
