@@ -7,15 +7,15 @@
 #include "Commands.h"
 #include "PathChecks.h"
 #include "core/Error.h"
-#include "physics/ForceKernels.h"
 #include "core/Format.h"
 #include "core/Machine.h"
 #include "io/AtomicFile.h"
 #include "io/Config.h"
+#include "physics/ForceKernels.h"
 #include "scenario/BedMaker.h"
 #include "scenario/Checkpoint.h"
+#include "scenario/CostModel.h"
 #include "scenario/Experiment.h"
-#include "sweep/SweepPlan.h"
 
 namespace wiggle::cli {
 
@@ -36,8 +36,6 @@ struct RunArgs {
 void printCheck(const RunConfig& c, const std::string& out, bool resume) {
   const Case run = prepareCase(c);
   const ClumpDef& clump = run.clump;
-  const std::string key = bedKey(c, clump);
-  const std::string bedPath = bedCachePath(c, key);
   const SpeedBasis speed = speedBasis(c);
   const double ns = speed.ns;
   const std::uint64_t steps = run.steps.total;
@@ -46,19 +44,23 @@ void printCheck(const RunConfig& c, const std::string& out, bool resume) {
               c.drive.amplitude, c.drive.period, c.contact.mu);
   std::printf("bed: %g x %g d, about %.0f grains (estimate), %zu intruder atoms, mass %g\n", c.box.width,
               c.box.bedHeight, estimatedGrains(c), clump.offsetX.size(), clump.mass);
-  if (!c.bed.file.empty())
-    std::printf("bed: bed.file = %s (%s)\n", c.bed.file.c_str(),
-                std::filesystem::is_regular_file(c.bed.file) ? "checked when the run starts" : "no such file");
-  else if (std::filesystem::exists(bedPath))
-    std::printf("bed %s: cached (%s)\n", key.c_str(), bedPath.c_str());
-  else if (c.bed.cavity == BedCavity::Carved) {
-    const bool baseCached = std::filesystem::exists(bedCachePath(c, baseBedKey(c)));
-    std::printf("bed %s: not cached; carved from base bed %s (%s), about %s on one core (estimate)\n", key.c_str(),
-                baseBedKey(c).c_str(), baseCached ? "cached" : "not cached: poured first",
-                formatDuration(estimatedBedSeconds(c, ns, !baseCached)).c_str());
-  } else
-    std::printf("bed %s: not cached, making it takes about %s on one core (estimate)\n", key.c_str(),
-                formatDuration(estimatedBedSeconds(c, ns)).c_str());
+  const BedPlan bed = planBed(c, clump);
+  switch (bed.source) {
+    case BedPlan::Source::File:
+      std::printf("bed: bed.file = %s (%s)\n", bed.path.c_str(),
+                  std::filesystem::is_regular_file(bed.path) ? "checked when the run starts" : "no such file");
+      break;
+    case BedPlan::Source::Cached: std::printf("bed %s: cached (%s)\n", bed.key.c_str(), bed.path.c_str()); break;
+    case BedPlan::Source::Carve:
+      std::printf("bed %s: not cached; carved from base bed %s (%s), about %s on one core (estimate)\n",
+                  bed.key.c_str(), bed.baseKey.c_str(), bed.baseCached ? "cached" : "not cached: poured first",
+                  formatDuration(estimatedBedSeconds(c, ns, !bed.baseCached)).c_str());
+      break;
+    case BedPlan::Source::Pour:
+      std::printf("bed %s: not cached, making it takes about %s on one core (estimate)\n", bed.key.c_str(),
+                  formatDuration(estimatedBedSeconds(c, ns)).c_str());
+      break;
+  }
   std::printf("run: %llu steps (t = %g at dt = %g), about %s on one core at %.3g ns per particle-step (%s)\n",
               static_cast<unsigned long long>(steps), c.run.duration, c.run.dt,
               formatDuration(estimatedRunSeconds(c, ns)).c_str(), ns, speed.source.c_str());

@@ -20,9 +20,10 @@ double loadAverage() {
   return ::getloadavg(load, 1) == 1 ? load[0] : 0.0;
 }
 
-int idleCores() {
-  const int cores = availableCores();
-  return std::clamp(cores - static_cast<int>(std::lround(loadAverage())), 1, cores);
+int idleCores() { return idleCoresOf(availableCores(), loadAverage()); }
+
+int idleCoresOf(int cores, double load) {
+  return std::clamp(cores - static_cast<int>(std::lround(load)), 1, std::max(1, cores));
 }
 
 }  // namespace wiggle

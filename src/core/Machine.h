@@ -16,5 +16,7 @@ double loadAverage();
 // jobs on 2 cores, against 55 for 1 thread (docs/PERFORMANCE.md, "Threads on a busy machine").
 // The thread count never changes a result, only the speed.
 int idleCores();
+// The rule itself, for `cores` available cores and a load average `load`.
+int idleCoresOf(int cores, double load);
 
 }  // namespace wiggle

@@ -18,48 +18,11 @@
 #include "scenario/Checkpoint.h"
 #include "scenario/Experiment.h"
 #include "scenario/Shape.h"
-#include "scenario/SpeedRecord.h"
 #include "sweep/ResultsTable.h"
 
 namespace wiggle {
 
 namespace fs = std::filesystem;
-
-
-namespace {
-// Grains plus the frozen base row (one per unit of width); the intruder's atoms are negligible.
-double estimatedParticles(const RunConfig& config) { return estimatedGrains(config) + config.box.width; }
-}  // namespace
-
-SpeedBasis speedBasis(const RunConfig& config) {
-  SpeedBasis basis;
-  if (const std::optional<MeasuredSpeed> m = measuredSpeed(config)) {
-    basis.ns = m->nsPerParticleStep;
-    basis.source = "the median of this machine's last " + std::to_string(m->runs) + " one-thread run" +
-                   (m->runs == 1 ? "" : "s") + " (" + m->path + ")";
-  } else {
-    basis.source = "no run recorded on this machine yet, so the reference machine's figure, docs/SWEEPS.md";
-  }
-  return basis;
-}
-
-double estimatedRunSeconds(const RunConfig& config, double nsPerParticleStep) {
-  const double steps = std::round(config.run.duration / config.run.dt);
-  return 1e-9 * nsPerParticleStep * estimatedParticles(config) * steps;
-}
-
-double estimatedBedSeconds(const RunConfig& config, double nsPerParticleStep, bool withBase) {
-  // While pouring, the bed holds on average about half (b + 1) / (2 b) of its final grains over
-  // b batches; then the whole bed relaxes.
-  const double batches = std::max(1.0, std::ceil(config.box.bedHeight / config.bed.batchHeight));
-  const double pourTime = 0.5 * (batches + 1.0) * CostModel::bedTimePerBatch;
-  const bool carved = config.bed.cavity == BedCavity::Carved;
-  const double relaxTime = config.bed.relaxDamping > 0 ? CostModel::dampedRelaxTime
-                           : carved                    ? CostModel::carvedRelaxTime
-                                                       : CostModel::bedRelaxTime;
-  const double simulatedTime = relaxTime + (carved && !withBase ? 0.0 : pourTime);
-  return 1e-9 * nsPerParticleStep * estimatedParticles(config) * simulatedTime / config.run.dt;
-}
 
 SweepPlan makeSweepPlan(SweepSpec spec, const std::string& outDir) {
   SweepPlan plan;
@@ -75,11 +38,13 @@ SweepPlan makeSweepPlan(SweepSpec spec, const std::string& outDir) {
     p.runDir = "cases/" + c.name;
     p.dir = outDir + "/" + p.runDir;
     p.estimatedParticles = estimatedParticles(c.config);
+    ClumpDef clump;
     try {
       // The same checks `wiggle run` makes before touching the bed, so a bad case fails here with
       // the message the run would give, without a process or a bed being spent on it.
       const Case run = prepareCase(c.config);
       p.steps = run.steps.total;
+      clump = run.clump;
       if (c.config.bed.file.empty()) p.bedKey = bedKey(c.config, run.clump);  // a pinned bed is never made
     } catch (const Error& e) {
       p.state = CaseState::Failed;
@@ -118,9 +83,9 @@ SweepPlan makeSweepPlan(SweepSpec spec, const std::string& outDir) {
           bed.firstCase = c.index;
           bed.cachePath = bedCachePath(c.config, p.bedKey);
           // Carved beds of one seed share a base bed: it is poured once, by the first of them.
-          const std::string base = baseBedKey(c.config);
-          const bool baseToPour = c.config.bed.cavity == BedCavity::Carved &&
-                                  !fs::exists(bedCachePath(c.config, base)) && basesToPour.insert(base).second;
+          const BedPlan planned = planBed(c.config, clump);
+          const bool baseToPour = planned.source == BedPlan::Source::Carve && !planned.baseCached &&
+                                  basesToPour.insert(planned.baseKey).second;
           bed.estimatedSeconds = estimatedBedSeconds(c.config, plan.speed.ns, baseToPour);
           plan.beds.push_back(bed);
         }

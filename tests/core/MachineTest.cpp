@@ -2,26 +2,27 @@
 // process may use, and the whole machine when the load average leaves it idle.
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <cmath>
-#include <cstdlib>
-
 #include "core/Machine.h"
 
 namespace wiggle {
 namespace {
 
-TEST(Machine, IdleCoresIsTheAvailableCoresLessTheLoadAndAtLeastOne) {
-  const int cores = availableCores();
-  const double load = loadAverage();
-  ASSERT_GE(cores, 1);
-  ASSERT_GE(load, 0.0);
-  const int idle = idleCores();
-  EXPECT_GE(idle, 1);
-  EXPECT_LE(idle, cores);
-  // The load can change between the two reads by at most a little: allow one core either way.
-  const int expected = std::max(1, std::min(cores, cores - static_cast<int>(std::lround(load))));
-  EXPECT_LE(std::abs(idle - expected), 1) << "load " << load << " on " << cores << " cores";
+TEST(Machine, IdleCoresIsTheAvailableCoresLessTheRoundedLoadAndAtLeastOne) {
+  EXPECT_EQ(idleCoresOf(2, 0.0), 2);  // an idle machine: every core
+  EXPECT_EQ(idleCoresOf(2, 0.4), 2);  // a load under half a core rounds away
+  EXPECT_EQ(idleCoresOf(2, 0.6), 1);
+  EXPECT_EQ(idleCoresOf(2, 1.5), 1);  // 1.5 rounds to 2: no core idle, but a run still gets one
+  EXPECT_EQ(idleCoresOf(2, 7.0), 1);
+  EXPECT_EQ(idleCoresOf(8, 2.49), 6);
+  EXPECT_EQ(idleCoresOf(1, 0.0), 1);
+  EXPECT_EQ(idleCoresOf(0, 0.0), 1);  // an affinity read that failed: still one thread
+}
+
+TEST(Machine, TheMachinesOwnFiguresAreSane) {
+  ASSERT_GE(availableCores(), 1);
+  ASSERT_GE(loadAverage(), 0.0);
+  EXPECT_GE(idleCores(), 1);
+  EXPECT_LE(idleCores(), availableCores());
 }
 
 }  // namespace

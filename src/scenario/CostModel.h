@@ -1,0 +1,63 @@
+#pragma once
+// What a case will cost and what getting its bed takes, before anything runs: `wiggle run --check`,
+// a sweep's plan and dry run, its ETA before a case has finished, and `wiggle boundary --dry-run`
+// all ask here (docs/SWEEPS.md, "Cost estimate").
+#include <string>
+
+#include "io/RunConfig.h"
+#include "physics/Intruder.h"
+
+namespace wiggle {
+
+// One place for the numbers; docs/SWEEPS.md quotes them and says how they were measured.
+struct CostModel {
+  // Wall time per particle per step of one single-threaded case on this project's reference
+  // machine [ns]: 55 ns, bench/run_bench.sh on the configs/small.toml bed, 1 thread, median of
+  // 3 rounds on the AMD EPYC (Zen 3) machine (docs/PERFORMANCE.md, session 3, 2026-11-22).
+  static constexpr double nsPerParticleStep = 55.0;
+  // Simulated time a bed spends per nominal batch (bed.batch_height of the final bed: falling and
+  // settling) and on the final relaxation, in sqrt(d/g). Measured on a 60 x 195 d bed (default
+  // bed keys, 2026-11-24): 14 poured batches for 10 nominal ones took t = 99, the relaxation to
+  // bed.rest_energy = 1e-6 about 40 more.
+  static constexpr double bedTimePerBatch = 10.0;
+  static constexpr double bedRelaxTime = 40.0;
+  // The relaxation of a carved bed (bed.cavity = "carved") after its cut, and of any bed with
+  // bed.relax_damping > 0. Measured on the paper-depth preset (seed 7, one quiet core, 2026-11-25):
+  // a cut relaxed in 152 s undamped (about 53 time units at 23 ns per particle-step), 16 s with
+  // bed.relax_damping = 2 (about 5.6).
+  static constexpr double carvedRelaxTime = 55.0;
+  static constexpr double dampedRelaxTime = 6.0;
+};
+
+// The ns per particle-step the estimates use, and where it comes from: the median of this machine's
+// last one-thread runs (scenario/SpeedRecord.h) when it has recorded any on this CPU, else
+// CostModel::nsPerParticleStep (the reference machine's figure).
+struct SpeedBasis {
+  double ns = CostModel::nsPerParticleStep;
+  std::string source;  // for people: "the median of this machine's last 9 one-thread runs (PATH)"
+};
+SpeedBasis speedBasis(const RunConfig& config);
+
+// Grains plus the frozen base row (one per unit of width); the intruder's atoms are negligible.
+double estimatedParticles(const RunConfig& config);
+// Estimated wall seconds of a case's run phase (bed excluded) at `nsPerParticleStep`.
+double estimatedRunSeconds(const RunConfig& config, double nsPerParticleStep);
+// Estimated wall seconds of making the case's bed at `nsPerParticleStep`; for a carved bed, the
+// cut and its relaxation, plus pouring its base bed when `withBase`.
+double estimatedBedSeconds(const RunConfig& config, double nsPerParticleStep, bool withBase = true);
+
+// Where a case's bed comes from (docs/PHYSICS.md §8): a pinned file (bed.file), the cache, or made
+// now: poured around the intruder, or carved from its seed's base bed, itself poured first unless
+// the cache holds it. The one reading of "pour the base, then carve" that the run's check and the
+// sweep's plan print and cost.
+struct BedPlan {
+  enum class Source { File, Cached, Pour, Carve };
+  Source source = Source::Pour;
+  std::string key;          // the bed key ("" for a pinned file)
+  std::string path;         // the cache file, or bed.file
+  std::string baseKey;      // Carve: the base bed's key
+  bool baseCached = false;  // Carve: whether the cache holds the base bed
+};
+BedPlan planBed(const RunConfig& config, const ClumpDef& clump);
+
+}  // namespace wiggle
