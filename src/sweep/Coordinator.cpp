@@ -17,6 +17,7 @@
 #include "io/AtomicFile.h"
 #include "io/FileLock.h"
 #include "sweep/ResultsTable.h"
+#include "sweep/SweepStart.h"
 #include "sweep/TaskRunner.h"
 
 namespace wiggle {
@@ -138,6 +139,7 @@ class Coordinator {
 
   void announce() {
     const std::string pid = std::to_string(::getpid());
+    writeSweepStart(plan_.outDir, {plan_.spec.settings.name, only_ ? 0 : concurrency_, settings_.threads});
     if (only_) {
       monitor_.event("wiggle sweep " + plan_.spec.settings.name + " --case " + std::to_string(*only_ + 1) + ": " +
                      plan_.spec.cases[*only_].name + " (pid " + pid + ")");

@@ -14,38 +14,13 @@
 #include "scenario/Experiment.h"
 #include "scenario/RunProgress.h"
 #include "sweep/ResultsTable.h"
+#include "sweep/SweepStart.h"
 
 namespace wiggle {
 
 namespace fs = std::filesystem;
 
 namespace {
-
-// From sweep.log's start lines, the last of each: the jobs ("... 1 jobs x 1 threads ...") and the
-// sweep's name ("wiggle sweep NAME: 10 cases, ..." or, from an array task, "wiggle sweep NAME --case 3: ...").
-struct SweepLogFacts {
-  int jobs = 0;
-  std::string name;
-};
-
-SweepLogFacts readSweepLog(const std::string& logPath) {
-  SweepLogFacts facts;
-  if (!fs::exists(logPath)) return facts;
-  std::istringstream lines(readFile(logPath));
-  for (std::string line; std::getline(lines, line);) {
-    if (const auto at = line.find(" jobs x "); at != std::string::npos) {
-      const auto start = line.rfind(' ', at - 1);
-      facts.jobs = std::atoi(line.substr(start + 1, at - start - 1).c_str());
-    }
-    constexpr std::string_view kStart = "wiggle sweep ";
-    if (const auto at = line.find(kStart); at != std::string::npos) {
-      const std::string rest = line.substr(at + kStart.size());
-      const auto end = std::min(rest.find(": "), rest.find(" --case "));
-      if (end != std::string::npos && end > 0) facts.name = rest.substr(0, end);
-    }
-  }
-  return facts;
-}
 
 double number(const std::string& cell) {
   try {
@@ -76,9 +51,10 @@ SweepStatus readSweepStatus(const std::string& dir) {
   SweepStatus s;
   s.dir = dir;
   s.sweepRunning = FileLock::heldExclusivelyElsewhere(dir + "/.sweep.lock");
-  const SweepLogFacts log = readSweepLog(dir + "/sweep.log");
-  s.jobs = log.jobs;
-  s.name = log.name;
+  if (const std::optional<SweepStart> start = readSweepStart(dir)) {
+    s.jobs = start->jobs;
+    s.name = start->name;
+  }
   double finishedWall = 0.0, casesLeft = 0.0;
   int finished = 0;
   for (std::size_t r = 1; r < rows.size(); ++r) {

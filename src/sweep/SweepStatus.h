@@ -23,10 +23,10 @@ struct CaseStatus {
 
 struct SweepStatus {
   std::string dir;
-  std::string name;           // the sweep's name, from sweep.log's last start line (empty when unknown)
+  std::string name;  // the sweep's name, from sweep.json (empty when unknown)
   std::vector<CaseStatus> cases;
   bool sweepRunning = false;  // a wiggle sweep holds the directory's lock now
-  int jobs = 0;               // cases at once, from sweep.log's last start line (0 = unknown)
+  int jobs = 0;               // cases at once, from sweep.json (0 = unknown)
   // Seconds to go: the finished cases' mean wall time, times the cases left (a running case counts
   // for what it has left), over the jobs; negative when nothing has finished yet.
   double etaSeconds = -1.0;

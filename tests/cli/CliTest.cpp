@@ -495,7 +495,7 @@ TEST_F(Cli, StatusSummarisesASweepDirectory) {
       << "d,cases/d,pending,,,,2,,,,,,\n";
   std::ofstream(dir / "cases" / "b" / "progress.json")
       << R"({"stage": "running", "fraction": 0.25, "t": 25, "duration": 100, "eta_s": 60})";
-  std::ofstream(dir / "sweep.log") << "2026-11-24 09:00:00  wiggle sweep s: 4 cases; 2 jobs x 1 threads; host h\n";
+  std::ofstream(dir / "sweep.json") << R"({"name": "s", "jobs": 2, "threads": 1})";
   const Result r = wiggle("status " + quoted(dir.string()));
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("4 cases: 1 done, 1 running, 1 failed, 1 pending"), std::string::npos) << r.out;

@@ -25,6 +25,7 @@
 #include "sweep/ResultsTable.h"
 #include "sweep/SweepPlan.h"
 #include "sweep/SweepRunner.h"
+#include "sweep/SweepStart.h"
 
 namespace wiggle {
 namespace {
@@ -236,6 +237,12 @@ TEST_F(SweepRunnerTest, RunsEveryCaseRecordsFailuresAndResumes) {
     // ... which the sweep's console (here its log, which gets the same lines) says as the case ends.
     EXPECT_NE(readFile(out + "/sweep.log").find(std::string("warning ") + ok + ": V_y is measured"), std::string::npos);
   }
+  // How it was started, for `wiggle status` (sweep.json): its name and 2 jobs x 1 thread.
+  const std::optional<SweepStart> start = readSweepStart(out);
+  ASSERT_TRUE(start.has_value());
+  EXPECT_EQ(start->jobs, 2);
+  EXPECT_EQ(start->threads, 1);
+  EXPECT_FALSE(start->name.empty());
   EXPECT_EQ(rows["amplitude=0.5_period=0.0003"].at("status"), "failed");
   EXPECT_NE(rows["amplitude=0.5_period=0.0003"].at("error").find("blew up"), std::string::npos)
       << rows["amplitude=0.5_period=0.0003"].at("error");

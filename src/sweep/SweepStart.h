@@ -1,0 +1,25 @@
+#pragma once
+// A sweep directory's sweep.json: how the last `wiggle sweep` (or `wiggle boundary`) over it was
+// started, written by the sweep as it starts (sweep/Coordinator) and read by `wiggle status` and
+// `wiggle report` (sweep/SweepStatus), which read this data rather than sweep.log's lines for
+// people. Written atomically (io/AtomicFile). docs/OUTPUT-FORMATS.md lists its fields.
+#include <optional>
+#include <string>
+
+namespace wiggle {
+
+struct SweepStart {
+  std::string name;  // [sweep] name
+  int jobs = 0;      // cases at once (all MPI worker ranks' jobs together); 0 for a Slurm array's tasks
+  int threads = 0;   // OpenMP threads per case
+};
+
+std::string sweepStartPath(const std::string& sweepDir);
+// A whole sweep's start replaces the file; an array task's (`--case N`, jobs 0) writes it only when
+// there is none, so that a sweep's own figures are not overwritten by its array tasks.
+void writeSweepStart(const std::string& sweepDir, const SweepStart& start);
+// The last start, or nothing when there is none (a sweep by a wiggle that did not write it) or it
+// cannot be read.
+std::optional<SweepStart> readSweepStart(const std::string& sweepDir);
+
+}  // namespace wiggle
