@@ -22,6 +22,7 @@
 #include "analysis/RiseRate.h"
 #include "core/Error.h"
 #include "core/Format.h"
+#include "core/Machine.h"
 #include "io/AtomicFile.h"
 #include "io/Config.h"
 #include "physics/World.h"
@@ -74,8 +75,9 @@ class PyCase {
   PyCase(const std::optional<std::string>& configPath, const py::dict& overrides, int threads,
          const std::optional<py::function>& drive, double peakSpeed)
       : run_(prepareCase(loadRunConfig(configPath, overridesOf(overrides)))),
-        threads_(threads),
+        threads_(threadsFor(threads)),
         fields_(run_.config.fields, run_.config.box.width) {
+    omp_set_num_threads(threads_);  // the bed, when it is made now, with the run's threads
     CachedBed bed = startRun(run_);
     bedPath_ = bed.path;
     record_.bedKey = bed.key;
@@ -117,7 +119,7 @@ class PyCase {
     if (failed_) throw Error("this case stopped inside a step that failed (" + *failed_ + "): make a new Case");
     try {
       py::gil_scoped_release release;
-      if (threads_ > 0) omp_set_num_threads(threads_);
+      omp_set_num_threads(threads_);
       // Observed as `wiggle run` observes (its trajectory samples, phase bins and field frames); no
       // dump file. The observers hold references to members, so they are made per call (a PyCase moves).
       RunObservers observers(run_, record_, fields_, /*dumpPath=*/"");
@@ -184,7 +186,7 @@ class PyCase {
 
  private:
   PyCase(Case run, Checkpoint checkpoint, int threads)
-      : run_(std::move(run)), threads_(threads), fields_(std::move(checkpoint.fields)) {
+      : run_(std::move(run)), threads_(threadsFor(threads)), fields_(std::move(checkpoint.fields)) {
     world_.emplace(std::move(checkpoint.world));
     record_ = std::move(checkpoint.state);
   }
@@ -204,6 +206,10 @@ class PyCase {
   }
 
   Case run_;
+  // 0 asks for `wiggle run`'s default: the cores the load leaves idle (core/Machine.h), decided
+  // once, as a run decides it at its start. Not OpenMP's default of every core: on a busy machine
+  // threads that must wait for each other at every step's barriers crawl.
+  static int threadsFor(int asked) { return asked > 0 ? asked : idleCores(); }
   int threads_;
   std::optional<World> world_;
   std::string bedPath_;
@@ -236,7 +242,8 @@ PYBIND11_MODULE(wiggle, m) {
           py::arg("config_path") = py::none(), py::arg("overrides") = py::dict(), py::arg("threads") = 0,
           py::arg("drive") = py::none(), py::arg("peak_speed") = 0.0,
           "config_path: a run config (None: the defaults); overrides: {\"drive.period\": 2.0, ...} as --set; "
-          "threads: OpenMP threads while stepping (0: as the environment says); drive, peak_speed: the "
+          "threads: OpenMP threads while stepping (0: as `wiggle run` chooses, the cores the load leaves idle); drive, "
+          "peak_speed: the "
           "intruder's x driven by drive(t) -> (dx, vx) from t = 0 instead of the config's drive (see set_drive)")
       .def_static("load", &PyCase::load, py::arg("dir"), py::arg("threads") = 0,
                   "The case of a run directory, from its newest checkpoint, as `wiggle run --out DIR --resume` "
