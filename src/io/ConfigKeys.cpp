@@ -147,6 +147,10 @@ const std::vector<KeyInfo>& keyTable() {
           "velocity = vx(t) = A sin(2 pi t / T), the paper's formula read as a velocity: x(t) = x0 + (A T / 2 pi)"
           "(1 - cos(2 pi t / T)), from rest, swinging A T / pi to one side"),
       // [bed]
+      shapesBed(number("bed.mu", [](C& c) -> double& { return c.bed.mu; }, atLeast(-1), noBound, "",
+                       "the friction coefficient the bed is poured with, when it is not the run's contact.mu: the "
+                       "bed of that friction, run with contact.mu (a friction study on the same beds); -1 = "
+                       "contact.mu")),
       shapesBed(number("bed.batch_height", [](C& c) -> double& { return c.bed.batchHeight; }, above(0),
                        noBound, "d", "height of each poured layer")),
       shapesBed(choice(

@@ -99,6 +99,12 @@ void checkShapeKeys(const RunConfig& c) {
                 num(c.box.bedHeight) + ")");
   }
   lammpsTypeRoles(c.bed.lammpsTypes);  // its syntax, whether bed.file is a LAMMPS data file or not
+  if (c.bed.mu != -1.0 && c.bed.mu < 0.0)
+    throw Error("bed.mu = " + num(c.bed.mu) + ": must be -1 (the bed of contact.mu) or a friction coefficient >= 0");
+  if (c.bed.mu >= 0.0 && !c.bed.file.empty())
+    throw Error("bed.mu = " + num(c.bed.mu) +
+                ": the bed is bed.file's, poured with whatever friction it was; "
+                "set one of the two");
   if (c.drive.form == DriveForm::Velocity && c.drive.rampPeriods > 0) {
     throw Error("drive.ramp_periods = " + std::to_string(c.drive.rampPeriods) +
                 ": only with drive.form = \"displacement\" (the velocity form starts from rest already)");

@@ -85,6 +85,9 @@ struct BedDef {
   double restEnergy = 1e-6;    // bed.rest_energy: relax until kinetic energy per grain (1-time-unit mean) below [m g d]
   double relaxDamping = 0.0;   // bed.relax_damping: viscous damping rate of the grains while relaxing; 0 = none [sqrt(g/d)]
   double maxTime = 2000.0;     // bed.max_time: give up making the bed after this simulated time
+  // bed.mu: the friction coefficient the bed is poured with, when it is not the run's contact.mu
+  // (a friction study on one bed per seed); -1 = contact.mu (scenario/BedMaker.h bedMakingConfig).
+  double mu = -1.0;
   std::string cacheDir;        // bed.cache_dir: where beds are cached ("" = $WIGGLE_CACHE or ~/.cache/wiggle)
   std::string file;            // bed.file: run on the bed in this file instead of the config's own ("" = own)
   // bed.lammps_types: when bed.file is a LAMMPS data file, the role of each atom type; the default

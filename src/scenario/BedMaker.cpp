@@ -106,9 +106,19 @@ const ClumpDef kNoIntruder{};
 
 }  // namespace
 
-std::string baseBedKey(const RunConfig& c) { return pouredBedKey(c, kNoIntruder); }
+RunConfig bedMakingConfig(const RunConfig& config) {
+  RunConfig made = config;
+  if (config.bed.mu >= 0.0) {
+    made.contact.mu = config.bed.mu;
+    made.bed.mu = -1.0;
+  }
+  return made;
+}
 
-std::string bedKey(const RunConfig& c, const ClumpDef& clump) {
+std::string baseBedKey(const RunConfig& config) { return pouredBedKey(bedMakingConfig(config), kNoIntruder); }
+
+std::string bedKey(const RunConfig& config, const ClumpDef& clump) {
+  const RunConfig c = bedMakingConfig(config);
   if (c.bed.cavity == BedCavity::Poured) return pouredBedKey(c, clump);
   Hasher h;
   h.addValue(kCarvedFormat);
@@ -601,8 +611,12 @@ CachedBed obtainCarvedBed(const RunConfig& config, const ClumpDef& clump, const 
 
 CachedBed obtainBed(const RunConfig& config, const ClumpDef& clump, const BedProgress& progress) {
   if (!config.bed.file.empty()) return pinnedBed(config, clump);
-  if (config.bed.cavity == BedCavity::Carved) return obtainCarvedBed(config, clump, progress);
-  return obtainPouredBed(config, clump, bedKey(config, clump), progress);
+  const RunConfig made = bedMakingConfig(config);
+  CachedBed bed = made.bed.cavity == BedCavity::Carved ? obtainCarvedBed(made, clump, progress)
+                                                       : obtainPouredBed(made, clump, bedKey(made, clump), progress);
+  // The bed of another friction (bed.mu): run with this config's. summary.json's bed_key names it.
+  if (config.bed.mu >= 0.0) bed.world.setParameters(worldDefFor(config));
+  return bed;
 }
 
 }  // namespace wiggle

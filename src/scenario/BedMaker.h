@@ -45,6 +45,12 @@ std::string bedKey(const RunConfig& config, const ClumpDef& clump);
 // The key of the bed carved beds of this config are cut from (the seed's, without an intruder).
 std::string baseBedKey(const RunConfig& config);
 
+// The config a case's bed is made with: the case's own, or with bed.mu >= 0 the same poured with
+// contact.mu = bed.mu (and bed.mu back at -1), so that its key, cache entry and bits are those of
+// that friction's own bed; obtainBed then gives the bed the case's contact.mu to run with. Both
+// keys above are the keys of this config's bed.
+RunConfig bedMakingConfig(const RunConfig& config);
+
 // Free-surface height: the median over 2-d-wide columns of the highest grain top in the column.
 double freeSurfaceHeight(const World& world);
 

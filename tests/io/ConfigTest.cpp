@@ -68,6 +68,7 @@ std::vector<std::string> differingFields(const RunConfig& a, const RunConfig& b)
   other("bed.cavity", a.bed.cavity == b.bed.cavity);
   num("bed.pourFraction", a.bed.pourFraction, b.bed.pourFraction);
   num("bed.pourSpeed", a.bed.pourSpeed, b.bed.pourSpeed);
+  num("bed.mu", a.bed.mu, b.bed.mu);
   num("bed.settleSpeed", a.bed.settleSpeed, b.bed.settleSpeed);
   num("bed.restEnergy", a.bed.restEnergy, b.bed.restEnergy);
   num("bed.relaxDamping", a.bed.relaxDamping, b.bed.relaxDamping);
@@ -133,6 +134,7 @@ const std::vector<std::tuple<std::string, std::string, std::string>>& everyKey()
       {"bed.rest_energy", "1e-5", "bed.restEnergy"},
       {"bed.relax_damping", "2", "bed.relaxDamping"},
       {"bed.max_time", "500", "bed.maxTime"},
+      {"bed.mu", "0.3", "bed.mu"},
       {"bed.cache_dir", "/tmp/beds", "bed.cacheDir"},
       {"bed.file", "/tmp/bed.bin", "bed.file"},
       {"bed.lammps_types", "\"1=grain 2=base 3=drop 4=base\"", "bed.lammpsTypes"},
@@ -166,7 +168,7 @@ TEST(Config, KeyListIsExactlyTheSpecKeys) {
   std::set<std::string> expected;
   for (const auto& [key, value, field] : everyKey()) expected.insert(key);
   const std::vector<std::string> keys = configKeys();
-  EXPECT_EQ(keys.size(), 51u);
+  EXPECT_EQ(keys.size(), 52u);
   EXPECT_EQ(std::set<std::string>(keys.begin(), keys.end()), expected);
 }
 

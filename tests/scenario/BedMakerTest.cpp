@@ -162,6 +162,35 @@ RunConfig tinyRandomConfig() {
                         "bed.max_time=100"});
 }
 
+// bed.mu: a case run at one friction on the bed poured at another is given that bed, the same
+// key, cache entry and grains, and runs with its own contact.mu; without bed.mu its own bed.
+TEST(BedMaker, BedMuGivesTheBedOfThatFrictionRunWithTheCasesOwn) {
+  const OneThread oneThread;
+  const RunConfig defaults = loadRunConfig(std::nullopt, {});
+  const RunConfig pinned = loadRunConfig(std::nullopt, {"contact.mu=0.5", "bed.mu=0.1"});
+  const RunConfig own = loadRunConfig(std::nullopt, {"contact.mu=0.5"});
+  const ClumpDef disk = prepareCase(defaults).clump;
+  EXPECT_EQ(bedKey(pinned, disk), "b8ece11933d4975e");  // the default bed's key, as it has always been
+  EXPECT_NE(bedKey(own, disk), "b8ece11933d4975e");
+  EXPECT_EQ(baseBedKey(pinned), baseBedKey(defaults));
+
+  const std::string cache = scratch("bed-mu-cache");
+  RunConfig tiny = tinyRandomConfig();
+  tiny.bed.cacheDir = cache;
+  const ClumpDef square = prepareCase(tiny).clump;
+  const CachedBed poured = obtainBed(tiny, square);  // made now at mu = 0.1, and cached
+  RunConfig frictionless = tiny;
+  frictionless.contact.mu = 0.0;
+  frictionless.bed.mu = 0.1;
+  const CachedBed given = obtainBed(frictionless, square);
+  EXPECT_TRUE(given.fromCache);
+  EXPECT_EQ(given.key, poured.key);
+  EXPECT_EQ(given.world.stateHash(), poured.world.stateHash());  // the same grains, velocities, histories
+  EXPECT_EQ(given.world.def().contact.mu, 0.0);
+  EXPECT_EQ(poured.world.def().contact.mu, 0.1);
+  fs::remove_all(cache);
+}
+
 TEST(BedMaker, TinyRandomBedComesToRestAndContinuesToTheSameBits) {
   const OneThread oneThread;
   const RunConfig config = tinyRandomConfig();
@@ -341,7 +370,8 @@ TEST(BedMaker, PaperDepthSweepsRunOnThePresetsBeds) {
   for (const char* file :
        {"paper_depth_box.toml", "paper_depth_seeds.toml", "paper_depth_table1.toml", "paper_depth_runlength.toml",
         "paper_depth_table1_bed2.toml", "paper_depth_fig5.toml", "paper_depth_fig5_bed2.toml", "paper_depth_t1000.toml",
-        "paper_depth_fig2_t1000.toml", "paper_depth_velocity.toml"}) {
+        "paper_depth_fig2_t1000.toml", "paper_depth_velocity.toml", "paper_depth_fields.toml",
+        "paper_depth_friction.toml"}) {  // the friction study at every mu on the preset's beds (bed.mu)
     for (const SweepCase& c : loadSweepSpec(root + "sweeps/" + file).cases) {
       RunConfig expected = preset;
       expected.box.width = c.config.box.width;
