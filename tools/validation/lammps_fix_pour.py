@@ -3,10 +3,11 @@
 
     tools/validation/lammps_fix_pour.py --out DIR [--seed 1] [--width 60] [--bed-height 50] [--y0 25]
                                         [--shape disk] [--fraction 0.3] [--speed 1] [--batch 20]
-                                        [--settle 30] [--relax 20] [--level highest|row] [--wiggle BIN] [--lmp lmp]
+                                        [--settle 30] [--relax 20] [--level highest|row] [--surface smooth|glued]
+                                        [--wiggle BIN] [--lmp lmp]
 
 Writes DIR/in.pour and runs it with `lmp`: a 2D box periodic in x, the frozen base row and the held
-intruder's atoms (from `wiggle model --geometry`), the contact law of configs/small.toml, and then,
+intruder's atoms, the contact law of configs/small.toml, and then,
 batch after batch, a `fix pour` into a band from one d_max above the highest grain up by --batch,
 filled to the area fraction --fraction, grains thrown down at --speed (fix pour adds the speed of a
 fall from the band's top, as wiggle's random pour does), each batch followed by --settle time
@@ -15,6 +16,11 @@ bed) and the bed relaxes for --relax time units. "Passes" is, with --level highe
 the rule of the committed pour_protocol_small decks), the highest grain above --bed-height, which a
 single grain thrown up can satisfy early (that study's seed 2 stopped 5 d low); with --level row,
 a quarter of a row of grains (width / 4 centres) above it, which only the bulk reaches.
+The intruder's atoms are wiggle's clump for --shape: with --surface smooth (the default, the
+committed beds' clump) the shell of `wiggle model --geometry`; with --surface glued the touching
+atoms of intruder.surface = "glued", which `wiggle model` does not write: the script exports a
+bed of the base row and one grain with `wiggle export-lammps --set intruder.surface=glued` and
+takes the clump's atoms (type 3) from that data file, so they are the atoms wiggle places.
 DIR/dump.lammpstrj holds the bed at the end (the format wiggle's dumps have): compare it with
 wiggle's beds by tools/validation/bed_statistics.py --dump. DIR/data.lammps is the same bed as a
 data file (write_data): `wiggle run --set bed.file=DIR/data.lammps` runs it (types 1 grains, 2 base,
@@ -35,6 +41,7 @@ import math
 import os
 import subprocess
 import sys
+import tempfile
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 
@@ -50,7 +57,7 @@ def deck(args, atoms):
     top = args.bed_height + 3 * args.batch + 10  # the box's starting top; fm lets it grow
     lines = [
         f"# LAMMPS fix pour bed (tools/validation/lammps_fix_pour.py): W = {args.width}, surface {args.bed_height}, "
-        f"{args.shape} at y0 = {args.y0}, seed {args.seed}",
+        f"{args.shape} at y0 = {args.y0}, seed {args.seed}" + (", glued clump" if args.surface == "glued" else ""),
         "dimension 2", "atom_style sphere", "boundary p fm p", "comm_modify vel yes", "processors * 1 1",
         f"region box block 0 {args.width} -1 {top} -0.5 0.5", "create_box 3 box",
     ]
@@ -99,6 +106,47 @@ def deck(args, atoms):
     return "\n".join(lines) + "\n"
 
 
+def shell_atoms(args, out):
+    """The smooth shell's atoms relative to the clump's centre, from `wiggle model --geometry`."""
+    geometry = os.path.join(out, "geometry.json")
+    subprocess.run([args.wiggle, "model", "--shape", args.shape, "--geometry", geometry], check=True,
+                   stdout=subprocess.DEVNULL)
+    with open(geometry) as f:
+        return json.load(f)["atoms"]
+
+
+def glued_atoms(args):
+    """The glued clump's atoms relative to the clump's centre (W / 2, y0), as wiggle places them: read
+    from the data file `wiggle export-lammps` writes for a bed of the base row and one grain."""
+    with tempfile.TemporaryDirectory() as tmp:
+        bed = os.path.join(tmp, "base.data")
+        n = int(args.width)
+        lines = ["base row and one grain, for the clump's atoms (lammps_fix_pour.py)", "", f"{n + 1} atoms",
+                 "3 atom types", "", f"0 {args.width:.12g} xlo xhi", f"-1 {args.bed_height + 10:.12g} ylo yhi",
+                 "-0.5 0.5 zlo zhi", "", "Atoms # sphere", ""]
+        lines += [f"{i + 1} 2 1 1 {i + 0.5} 0 0" for i in range(n)]
+        lines += [f"{n + 1} 1 1 1 0.5 1.5 0"]
+        with open(bed, "w") as f:
+            f.write("\n".join(lines) + "\n")
+        export = os.path.join(tmp, "export")
+        subprocess.run([args.wiggle, "export-lammps", "--set", f"box.width={args.width:.12g}",
+                        "--set", f"box.bed_height={args.bed_height:.12g}", "--set", f"intruder.y0={args.y0:.12g}",
+                        "--set", f"intruder.shape={args.shape}", "--set", "intruder.surface=glued",
+                        "--set", f"bed.file={bed}", "--threads", "1", "--out", export],
+                       check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        atoms, section = [], False
+        with open(os.path.join(export, "data.lammps")) as f:
+            for line in f:  # the Atoms section's lines: id type diameter density x y z ...
+                if line[:1].isalpha():
+                    section = line.startswith("Atoms")
+                elif section and len(line.split()) >= 7 and line.split()[1] == "3":
+                    x, y = map(float, line.split()[4:6])
+                    atoms.append((x - 0.5 * args.width, y - args.y0))
+    if not atoms:
+        sys.exit("no intruder atoms in the export's data file")
+    return atoms
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--out", required=True)
@@ -114,16 +162,14 @@ def main():
     p.add_argument("--relax", type=float, default=20.0, help="time units after levelling")
     p.add_argument("--level", choices=["highest", "row"], default="highest",
                    help="when the pour stops: the highest grain, or a quarter row of grains, above --bed-height")
+    p.add_argument("--surface", choices=["smooth", "glued"], default="smooth",
+                   help="the intruder's atoms: wiggle's smooth shell (default) or its glued clump (touching atoms)")
     p.add_argument("--drive", help="an exported in.wiggle of this bed: run its drive after the pour, history kept")
     p.add_argument("--wiggle", default=os.path.join(ROOT, "build", "release", "wiggle"))
     p.add_argument("--lmp", default="lmp")
     args = p.parse_args()
     os.makedirs(args.out, exist_ok=True)
-    geometry = os.path.join(args.out, "geometry.json")
-    subprocess.run([args.wiggle, "model", "--shape", args.shape, "--geometry", geometry], check=True,
-                   stdout=subprocess.DEVNULL)
-    with open(geometry) as f:
-        atoms = json.load(f)["atoms"]
+    atoms = glued_atoms(args) if args.surface == "glued" else shell_atoms(args, args.out)
     with open(os.path.join(args.out, "in.pour"), "w") as f:
         f.write(deck(args, atoms))
     result = subprocess.run([args.lmp, "-in", "in.pour", "-log", "log.lammps", "-screen", "none"], cwd=args.out)
