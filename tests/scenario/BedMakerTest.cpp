@@ -24,6 +24,7 @@
 #include "io/SweepSpec.h"
 #include "scenario/BedMaker.h"
 #include "scenario/Experiment.h"
+#include "support/TestSupport.h"
 
 namespace wiggle {
 namespace {
@@ -139,10 +140,12 @@ TEST(BedMaker, LatticeBedKeyIsUnchangedAndRandomKeysDiffer) {
   EXPECT_NE(baseBedKey(hooke), baseBedKey(defaults));
 }
 
+// The process's own scratch directory, emptied when first used and removed at exit: a directory
+// left by an earlier process of the same id (ids are reused) must not look like an earlier run.
 std::string scratch(const std::string& name) {
-  const std::string dir = (fs::temp_directory_path() / ("wiggle-bedmaker-test-" + std::to_string(::getpid()))).string();
-  fs::create_directories(dir);
-  return dir + "/" + name;
+  static const testing_support::ScratchDir dir("bedmaker-test");
+  fs::create_directories(dir.path());  // (some tests remove it to start over)
+  return dir / name;
 }
 
 // One thread for the tiny beds (the bits do not depend on it): about 100 grains gain nothing from

@@ -23,6 +23,7 @@
 #include "scenario/LammpsExport.h"
 #include "scenario/RunProgress.h"
 #include "scenario/RunSummary.h"
+#include "support/TestSupport.h"
 
 namespace wiggle {
 namespace {
@@ -42,10 +43,12 @@ RunConfig tinyConfig(const std::string& root) {
   return c;
 }
 
+// The process's own scratch directory, emptied when first used and removed at exit: a directory
+// left by an earlier process of the same id (ids are reused) must not look like an earlier run.
 std::string scratch(const std::string& name) {
-  const std::string dir = (fs::temp_directory_path() / ("wiggle-experiment-test-" + std::to_string(::getpid()))).string();
-  fs::create_directories(dir);
-  return dir + "/" + name;
+  static const testing_support::ScratchDir dir("experiment-test");
+  fs::create_directories(dir.path());  // (some tests remove it to start over)
+  return dir / name;
 }
 
 RunOptions quiet(const std::string& dir) {
