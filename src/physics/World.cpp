@@ -21,6 +21,81 @@ void requireFinite(double v, const char* what) {
   if (!std::isfinite(v)) throw Error(std::string(what) + " is not a finite number");
 }
 
+// The grains' hot arrays and World's records of them as raw pointers, for the passes over the grains.
+struct GrainArrays {
+  double *x, *y, *vx, *vy, *omega, *fx, *fy, *torque;
+  const double *radius, *mass, *invMass, *invInertia;
+  Kinematics* kinematics;
+  const double *xAtBuild, *yAtBuild;
+  const std::uint32_t *crossStart, *crossPair;
+  const double *pairForceX, *pairForceY, *pairTorqueArm;
+};
+
+// Grains per stretch of a pass: the cross pairs of a stretch, then its lanes, while its arrays are
+// still in the first-level cache.
+constexpr std::uint32_t kGrainStretch = 512;
+
+// A pass over grains [begin, end) (World::GrainPass says what it does, in that order); returns the
+// largest squared displacement since the last list build when it tracks, else 0. The cross pairs
+// go grain by grain; the rest is each grain's own arithmetic, which runs in lanes (no grain reads
+// another's values; the same operations on the same values as one by one, so the same bits).
+template <bool FinishForces, bool Kick, bool Start, bool Track>
+double passOverGrainRange(const GrainArrays a, std::uint32_t begin, std::uint32_t end, double dt, double gravity) {
+  const double halfDt = 0.5 * dt;
+  double maxSq = 0.0;
+  for (std::uint32_t first = begin; first < end; first += kGrainStretch) {
+    const std::uint32_t last = std::min(end, first + kGrainStretch);
+    if constexpr (FinishForces) {
+      for (std::uint32_t i = first; i < last; ++i)
+        for (std::uint32_t c = a.crossStart[i]; c < a.crossStart[i + 1]; ++c) {
+          const std::uint32_t k = a.crossPair[c];
+          a.fx[i] -= a.pairForceX[k];
+          a.fy[i] -= a.pairForceY[k];
+          a.torque[i] -= a.radius[i] * a.pairTorqueArm[k];
+        }
+    }
+    // (A 64-bit index: with a 32-bit one, which could wrap, the compiler gathers and scatters.)
+#pragma omp simd reduction(max : maxSq)
+    for (std::size_t i = first; i < last; ++i) {
+      const double fx = a.fx[i], torque = a.torque[i];
+      double fy = a.fy[i];
+      if constexpr (FinishForces) {
+        fy -= a.mass[i] * gravity;
+        a.fy[i] = fy;
+      }
+      double vx = a.vx[i], vy = a.vy[i], omega = a.omega[i];
+      if constexpr (Kick) {  // this step's second half
+        const double kick = halfDt * a.invMass[i];
+        vx += kick * fx;
+        vy += kick * fy;
+        omega += halfDt * a.invInertia[i] * torque;
+      }
+      if constexpr (Start) {  // the next step's first half, and its drift
+        const double kick = halfDt * a.invMass[i];
+        vx += kick * fx;
+        vy += kick * fy;
+        omega += halfDt * a.invInertia[i] * torque;
+        const double x = a.x[i] + dt * vx;
+        const double y = a.y[i] + dt * vy;
+        a.x[i] = x;
+        a.y[i] = y;
+        if constexpr (Track) {
+          a.kinematics[i] = Kinematics{x, y, vx, vy};
+          const double dx = x - a.xAtBuild[i];
+          const double dy = y - a.yAtBuild[i];
+          maxSq = std::max(maxSq, dx * dx + dy * dy);
+        }
+      }
+      if constexpr (Kick || Start) {
+        a.vx[i] = vx;
+        a.vy[i] = vy;
+        a.omega[i] = omega;
+      }
+    }
+  }
+  return maxSq;
+}
+
 }  // namespace
 
 World::World(const WorldDef& def) : def_(def), kernels_(&forceKernels(defaultSimdLevel(), def.contact.law)) {
@@ -273,40 +348,39 @@ void World::placeIntruder() {
   clumpState_.vx = p.vx;
 }
 
-// Grain i's first half kick and drift, with the force, torque it has; records the new kinematics
-// and returns the squared displacement since the last list build when `track` (else 0).
-inline double World::kickAndDrift(std::uint32_t i, double fx, double fy, double torque, bool track) {
-  ParticleStore& s = store_;
-  const double dt = def_.dt;
-  const double halfDt = 0.5 * dt;
-  const double kick = halfDt * s.invMass[i];
-  const double vx = s.vx[i] + kick * fx;
-  const double vy = s.vy[i] + kick * fy;
-  const double x = s.x[i] + dt * vx;
-  const double y = s.y[i] + dt * vy;
-  const double omega = s.omega[i] + halfDt * s.invInertia[i] * torque;
-  s.vx[i] = vx;
-  s.vy[i] = vy;
-  s.x[i] = x;
-  s.y[i] = y;
-  s.omega[i] = omega;
-  // With the structure changed (grains added or removed), indices moved: the rebuild that follows
-  // in this step refreshes the displacement base and the kinematics records instead.
-  if (!track) return 0.0;
-  kinematics_[i] = Kinematics{x, y, vx, vy};
-  const double dx = x - xAtBuild_[i];
-  const double dy = y - yAtBuild_[i];
-  return dx * dx + dy * dy;
+void World::startGrains() {
+  maxDisplacementSq_ = passOverGrains(GrainPass{.start = true, .track = !listsStale_});
 }
 
-void World::startGrains() {
+double World::passOverGrains(GrainPass pass) {
   ParticleStore& s = store_;
+  const GrainArrays a{s.x.data(),         s.y.data(),          s.vx.data(),          s.vy.data(),
+                      s.omega.data(),     s.fx.data(),         s.fy.data(),          s.torque.data(),
+                      s.radius.data(),    s.mass.data(),       s.invMass.data(),     s.invInertia.data(),
+                      kinematics_.data(), xAtBuild_.data(),    yAtBuild_.data(),     list_.crossStart.data(),
+                      list_.crossPair.data(), list_.forceX.data(), list_.forceY.data(), list_.torqueArm.data()};
+  // The four switches as template arguments, so that each pass's loop has no branch.
+  using Range = double (*)(GrainArrays, std::uint32_t, std::uint32_t, double, double);
+  const Range range =
+      !pass.finishForces ? (pass.track ? &passOverGrainRange<false, false, true, true>
+                                       : &passOverGrainRange<false, false, true, false>)
+      : !pass.kick       ? &passOverGrainRange<true, false, false, false>
+      : !pass.start      ? &passOverGrainRange<true, true, false, false>
+      : pass.track       ? &passOverGrainRange<true, true, true, true>
+                         : &passOverGrainRange<true, true, true, false>;
+  WIGGLE_ASSERT(pass.finishForces || (pass.start && !pass.kick));
   const std::uint32_t n = s.grainCount;
-  const bool track = !listsStale_;
+  const double dt = def_.dt, gravity = def_.gravity;
   double maxSq = 0.0;
-#pragma omp parallel for schedule(static) reduction(max : maxSq)
-  for (std::uint32_t i = 0; i < n; ++i) maxSq = std::max(maxSq, kickAndDrift(i, s.fx[i], s.fy[i], s.torque[i], track));
-  maxDisplacementSq_ = maxSq;
+  // Each thread a contiguous share of the grains, as a static schedule gives.
+#pragma omp parallel reduction(max : maxSq)
+  {
+    const auto threads = static_cast<std::uint64_t>(omp_get_num_threads());
+    const auto t = static_cast<std::uint64_t>(omp_get_thread_num());
+    maxSq = range(a, static_cast<std::uint32_t>(n * t / threads), static_cast<std::uint32_t>(n * (t + 1) / threads), dt,
+                  gravity);
+  }
+  return maxSq;
 }
 
 void World::kickIntruder() {
@@ -474,34 +548,8 @@ void World::completeForces(bool kick, bool startNextStep) {
   // 3. Cross pairs reach their partner grain, in pair order; then gravity; then, in a step, the
   //    second half kick (fused here: one pass over the grains instead of two), and when asked the
   //    next step's first half kick and drift (World::advance).
-  const double halfDt = 0.5 * def_.dt;
-  const double gravity = def_.gravity;
-  ParticleStore& s = store_;
-  const NeighbourList& list = list_;
-  const std::uint32_t n = s.grainCount;
-  const bool track = !listsStale_;
-  double maxSq = 0.0;
-#pragma omp parallel for schedule(static) reduction(max : maxSq)
-  for (std::uint32_t i = 0; i < n; ++i) {
-    double fx = s.fx[i], fy = s.fy[i], torque = s.torque[i];
-    for (std::uint32_t c = list.crossStart[i]; c < list.crossStart[i + 1]; ++c) {
-      const std::uint32_t k = list.crossPair[c];
-      fx -= list.forceX[k];
-      fy -= list.forceY[k];
-      torque -= s.radius[i] * list.torqueArm[k];
-    }
-    fy -= s.mass[i] * gravity;
-    s.fx[i] = fx;
-    s.fy[i] = fy;
-    s.torque[i] = torque;
-    if (kick) {
-      const double kickScale = halfDt * s.invMass[i];
-      s.vx[i] += kickScale * fx;
-      s.vy[i] += kickScale * fy;
-      s.omega[i] += halfDt * s.invInertia[i] * torque;
-    }
-    if (startNextStep) maxSq = std::max(maxSq, kickAndDrift(i, fx, fy, torque, track));
-  }
+  const double maxSq = passOverGrains(
+      GrainPass{.finishForces = true, .kick = kick, .start = startNextStep, .track = startNextStep && !listsStale_});
   if (startNextStep) maxDisplacementSq_ = maxSq;
   if (kick && hasIntruder_ && motion_.verticalFree) kickIntruder();
 }

@@ -161,7 +161,14 @@ class World {
   void prepare();                 // first force evaluation (history not advanced), as LAMMPS's setup
   void advance(bool startNextStep);  // one step; see World.cpp
   void startGrains();             // every grain's first half kick and drift; tracks max displacement
-  double kickAndDrift(std::uint32_t i, double fx, double fy, double torque, bool track);
+  // What a pass over the grains does to each, in this order: the cross pairs' forces and gravity
+  // (finishForces), the step's second half kick (kick), the next step's first half kick and drift
+  // (start), then recording the new kinematics and the squared displacement since the last list
+  // build (track, with start). Returns the largest such displacement when it tracks, else 0.
+  struct GrainPass {
+    bool finishForces = false, kick = false, start = false, track = false;
+  };
+  double passOverGrains(GrainPass pass);
   void kickIntruder();            // the free intruder's half kick in y
   void startIntruder();           // the intruder's first half kick and drift in y, when it is free
   void placeIntruder();           // prescribed x, vx at the current time
