@@ -1,0 +1,98 @@
+// `wiggle status` read from a sweep directory laid out by hand (sweep/SweepStatus.h): each state a
+// case can be in, the rule that a case results.csv calls ok is done only when its summary says so,
+// and the time-to-go estimate, computed here from the numbers written into the directory.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "io/AtomicFile.h"
+#include "scenario/RunProgress.h"
+#include "scenario/RunSummary.h"
+#include "sweep/SweepStart.h"
+#include "sweep/SweepStatus.h"
+#include "support/TestSupport.h"
+
+namespace wiggle {
+namespace {
+
+namespace fs = std::filesystem;
+using testing_support::errorOf;
+using testing_support::ScratchDir;
+
+// A sweep of five cases: two done (wall 100 s and 300 s), one failed, one running a quarter through
+// its steps, one pending, and one that results.csv calls ok but whose summary.json is missing.
+class SweepStatusTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    writeFileAtomically(dir_ / "results.csv",
+                        "case,run_dir,status,vy,wall_s,error,warnings\n"
+                        "a,cases/a,ok,0.25,100,,\n"
+                        "b,cases/b,ok,-0.5,300,,\"short window\"\n"
+                        "c,cases/c,failed,,,the run blew up at t = 3,\n"
+                        "d,cases/d,running,,,,\n"
+                        "e,cases/e,pending,,,,\n"
+                        "f,cases/f,ok,0.1,50,,\n");
+    for (const char* name : {"a", "b", "c", "d", "e", "f"}) fs::create_directories(dir_ / (std::string("cases/") + name));
+    RunSummary ok;
+    ok.status = "ok";
+    writeFileAtomically(dir_ / "cases/a/summary.json", toJson(ok).dump());
+    ok.warnings = {"short window"};
+    writeFileAtomically(dir_ / "cases/b/summary.json", toJson(ok).dump());
+    writeRunProgress(dir_ / "cases/d", RunProgress{"running", 0.25, 25.0, 100.0, 60.0});
+    writeSweepStart(dir_.path().string(), SweepStart{"demo", 2, 1});
+  }
+  ScratchDir dir_{"sweep-status"};
+};
+
+TEST_F(SweepStatusTest, EachCaseIsInTheStateItsFilesShow) {
+  const SweepStatus s = readSweepStatus(dir_.path().string());
+  EXPECT_EQ(s.name, "demo");
+  EXPECT_EQ(s.jobs, 2);
+  EXPECT_FALSE(s.sweepRunning);  // nothing holds the directory's lock
+  ASSERT_EQ(s.cases.size(), 6u);
+  EXPECT_EQ(s.cases[0].status, "ok");
+  EXPECT_EQ(s.cases[0].vy, 0.25);
+  EXPECT_EQ(s.cases[1].warnings, std::vector<std::string>{"short window"});
+  EXPECT_EQ(s.cases[2].status, "failed");
+  EXPECT_EQ(s.cases[2].error, "the run blew up at t = 3");
+  EXPECT_EQ(s.cases[3].status, "running");
+  EXPECT_EQ(s.cases[3].fraction, 0.25);
+  EXPECT_EQ(s.cases[4].status, "pending");
+  // Called ok, but without a summary the sweep would run it again: pending, saying why.
+  EXPECT_EQ(s.cases[5].status, "pending");
+  EXPECT_EQ(s.cases[5].error.rfind("results.csv says ok, but", 0), 0u) << s.cases[5].error;
+}
+
+TEST_F(SweepStatusTest, TimeToGoIsTheMeanFinishedWallTimesWhatIsLeftOverTheJobs) {
+  const SweepStatus s = readSweepStatus(dir_.path().string());
+  // Finished: a and b, mean (100 + 300) / 2 = 200 s. Left: d's three quarters, e and f whole = 2.75
+  // cases, over 2 jobs.
+  EXPECT_DOUBLE_EQ(s.etaSeconds, 200.0 * 2.75 / 2.0);
+  const std::string text = formatSweepStatus(s);
+  EXPECT_NE(text.find("6 cases: 2 done, 1 running, 1 failed, 2 pending"), std::string::npos) << text;
+  EXPECT_NE(text.find("running  d (25 % of its run)  [stale: interrupted]"), std::string::npos) << text;
+  EXPECT_NE(text.find("failed   c: the run blew up at t = 3"), std::string::npos) << text;
+  EXPECT_NE(text.find("warning  b: short window"), std::string::npos) << text;
+  const auto json = nlohmann::json::parse(sweepStatusJson(s));
+  EXPECT_DOUBLE_EQ(json["eta_s"].get<double>(), 275.0);
+  EXPECT_TRUE(json["cases"][2]["vy"].is_null());  // a value only for a finished case
+  EXPECT_EQ(json["cases"][3]["fraction"].get<double>(), 0.25);
+}
+
+TEST_F(SweepStatusTest, WithNothingFinishedTheTimeToGoIsUnknown) {
+  writeFileAtomically(dir_ / "results.csv", "case,run_dir,status,vy,wall_s,error\ne,cases/e,pending,,,\n");
+  const SweepStatus s = readSweepStatus(dir_.path().string());
+  EXPECT_LT(s.etaSeconds, 0.0);
+  EXPECT_NE(formatSweepStatus(s).find("time to go: unknown"), std::string::npos);
+}
+
+TEST_F(SweepStatusTest, WhatIsNotASweepDirectoryIsNamed) {
+  EXPECT_NE(errorOf([&] { readSweepStatus(dir_ / "cases/a"); }).find("no results.csv: not a sweep directory"),
+            std::string::npos);
+  writeFileAtomically(dir_ / "results.csv", "case,status\na,ok\n");
+  EXPECT_NE(errorOf([&] { readSweepStatus(dir_.path().string()); }).find("no column 'run_dir'"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace wiggle
