@@ -31,7 +31,16 @@ struct ModelOptions {
   double amplitude = 5.0;       // [d] the paper's Table 1 is for A/d = 5
   std::string geometryPath;
   bool clump = false;
+  // How the atoms are placed (intruder.surface): what --geometry and --clump show; the cavity
+  // model itself reads only the outline.
+  IntruderSurface surface = IntruderSurface::Smooth;
 };
+
+ClumpOptions clumpOptionsOf(const ModelOptions& opt) {
+  IntruderDef def;
+  def.surface = opt.surface;
+  return clumpOptionsFor(def);
+}
 
 // The paper's Table 1 as printed (truncated, not rounded), shown beside the computed values only.
 struct PaperRow {
@@ -154,8 +163,8 @@ void printClumpTable(const std::vector<Shape>& shapes, const ModelOptions& opt) 
     std::printf("%-12s %6s %8s %6s %9s %9s %9s %8s %8s %8s\n", "shape", "atoms", "surface",
                 "guard", "overshoot", "out.gap", "env.depth", "spacing", "lodge", "corner");
   for (const Shape& shape : shapes) {
-    const ClumpAtoms atoms = buildClumpAtoms(shape);
-    const ClumpQuality q = measureClump(shape, atoms);
+    const ClumpAtoms atoms = buildClumpAtoms(shape, clumpOptionsOf(opt));
+    const ClumpQuality q = measureClump(shape, atoms, clumpOptionsOf(opt));
     std::printf(csv ? "%s,%zu,%zu,%zu,%.4f,%.4f,%.4f,%.4f,%.4f,%.1f\n"
                     : "%-12s %6zu %8zu %6zu %9.4f %9.4f %9.4f %8.4f %8.4f %8.1f\n",
                 shape.name.c_str(), q.surfaceAtoms + q.guardAtoms, q.surfaceAtoms, q.guardAtoms,
@@ -168,11 +177,12 @@ void printClumpTable(const std::vector<Shape>& shapes, const ModelOptions& opt) 
                 "sinks between two surface atoms; sharpest convex corner in degrees)\n");
 }
 
-void writeGeometryJson(const Shape& shape, const std::string& path) {
-  const ClumpAtoms atoms = buildClumpAtoms(shape);
+void writeGeometryJson(const Shape& shape, const ModelOptions& opt) {
+  const ClumpAtoms atoms = buildClumpAtoms(shape, clumpOptionsOf(opt));
   const CavityGeometry g = cavityGeometry(shape.outline);
   nlohmann::json j;
   j["shape"] = shape.name;
+  j["surface"] = choiceName(opt.surface);
   j["outline"] = shape.outline;
   std::vector<OutlinePoint> all = atoms.surface;
   all.insert(all.end(), atoms.guard.begin(), atoms.guard.end());
@@ -188,7 +198,7 @@ void writeGeometryJson(const Shape& shape, const std::string& path) {
   j["T_rise_left"] = g.left.tRise;
   j["T_rise_right"] = g.right.tRise;
   j["T_max"] = g.tMax;
-  writeFileAtomically(path, j.dump() + "\n");
+  writeFileAtomically(opt.geometryPath, j.dump() + "\n");
 }
 
 void runModel(const ModelOptions& opt) {
@@ -225,7 +235,7 @@ void runModel(const ModelOptions& opt) {
     printGeometryTable(rows, opt);
     if (!periods.empty()) printRateTable(rows, periods, opt);
   }
-  if (!opt.geometryPath.empty()) writeGeometryJson(shapes.front(), opt.geometryPath);
+  if (!opt.geometryPath.empty()) writeGeometryJson(shapes.front(), opt);
 }
 
 }  // namespace
@@ -252,6 +262,16 @@ void addModelCommand(CLI::App& app) {
                   "amplitude A for --periods [d] (default 5; V_y = 0 for A <= A_min = 0.5)");
   cmd->add_option("--geometry", opt->geometryPath,
                   "write the chosen shape's outline, atoms and model points to this JSON file");
+  std::string surfaces;
+  for (std::string_view name : choiceNameList<IntruderSurface>()) surfaces += (surfaces.empty() ? "" : " | ") + std::string(name);
+  cmd->add_option_function<std::string>(
+      "--surface",
+      [opt, surfaces](const std::string& name) {
+        const std::optional<IntruderSurface> surface = choiceNamed<IntruderSurface>(name);
+        if (!surface) throw CLI::ValidationError("--surface", "'" + name + "' is not one of " + surfaces);
+        opt->surface = *surface;
+      },
+      "how the atoms are placed, as intruder.surface: " + surfaces + " (default smooth); for --geometry and --clump");
   cmd->add_flag("--clump", opt->clump,
                 "print the atom clump's statistics (counts, envelope deviation, lodge depth) "
                 "instead of the model table");

@@ -3,6 +3,7 @@
 #include "model/CavityModel.h"
 
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -192,7 +193,7 @@ std::string runWiggle(const std::string& args, int* status = nullptr) {
   char buf[512];
   while (std::fgets(buf, sizeof buf, pipe)) out += buf;
   const int rc = pclose(pipe);
-  if (status) *status = rc;
+  if (status) *status = WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;  // the exit code
   return out;
 }
 
@@ -234,6 +235,42 @@ TEST(CavityModelCommand, GeometryJsonAndErrors) {
   EXPECT_NE(status, 0);
   EXPECT_EQ(err, "wiggle: --vertices: the outline is self-intersecting: edge 1-2 meets edge 3-4 "
                  "(vertices numbered from 1)\n");
+}
+
+// --surface places the atoms as intruder.surface does for a run: the glued clump's atoms in the JSON
+// are the run's clump's (its offsets are relative to the centroid, the JSON's to the outline's frame,
+// so the counts and the nearest-neighbour spacing are compared).
+TEST(CavityModelCommand, GeometryOfTheGluedSurfaceIsTheRunsClump) {
+  const auto path =
+      std::filesystem::temp_directory_path() / ("wiggle_model_test_glued-" + std::to_string(::getpid()) + ".json");
+  int status = -1;
+  runWiggle("model --shape square --surface glued --geometry " + path.string(), &status);
+  ASSERT_EQ(status, 0);
+  std::ifstream in(path);
+  const std::string json((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::filesystem::remove(path);
+  IntruderDef def;
+  def.shape = ShapeName::Square;
+  def.surface = IntruderSurface::Glued;
+  const ClumpDef clump = makeClump(def, MassModel::Sphere, 1.0);
+  EXPECT_NE(json.find("\"surface\":\"glued\""), std::string::npos) << json.substr(0, 200);
+  const std::size_t atoms = clump.offsetX.size();
+  IntruderDef smooth = def;
+  smooth.surface = IntruderSurface::Smooth;
+  ASSERT_NE(atoms, makeClump(smooth, MassModel::Sphere, 1.0).offsetX.size());  // the option matters here
+  const auto count = [&](const std::string& key) {  // the length of the array after "key":
+    const std::size_t at = json.find("\"" + key + "\":[");
+    std::size_t depth = 0, items = 0;
+    for (std::size_t i = json.find('[', at); i < json.size(); ++i) {
+      if (json[i] == '[' && ++depth == 2) ++items;
+      if (json[i] == ']' && --depth == 0) break;
+    }
+    return items;
+  };
+  EXPECT_EQ(count("atoms"), atoms);
+  const std::string err = runWiggle("model --shape square --surface rough", &status);
+  EXPECT_EQ(status, 2);
+  EXPECT_NE(err.find("--surface: 'rough' is not one of smooth | glued"), std::string::npos) << err;
 }
 #endif
 
