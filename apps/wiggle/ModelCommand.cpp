@@ -263,7 +263,8 @@ void addModelCommand(CLI::App& app) {
   cmd->add_option("--geometry", opt->geometryPath,
                   "write the chosen shape's outline, atoms and model points to this JSON file");
   std::string surfaces;
-  for (std::string_view name : choiceNameList<IntruderSurface>()) surfaces += (surfaces.empty() ? "" : " | ") + std::string(name);
+  for (std::string_view name : choiceNameList<IntruderSurface>())
+    surfaces += (surfaces.empty() ? "" : " | ") + std::string(name);
   cmd->add_option_function<std::string>(
       "--surface",
       [opt, surfaces](const std::string& name) {

@@ -258,7 +258,7 @@ TEST(CavityModelCommand, GeometryOfTheGluedSurfaceIsTheRunsClump) {
   IntruderDef smooth = def;
   smooth.surface = IntruderSurface::Smooth;
   ASSERT_NE(atoms, makeClump(smooth, MassModel::Sphere, 1.0).offsetX.size());  // the option matters here
-  const auto count = [&](const std::string& key) {  // the length of the array after "key":
+  const auto count = [&](const std::string& key) {                             // the length of the array after "key":
     const std::size_t at = json.find("\"" + key + "\":[");
     std::size_t depth = 0, items = 0;
     for (std::size_t i = json.find('[', at); i < json.size(); ++i) {
