@@ -348,26 +348,38 @@ void World::placeIntruder() {
   clumpState_.vx = p.vx;
 }
 
-void World::startGrains() {
-  maxDisplacementSq_ = passOverGrains(GrainPass{.start = true, .track = !listsStale_});
-}
+void World::startGrains() { maxDisplacementSq_ = passOverGrains(GrainPass{.start = true, .track = !listsStale_}); }
 
 double World::passOverGrains(GrainPass pass) {
   ParticleStore& s = store_;
-  const GrainArrays a{s.x.data(),         s.y.data(),          s.vx.data(),          s.vy.data(),
-                      s.omega.data(),     s.fx.data(),         s.fy.data(),          s.torque.data(),
-                      s.radius.data(),    s.mass.data(),       s.invMass.data(),     s.invInertia.data(),
-                      kinematics_.data(), xAtBuild_.data(),    yAtBuild_.data(),     list_.crossStart.data(),
-                      list_.crossPair.data(), list_.forceX.data(), list_.forceY.data(), list_.torqueArm.data()};
+  const GrainArrays a{s.x.data(),
+                      s.y.data(),
+                      s.vx.data(),
+                      s.vy.data(),
+                      s.omega.data(),
+                      s.fx.data(),
+                      s.fy.data(),
+                      s.torque.data(),
+                      s.radius.data(),
+                      s.mass.data(),
+                      s.invMass.data(),
+                      s.invInertia.data(),
+                      kinematics_.data(),
+                      xAtBuild_.data(),
+                      yAtBuild_.data(),
+                      list_.crossStart.data(),
+                      list_.crossPair.data(),
+                      list_.forceX.data(),
+                      list_.forceY.data(),
+                      list_.torqueArm.data()};
   // The four switches as template arguments, so that each pass's loop has no branch.
   using Range = double (*)(GrainArrays, std::uint32_t, std::uint32_t, double, double);
-  const Range range =
-      !pass.finishForces ? (pass.track ? &passOverGrainRange<false, false, true, true>
-                                       : &passOverGrainRange<false, false, true, false>)
-      : !pass.kick       ? &passOverGrainRange<true, false, false, false>
-      : !pass.start      ? &passOverGrainRange<true, true, false, false>
-      : pass.track       ? &passOverGrainRange<true, true, true, true>
-                         : &passOverGrainRange<true, true, true, false>;
+  const Range range = !pass.finishForces ? (pass.track ? &passOverGrainRange<false, false, true, true>
+                                                       : &passOverGrainRange<false, false, true, false>)
+                      : !pass.kick       ? &passOverGrainRange<true, false, false, false>
+                      : !pass.start      ? &passOverGrainRange<true, true, false, false>
+                      : pass.track       ? &passOverGrainRange<true, true, true, true>
+                                         : &passOverGrainRange<true, true, true, false>;
   WIGGLE_ASSERT(pass.finishForces || (pass.start && !pass.kick));
   const std::uint32_t n = s.grainCount;
   const double dt = def_.dt, gravity = def_.gravity;

@@ -9,9 +9,9 @@
 #include "io/AtomicFile.h"
 #include "scenario/RunProgress.h"
 #include "scenario/RunSummary.h"
+#include "support/TestSupport.h"
 #include "sweep/SweepStart.h"
 #include "sweep/SweepStatus.h"
-#include "support/TestSupport.h"
 
 namespace wiggle {
 namespace {
@@ -33,7 +33,8 @@ class SweepStatusTest : public ::testing::Test {
                         "d,cases/d,running,,,,\n"
                         "e,cases/e,pending,,,,\n"
                         "f,cases/f,ok,0.1,50,,\n");
-    for (const char* name : {"a", "b", "c", "d", "e", "f"}) fs::create_directories(dir_ / (std::string("cases/") + name));
+    for (const char* name : {"a", "b", "c", "d", "e", "f"})
+      fs::create_directories(dir_ / (std::string("cases/") + name));
     RunSummary ok;
     ok.status = "ok";
     writeFileAtomically(dir_ / "cases/a/summary.json", toJson(ok).dump());
