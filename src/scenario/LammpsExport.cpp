@@ -263,6 +263,9 @@ LammpsExportResult exportLammps(const Case& run, const std::string& dir, bool pr
   result.bedPath = bed.path;
   result.bedFromCache = bed.fromCache;
   writeLammpsDeck(dir, result.deck);
+  // The case beside its deck, as a run directory holds it: once LAMMPS has written trajectory.csv,
+  // `wiggle rate DIR` measures its V_y by wiggle's own rules.
+  writeFileAtomically(dir + "/config.toml", toToml(config));
   return result;
 }
 

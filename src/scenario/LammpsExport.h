@@ -70,7 +70,8 @@ struct LammpsExportResult {
 };
 
 // The whole command: gets the bed as `wiggle run` does (obtainBed: the cache, or made and cached),
-// starts the drive, and writes the deck into `dir`.
+// starts the drive, and writes the deck into `dir`, with the case as config.toml (as a run directory
+// holds it, so that `wiggle rate DIR` reads the LAMMPS run's trajectory.csv by wiggle's rules).
 LammpsExportResult exportLammps(const Case& run, const std::string& dir, bool progressLine = true);
 
 }  // namespace wiggle

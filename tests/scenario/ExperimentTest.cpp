@@ -21,6 +21,7 @@
 #include "scenario/Checkpoint.h"
 #include "scenario/Experiment.h"
 #include "scenario/LammpsExport.h"
+#include "scenario/Remeasure.h"
 #include "scenario/RunProgress.h"
 #include "scenario/RunSummary.h"
 #include "support/TestSupport.h"
@@ -511,6 +512,11 @@ TEST(Experiment, ExportedBedReadBackRunsAsTheBedWithoutHistory) {
   const RunOutcome reference = runExperiment(prepareCase(own), quiet(root + "/own"));
   ASSERT_EQ(reference.status, "ok");
   exportLammps(prepareCase(own), root + "/deck", false);
+  // The case beside the deck, so that `wiggle rate` reads the LAMMPS run's trajectory (here the
+  // wiggle run's own stands in for it) by wiggle's rules.
+  EXPECT_EQ(readFile(root + "/deck/config.toml"), toToml(own));
+  fs::copy_file(root + "/own/trajectory.csv", root + "/deck/trajectory.csv");
+  EXPECT_NEAR(remeasureRun(root + "/deck", RemeasureRequest{}).rate.vy, reference.vy, 1e-8);
 
   RunConfig imported = own;
   imported.run.keepBedHistory = true;  // there is none to keep

@@ -4,23 +4,28 @@
     tools/validation/compare_trajectories.py --out FIG.png [--title T] [--csv TABLE.csv] LABEL=DIR [LABEL=DIR ...]
 
 DIR is a `wiggle run` directory or a directory where an exported LAMMPS deck ran (`wiggle
-export-lammps`: the deck writes the same trajectory.csv columns). Prints, per run, V_y by the
-paper's chord rule over [t_i, t_f] = [0.1 t_end, t_end], the least-squares slope over the same
-window and the final height. The chord here has no plateau rule (summary.json's vy has one): use it
-only for runs whose intruder did not reach the free surface, and compare with summary.json when
-there is one (printed beside it). --csv writes the same rows as a table (label, dir, vy_chord,
-vy_slope, y_end, summary_vy; summary_vy empty for a LAMMPS run).
+export-lammps`: the deck writes the same trajectory.csv columns). Prints, per run, the chord over
+[t_i, t_f] = [0.1 t_end, t_end] (no plateau rule), the least-squares slope over the same window, the
+final height and, when DIR holds the case's config.toml (every wiggle run, and every deck exported
+since config.toml is written beside it), V_y by wiggle's own rules as `wiggle rate DIR` measures
+it: the run's rule (the chord, or the plateau rule when the intruder surfaced) and the paper's t_f
+rule (vy_settled). No rule is written here: those columns come from the wiggle program (found as
+the plotting package finds it; --wiggle PATH to choose). --csv writes the same rows as a table
+(label, dir, vy_chord, vy_slope, y_end, vy_rule, vy_settled; the last two empty without config.toml).
 """
+
 import argparse
-import json
+import csv
+import io
 import os
+import subprocess
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
 
 import numpy as np  # noqa: E402
 
-from wiggleplot import readers, style  # noqa: E402
+from wiggleplot import data, readers, style  # noqa: E402
 
 
 def rates(traj):
@@ -33,19 +38,32 @@ def rates(traj):
     return chord, slope, y[-1]
 
 
+def rule_rates(wiggle, path):
+    """(vy, vy_settled) by wiggle's rules (`wiggle rate DIR`), or None without the case's config.toml."""
+    if not os.path.isfile(os.path.join(path, "config.toml")):
+        return None
+    done = subprocess.run([wiggle or data.find_wiggle(), "rate", path], capture_output=True, text=True)
+    if done.returncode != 0:
+        sys.exit(f"compare_trajectories: {done.stderr.strip() or 'wiggle rate failed'}")
+    row = next(csv.DictReader(io.StringIO(done.stdout)))
+    return float(row["vy"]), float(row["vy_settled"])
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("runs", nargs="+", metavar="LABEL=DIR")
     parser.add_argument("--out", required=True)
     parser.add_argument("--title", default="")
     parser.add_argument("--csv", help="also write the rows to this CSV file")
+    parser.add_argument("--wiggle", help="the wiggle program for the rule columns (default: as wiggleplot finds it)")
     args = parser.parse_args()
+    wiggle = args.wiggle
     style.apply()
     import matplotlib.pyplot as plt
 
     many = len(args.runs) > 6  # then the legend goes beside the axes, where it hides no curve
     fig, ax = plt.subplots(figsize=(9, 4) if many else (7, 4))
-    print(f"{'run':24} {'V_y chord':>10} {'LSQ slope':>10} {'y_end':>8} {'summary vy':>11}")
+    print(f"{'run':24} {'V_y chord':>10} {'LSQ slope':>10} {'y_end':>8} {'V_y rule':>9} {'vy_settled':>10}")
     rows = []
     for spec in args.runs:
         label, sep, path = spec.partition("=")
@@ -55,18 +73,16 @@ def main():
             sys.exit(f"compare_trajectories: no trajectory.csv in '{path}' (the label ends at the first '=')")
         traj = readers.read_trajectory(path)
         chord, slope, y_end = rates(traj)
-        summary_path = os.path.join(path, "summary.json")
-        summary_vy = json.load(open(summary_path)).get("vy") if os.path.exists(summary_path) else None
-        shown = f"{summary_vy:+.4f}" if summary_vy is not None else "-"
-        print(f"{label:24} {chord:+10.4f} {slope:+10.4f} {y_end:8.2f} {shown:>11}")
-        rows.append([label, path, f"{chord:.6f}", f"{slope:.6f}", f"{y_end:.4f}",
-                     "" if summary_vy is None else f"{summary_vy:.6f}"])
+        rule = rule_rates(wiggle, path)
+        shown = f"{rule[0]:+9.4f} {rule[1]:+10.4f}" if rule else f"{'-':>9} {'-':>10}"
+        print(f"{label:24} {chord:+10.4f} {slope:+10.4f} {y_end:8.2f} {shown}")
+        rows.append([label, path, f"{chord:.6f}", f"{slope:.6f}", f"{y_end:.4f}"] +
+                    ([f"{rule[0]:.6f}", f"{rule[1]:.6f}"] if rule else ["", ""]))
         ax.plot(traj["t"], np.asarray(traj["y"]) - traj["y"][0], lw=0.8, label=f"{label}: V_y = {chord:+.3f}")
     if args.csv:
-        import csv
         with open(args.csv, "w", newline="") as f:
             w = csv.writer(f)
-            w.writerow(["label", "dir", "vy_chord", "vy_slope", "y_end", "summary_vy"])
+            w.writerow(["label", "dir", "vy_chord", "vy_slope", "y_end", "vy_rule", "vy_settled"])
             w.writerows(rows)
     ax.axhline(0.0, color="0.6", lw=0.5)
     ax.set_xlabel("t [sqrt(d/g)]")
