@@ -111,7 +111,8 @@ void addBoundaryCommand(CLI::App& app) {
       "The runs are the cases of a sweep in DIR (DIR/boundary.toml, DIR/cases/, DIR/results.csv): wiggle status\n"
       "and wiggle report read it. DIR/boundary.json and DIR/boundary.csv hold the probes, crossings and neutral\n"
       "bands; wiggle plot DIR draws them. Run the same command again to resume: finished runs are read back and\n"
-      "the searches continue with the same decisions.\n"
+      "the searches continue with the same decisions. Under mpirun or srun, rank 0 searches and the other ranks\n"
+      "run each round's cases (docs/SWEEPS.md).\n"
       "Exit status: 0 when every search finished, 1 when a run failed (its value is set aside and reported),\n"
       "2 for bad input, 130 or 143 when SIGINT or SIGTERM stopped it (run the same command to resume).");
   cmd->callback([args] {
@@ -124,15 +125,30 @@ void addBoundaryCommand(CLI::App& app) {
     }
     if (args->out.empty()) throw Error("--out DIR is required (the search's directory)");
     requireWritableOutputDirectory("--out", args->out);
-    if (MpiQueue::launchedAsMultipleProcesses())
-      throw Error("boundary does not run under mpirun or srun yet: run it on one node with --jobs N");
     SweepOptions options;
     options.outDir = args->out;
     options.jobs = args->jobs;
     options.threads = args->threads;
-    options.allowMpi = false;
-    SweepBoundaryRunner runner(options);
-    const BoundaryResult result = runBoundary(spec, runner, args->out);
+    // Under mpirun or srun, one MPI for every round: rank 0 searches, the others run its rounds' cases.
+    std::unique_ptr<MpiQueue> mpi;
+    if (MpiQueue::launchedAsMultipleProcesses()) {
+      mpi = std::make_unique<MpiQueue>();  // throws when built without MPI
+      if (mpi->size() >= 2) options.mpi = mpi.get();
+    }
+    if (options.mpi && options.mpi->rank() != 0) {
+      serveBoundaryRounds(options);
+      return;
+    }
+    BoundaryResult result;
+    try {
+      SweepBoundaryRunner runner(options);
+      result = runBoundary(spec, runner, args->out);
+    } catch (...) {
+      if (options.mpi) releaseBoundaryWorkers(*options.mpi);  // stopped: the workers leave too
+      throw;
+    }
+    if (options.mpi) releaseBoundaryWorkers(*options.mpi);
+    mpi.reset();  // MPI ends here, before an exit that would skip it
     std::fputs(boundaryLines(spec, result).c_str(), stdout);
     std::printf("results in %s/boundary.json and boundary.csv\n", args->out.c_str());
     bool failed = false;

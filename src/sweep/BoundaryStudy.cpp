@@ -1,18 +1,22 @@
 #include "sweep/BoundaryStudy.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <map>
 #include <optional>
 #include <sstream>
+#include <thread>
 
+#include "core/Assert.h"
 #include "core/Error.h"
 #include "core/Format.h"
 #include "io/AtomicFile.h"
 #include "io/Config.h"
 #include "io/SweepSpec.h"
+#include "sweep/MpiQueue.h"
 #include "sweep/ResultsTable.h"
 #include "sweep/SweepPlan.h"
 #include "sweep/SweepStatus.h"
@@ -109,6 +113,8 @@ std::vector<BoundaryCaseOutcome> SweepBoundaryRunner::run(const BoundarySpec& sp
   bool pending = false;
   for (std::size_t i = firstNew; i < all.size(); ++i) pending = pending || !caseFinished(caseDir(i));
   if (pending) {
+    if (options_.mpi)  // the workers read the file just written
+      for (int rank = 1; rank < options_.mpi->size(); ++rank) options_.mpi->send(rank, MpiTag::Round, "");
     const SweepOutcome outcome = runSweep(file, options_);
     if (outcome.interrupted) throw Interrupted(outcome.stopSignal, outcome.summary);
   }
@@ -130,6 +136,24 @@ std::vector<BoundaryCaseOutcome> SweepBoundaryRunner::run(const BoundarySpec& sp
     outcomes.push_back(o);
   }
   return outcomes;
+}
+
+void serveBoundaryRounds(const SweepOptions& options) {
+  WIGGLE_ASSERT(options.mpi != nullptr && options.mpi->rank() != 0);
+  while (true) {
+    const std::optional<MpiMessage> m = options.mpi->poll();
+    if (!m) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));  // as the coordinator polls
+      continue;
+    }
+    if (m->tag == MpiTag::Stop) return;
+    // A round: its sweep's worker loop, which ends with the round (the coordinator's Stop).
+    if (m->tag == MpiTag::Round) runSweep(options.outDir + "/boundary.toml", options);
+  }
+}
+
+void releaseBoundaryWorkers(MpiQueue& mpi) {
+  for (int rank = 1; rank < mpi.size(); ++rank) mpi.send(rank, MpiTag::Stop, "");
 }
 
 namespace {

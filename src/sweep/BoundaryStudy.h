@@ -74,6 +74,9 @@ class BoundaryRunner {
 };
 
 // The runs as cases of a sweep in `options.outDir` (SweepRunner.h), `options` as for `wiggle sweep`.
+// Under MPI (options.mpi set, this rank 0), each round is a sweep over the job's ranks: the worker
+// ranks wait between rounds in serveBoundaryRounds, and are told to start one (MpiTag::Round) once
+// its sweep file is written; releaseBoundaryWorkers ends their wait when the study is over.
 class SweepBoundaryRunner : public BoundaryRunner {
  public:
   explicit SweepBoundaryRunner(SweepOptions options) : options_(std::move(options)) {}
@@ -83,6 +86,13 @@ class SweepBoundaryRunner : public BoundaryRunner {
  private:
   SweepOptions options_;
 };
+
+// A worker rank of a boundary study under MPI: runs each round's tasks as rank 0 hands them out,
+// reading the round's sweep file (options.outDir/boundary.toml) when told a round starts, until rank 0
+// says the study is over. `options` as rank 0's (jobs and threads per worker rank), options.mpi set.
+void serveBoundaryRounds(const SweepOptions& options);
+// Rank 0: the study is over (or stopped): the worker ranks waiting between rounds leave.
+void releaseBoundaryWorkers(MpiQueue& mpi);
 
 // The sweep file of `cases` (DIR/boundary.toml).
 std::string boundarySweepFile(const BoundarySpec& spec, const std::vector<BoundaryCase>& cases);

@@ -468,7 +468,11 @@ SweepOutcome workerLoop(const SweepPlan& plan, const SweepRunSettings& settings,
       mpi.send(0, MpiTag::Request, hello);
       outstanding = true;
     }
-    while (const std::optional<MpiMessage> m = mpi.poll()) {
+    // Nothing is read after the Stop: what rank 0 sends next (a boundary study's next round) is
+    // for whoever serves after this loop.
+    while (!stopping) {
+      const std::optional<MpiMessage> m = mpi.poll();
+      if (!m) break;
       progressed = true;
       if (m->tag == MpiTag::Stop) {
         stopping = true;

@@ -8,6 +8,8 @@
 //   worker -> 0  Result   TaskOutcome JSON  a task it ran has ended
 //   0 -> worker  Task     the encoded task
 //   0 -> worker  Stop     no more work: finish what runs, report, leave
+//   0 -> worker  Round    (`wiggle boundary`, between its rounds) a round's sweep file is written:
+//                         read it and serve that sweep; a Stop between rounds ends the study
 // Rank 0 polls with MPI_Iprobe and sleeps between polls: Open MPI's blocking receive spins, and the
 // coordinator would otherwise take a whole core from the cases.
 #include <optional>
@@ -15,7 +17,7 @@
 
 namespace wiggle {
 
-enum class MpiTag : int { Request = 1, Result = 2, Task = 3, Stop = 4 };
+enum class MpiTag : int { Request = 1, Result = 2, Task = 3, Stop = 4, Round = 5 };
 
 struct MpiMessage {
   int source = 0;

@@ -12,6 +12,10 @@
 #include "sweep/TaskRunner.h"
 
 namespace wiggle {
+class MpiQueue;
+}
+
+namespace wiggle {
 
 struct SweepOptions {
   std::string outDir;        // "" = sweep-<sweep name> in the working directory
@@ -29,6 +33,9 @@ struct SweepOptions {
   std::string onlyCase;
   std::string executable;    // the wiggle binary the children run ("" = this process's binary)
   bool allowMpi = true;      // use MPI when launched by mpirun/srun with more than one process
+  // MPI started already, for several sweeps in one job (the rounds of `wiggle boundary`): used
+  // instead of starting it (which a process can do once). nullptr: runSweep starts it if launched so.
+  MpiQueue* mpi = nullptr;
   bool progress = true;      // live status line on stderr when it is a terminal
   bool logToStderr = true;   // event lines on stderr when it is not a terminal (always in sweep.log)
   bool handleSignals = true; // SIGINT/SIGTERM: stop children at a checkpoint, write results, stop

@@ -56,10 +56,11 @@ SweepOutcome runSweep(const std::string& sweepFile, const SweepOptions& options)
   std::optional<std::size_t> only;
   if (!options.onlyCase.empty()) only = findCase(spec, options.onlyCase);
 
-  std::unique_ptr<MpiQueue> mpi;
-  if (!only && options.allowMpi && !options.dryRun && MpiQueue::launchedAsMultipleProcesses()) {
-    mpi = std::make_unique<MpiQueue>();  // throws when built without MPI
-    if (mpi->size() < 2) mpi.reset();
+  std::unique_ptr<MpiQueue> ownMpi;
+  MpiQueue* mpi = options.mpi;
+  if (!mpi && !only && options.allowMpi && !options.dryRun && MpiQueue::launchedAsMultipleProcesses()) {
+    ownMpi = std::make_unique<MpiQueue>();  // throws when built without MPI
+    if (ownMpi->size() >= 2) mpi = ownMpi.get();
   }
 
   SweepRunSettings settings;
@@ -125,7 +126,7 @@ SweepOutcome runSweep(const std::string& sweepFile, const SweepOptions& options)
   // checkpoint) and stops handing out work.
   std::optional<StopSignalGuard> stopOnSignal;
   if (options.handleSignals) stopOnSignal.emplace();
-  return coordinateSweep(plan, settings, options, mpi.get(), only);
+  return coordinateSweep(plan, settings, options, mpi, only);
 }
 
 }  // namespace wiggle
