@@ -9,15 +9,9 @@
 # between rounds). The two must reach the same probes and verdicts from the same runs (every case's
 # state hash equal), and the same mpirun command again must find every run finished and start none.
 # About 15 s on 2 cores. Exit status 0 when it passes. Needs a wiggle built with MPI and mpirun.
-set -u
-W=${1:-$(dirname "$0")/../../build/release/wiggle}
-WORK=${2:-$(mktemp -d /tmp/wiggle-mpi-boundary.XXXXXX)}
-W=$(readlink -f "$W")
-mkdir -p "$WORK"
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+NAME=mpi_boundary_test
+. "$(dirname "$0")/mpi_common.sh"
 export WIGGLE_CACHE="$WORK/cache"
-MPIRUN="mpirun --oversubscribe -np 3 -x WIGGLE_CACHE"
-fail() { echo "mpi_boundary_test: FAIL: $*" >&2; exit 1; }
 
 cat > "$WORK/base.toml" <<EOF
 [box]

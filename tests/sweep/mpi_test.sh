@@ -14,17 +14,10 @@
 # The sweep has 6 tiny cases (20 d x 12 d bed): 3 run about 1-2 s each, 3 fail the geometry check
 # (amplitude 7 does not fit the box). Total about 30 s on 2 cores. Exit status 0 when it passes.
 # Needs a wiggle built with MPI (CMake found OpenMPI) and mpirun on PATH.
-set -u
-W=${1:-$(dirname "$0")/../../build/release/wiggle}
-WORK=${2:-$(mktemp -d /tmp/wiggle-mpi-test.XXXXXX)}
-W=$(readlink -f "$W")
-mkdir -p "$WORK"
-# As root, Open MPI refuses to start without these.
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+NAME=mpi_test
+. "$(dirname "$0")/mpi_common.sh"
 # Separate bed caches: the MPI run must make its bed on a worker rank too (bed task first).
 export WIGGLE_CACHE="$WORK/cache-mpi"
-MPIRUN="mpirun --oversubscribe -np 3 -x WIGGLE_CACHE"
-fail() { echo "mpi_test: FAIL: $*" >&2; exit 1; }
 
 cat > "$WORK/sweep.toml" <<EOF
 [sweep]
