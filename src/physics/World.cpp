@@ -64,17 +64,16 @@ double passOverGrainRange(const GrainArrays a, std::uint32_t begin, std::uint32_
         a.fy[i] = fy;
       }
       double vx = a.vx[i], vy = a.vy[i], omega = a.omega[i];
+      const double kick = halfDt * a.invMass[i], spin = halfDt * a.invInertia[i];
       if constexpr (Kick) {  // this step's second half
-        const double kick = halfDt * a.invMass[i];
         vx += kick * fx;
         vy += kick * fy;
-        omega += halfDt * a.invInertia[i] * torque;
+        omega += spin * torque;
       }
       if constexpr (Start) {  // the next step's first half, and its drift
-        const double kick = halfDt * a.invMass[i];
         vx += kick * fx;
         vy += kick * fy;
-        omega += halfDt * a.invInertia[i] * torque;
+        omega += spin * torque;
         const double x = a.x[i] + dt * vx;
         const double y = a.y[i] + dt * vy;
         a.x[i] = x;
@@ -380,7 +379,8 @@ double World::passOverGrains(GrainPass pass) {
                       : !pass.start      ? &passOverGrainRange<true, true, false, false>
                       : pass.track       ? &passOverGrainRange<true, true, true, true>
                                          : &passOverGrainRange<true, true, true, false>;
-  WIGGLE_ASSERT(pass.finishForces || (pass.start && !pass.kick));
+  WIGGLE_ASSERT(pass.finishForces ? pass.kick || !pass.start : pass.start && !pass.kick);  // the passes above
+  WIGGLE_ASSERT(!pass.track || pass.start);
   const std::uint32_t n = s.grainCount;
   const double dt = def_.dt, gravity = def_.gravity;
   double maxSq = 0.0;

@@ -164,7 +164,9 @@ class World {
   // What a pass over the grains does to each, in this order: the cross pairs' forces and gravity
   // (finishForces), the step's second half kick (kick), the next step's first half kick and drift
   // (start), then recording the new kinematics and the squared displacement since the last list
-  // build (track, with start). Returns the largest such displacement when it tracks, else 0.
+  // build (track, with start; not when the structure changed and the indices moved: the rebuild
+  // that follows in the step refreshes both). Returns the largest such displacement when it tracks,
+  // else 0.
   struct GrainPass {
     bool finishForces = false, kick = false, start = false, track = false;
   };
