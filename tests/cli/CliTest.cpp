@@ -149,6 +149,20 @@ TEST_F(Cli, HelpAndVersionExitZero) {
     EXPECT_NE(r.out.find("wiggle " + sub), std::string::npos) << r.out;
     EXPECT_EQ(r.err, "") << sub;
     EXPECT_NE(offered.find(" " + sub + " "), std::string::npos) << sub << " is not in the completion's list";
+    // Each option its help lists is offered after it: the completion's "SUB) options=..." line.
+    const auto line = text.find("    " + sub + ") options=\"");
+    ASSERT_NE(line, std::string::npos) << sub << " has no options line in the completion";
+    const auto open = text.find('"', line) + 1;
+    const std::string options = " " + text.substr(open, text.find('"', open) - open) + " ";
+    std::istringstream help(r.out);
+    bool listing = false;
+    for (std::string helpLine; std::getline(help, helpLine);) {
+      if (helpLine == "Options:") listing = true;
+      const auto dash = helpLine.find("--");
+      if (!listing || helpLine.rfind("  -", 0) != 0 || dash == std::string::npos) continue;
+      const std::string option = helpLine.substr(dash, helpLine.find_first_of(" ,", dash) - dash);
+      EXPECT_NE(options.find(" " + option + " "), std::string::npos) << sub << " " << option << " is not offered";
+    }
   }
 }
 

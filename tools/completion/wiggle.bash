@@ -26,7 +26,7 @@ _wiggle() {
   case "${words[1]}" in
     run) options="--set --out --threads --resume --no-plot --check --help" ;;
     sweep) options="--out --jobs --threads --dry-run --local --case --help" ;;
-    model) options="--shape --vertices --angle --format --periods --amplitude --geometry --clump --help" ;;
+    model) options="--shape --vertices --angle --format --periods --amplitude --geometry --clump --surface --help" ;;
     plot) options="--format --movie --times --out --geometry --help" ;;
     export-lammps) options="--set --out --threads --help" ;;
     boundary) options="--set --vary --range --points --resolution --beds --scatter --over --rate --out --jobs --threads --dry-run --help" ;;
