@@ -120,7 +120,7 @@ void addBoundaryCommand(CLI::App& app) {
     if (!args->config.empty()) requireInputFile(args->config, "config file");
     const BoundarySpec spec = specOf(*args);
     if (args->dryRun) {
-      std::fputs(boundaryPlanListing(spec).c_str(), stdout);
+      if (MpiQueue::launcherRank() == 0) std::fputs(boundaryPlanListing(spec).c_str(), stdout);  // one, under mpirun
       return;
     }
     if (args->out.empty()) throw Error("--out DIR is required (the search's directory)");

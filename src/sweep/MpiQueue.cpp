@@ -22,6 +22,13 @@ bool MpiQueue::launchedAsMultipleProcesses() {
   return false;
 }
 
+int MpiQueue::launcherRank() {
+  for (const char* name : {"OMPI_COMM_WORLD_RANK", "PMI_RANK", "PMIX_RANK", "SLURM_PROCID"}) {
+    if (const char* v = std::getenv(name); v && launchedAsMultipleProcesses()) return std::atoi(v);
+  }
+  return 0;
+}
+
 #ifdef WIGGLE_HAVE_MPI
 
 bool MpiQueue::available() { return true; }

@@ -31,6 +31,9 @@ class MpiQueue {
   // srun with PMI/PMIx) for a job of more than one process: it reads the launcher's environment
   // variables only, so it is safe to call before deciding to initialise MPI.
   static bool launchedAsMultipleProcesses();
+  // This process's rank as its launcher numbered it (from the same variables), 0 when none did: what
+  // runs before MPI starts (a dry run) prints from rank 0 only.
+  static int launcherRank();
   // Whether this binary was built with MPI.
   static bool available();
 

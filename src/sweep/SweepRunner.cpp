@@ -115,7 +115,8 @@ SweepOutcome runSweep(const std::string& sweepFile, const SweepOptions& options)
   }
 
   if (options.dryRun) {
-    (options.listing ? *options.listing : std::cout) << dryRunListing(plan, settings.jobs, settings.threads);
+    if (MpiQueue::launcherRank() == 0)  // under mpirun, one listing
+      (options.listing ? *options.listing : std::cout) << dryRunListing(plan, settings.jobs, settings.threads);
     SweepOutcome out;
     out.outDir = outDir;
     out.cases = plan.cases.size();

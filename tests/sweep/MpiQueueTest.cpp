@@ -12,9 +12,11 @@ namespace wiggle {
 namespace {
 
 constexpr const char* kLauncherVariables[] = {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_SIZE", "MPI_LOCALNRANKS"};
+constexpr const char* kRankVariables[] = {"OMPI_COMM_WORLD_RANK", "PMI_RANK", "PMIX_RANK", "SLURM_PROCID"};
 
 void clearLauncherVariables() {
   for (const char* name : kLauncherVariables) ::unsetenv(name);
+  for (const char* name : kRankVariables) ::unsetenv(name);
 }
 
 TEST(MpiQueue, ALauncherOfMoreThanOneProcessIsRecognisedByItsVariable) {
@@ -26,6 +28,19 @@ TEST(MpiQueue, ALauncherOfMoreThanOneProcessIsRecognisedByItsVariable) {
     EXPECT_FALSE(MpiQueue::launchedAsMultipleProcesses()) << name;
     ::setenv(name, "4", 1);
     EXPECT_TRUE(MpiQueue::launchedAsMultipleProcesses()) << name;
+  }
+  clearLauncherVariables();
+}
+
+TEST(MpiQueue, TheLaunchersRankIsReadOnlyUnderALauncherOfSeveral) {
+  clearLauncherVariables();
+  EXPECT_EQ(MpiQueue::launcherRank(), 0);
+  for (const char* name : kRankVariables) {
+    clearLauncherVariables();
+    ::setenv(name, "2", 1);
+    EXPECT_EQ(MpiQueue::launcherRank(), 0) << name << " alone (a Slurm job step of one task sets SLURM_PROCID too)";
+    ::setenv("PMI_SIZE", "3", 1);
+    EXPECT_EQ(MpiQueue::launcherRank(), 2) << name;
   }
   clearLauncherVariables();
 }
