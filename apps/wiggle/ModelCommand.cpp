@@ -248,8 +248,7 @@ void addModelCommand(CLI::App& app) {
       "all five paper shapes (the paper's Table 1). Shapes whose two sides give different l (not "
       "mirror-symmetric) get one row per side, named shape:left / shape:right (the cavity on "
       "that side).");
-  cmd->add_option("--shape", opt->shape,
-                  "disk | square | rect_narrow | rect_wide | triangle | polygon");
+  cmd->add_option("--shape", opt->shape, joinedNames(choiceNameList<ShapeName>(), " | "));
   cmd->add_option("--vertices", opt->vertices,
                   "polygon outline \"x1,y1;x2,y2;...\" [d], either orientation, convex or concave");
   cmd->add_option("--angle", opt->angle, "rotation about the centroid, counter-clockwise [degrees]");
@@ -262,9 +261,7 @@ void addModelCommand(CLI::App& app) {
                   "amplitude A for --periods [d] (default 5; V_y = 0 for A <= A_min = 0.5)");
   cmd->add_option("--geometry", opt->geometryPath,
                   "write the chosen shape's outline, atoms and model points to this JSON file");
-  std::string surfaces;
-  for (std::string_view name : choiceNameList<IntruderSurface>())
-    surfaces += (surfaces.empty() ? "" : " | ") + std::string(name);
+  const std::string surfaces = joinedNames(choiceNameList<IntruderSurface>(), " | ");
   cmd->add_option_function<std::string>(
       "--surface",
       [opt, surfaces](const std::string& name) {

@@ -6,6 +6,7 @@
 #include <array>
 #include <cstddef>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -31,6 +32,13 @@ constexpr std::optional<E> choiceNamed(std::string_view name) {
 template <class E>
 std::vector<std::string_view> choiceNameList() {
   return {ChoiceNames<E>::names.begin(), ChoiceNames<E>::names.end()};
+}
+
+// Names as one text for a help or an error: "a, b, c" (or with another separator).
+inline std::string joinedNames(const std::vector<std::string_view>& names, std::string_view separator = ", ") {
+  std::string text;
+  for (const std::string_view name : names) text += (text.empty() ? "" : std::string(separator)) + std::string(name);
+  return text;
 }
 
 // Whether a number read from a file is one of E's values.

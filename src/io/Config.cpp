@@ -191,8 +191,7 @@ void applySetting(RunConfig& config, const std::string& key, const toml::node& v
     }
     case Kind::Choice: {
       const auto* s = value.as_string();
-      std::string options;
-      for (const std::string_view c : k->choices) options += (options.empty() ? "" : ", ") + std::string(c);
+      const std::string options = joinedNames(k->choices);
       if (!s) throw typeError("one of " + options);
       if (std::find(k->choices.begin(), k->choices.end(), s->get()) == k->choices.end()) {
         throw Error(head + "must be one of " + options);

@@ -45,9 +45,7 @@ void checkKeyRanges(const RunConfig& c) {
       case Kind::Choice: {
         const std::string v = chosen(k, c);
         if (std::find(k.choices.begin(), k.choices.end(), v) == k.choices.end()) {
-          std::string options;
-          for (const std::string_view o : k.choices) options += (options.empty() ? "" : ", ") + std::string(o);
-          fail("must be one of " + options);
+          fail("must be one of " + joinedNames(k.choices));
         }
         break;
       }

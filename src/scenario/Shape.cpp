@@ -268,10 +268,8 @@ Shape makeShape(ShapeName kind, const Outline& vertices, double angleDegrees) {
 Shape makeShape(const std::string& name, const Outline& vertices, double angleDegrees) {
   const std::optional<ShapeName> kind = choiceNamed<ShapeName>(name);
   if (!kind) {
-    std::string known;
-    for (const std::string_view n : ChoiceNames<ShapeName>::names)
-      known += (known.empty() ? "" : ", ") + std::string(n);
-    throw Error("intruder.shape: unknown shape '" + name + "' (expected one of " + known + ")");
+    throw Error("intruder.shape: unknown shape '" + name + "' (expected one of " +
+                joinedNames(choiceNameList<ShapeName>()) + ")");
   }
   return makeShape(*kind, vertices, angleDegrees);
 }
