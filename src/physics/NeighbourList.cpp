@@ -163,6 +163,29 @@ void NeighbourList::build(const ParticleStore& s, double boxWidth, double skin,
   deriveIndex(forceBlockRows(boxWidth));
 }
 
+NeighbourList::Strip NeighbourList::strip(std::uint32_t t, std::uint32_t threads) const {
+  WIGGLE_ASSERT(t < threads);
+  const std::uint32_t blocks = blockCount(), rows = rowCount();
+  const std::uint64_t pairs = pairCount();
+  // The first block whose first pair is at or past the share's start (the last strip ends at the
+  // last block, so that blocks without pairs at the end still belong to one).
+  auto boundary = [&](std::uint32_t share) -> std::uint32_t {
+    if (share == threads) return blocks;
+    const std::uint64_t start = pairs * share / threads;
+    std::uint32_t lo = 0, hi = blocks;
+    while (lo < hi) {
+      const std::uint32_t mid = lo + (hi - lo) / 2;
+      if (rowStart[mid * blockRows] < start)
+        lo = mid + 1;
+      else
+        hi = mid;
+    }
+    return lo;
+  };
+  const std::uint32_t first = boundary(t), last = boundary(t + 1);
+  return {first, last, std::min(first * blockRows, rows), std::min(last * blockRows, rows)};
+}
+
 std::uint32_t forceBlockRows(double boxWidth) {
   return static_cast<std::uint32_t>(std::clamp(4.0 * std::ceil(boxWidth), 64.0, 1e6));
 }

@@ -40,6 +40,17 @@ struct NeighbourList {
   std::uint32_t rowCount() const { return rowStart.empty() ? 0 : static_cast<std::uint32_t>(rowStart.size() - 1); }
   std::uint32_t blockCount() const { return (rowCount() + blockRows - 1) / blockRows; }
 
+  // Thread t's strip of `threads`: the consecutive blocks [first, last) holding about a 1/threads share
+  // of the pairs, and their rows. As the grains are sorted by height, a strip is a layer of the box;
+  // a thread evaluates its strip's blocks and then passes over the strip's grains, so the sums it
+  // writes are the ones it reads, on its own core, and only the strips' edges (cross pairs,
+  // partners' positions) cross between cores. Which thread evaluates a block never changes a sum.
+  struct Strip {
+    std::uint32_t firstBlock, lastBlock;  // blocks [firstBlock, lastBlock)
+    std::uint32_t firstRow, lastRow;      // their grains [firstRow, lastRow)
+  };
+  Strip strip(std::uint32_t t, std::uint32_t threads) const;
+
   // Rebuilds from the store (x already wrapped into [0, W)). History is carried from `old` for every
   // pair present in both: newToOld maps a new particle index to its index in `old` (empty:
   // identity). A pair whose owner/partner order flipped gets its history negated (it is stored in

@@ -384,13 +384,20 @@ double World::passOverGrains(GrainPass pass) {
   const std::uint32_t n = s.grainCount;
   const double dt = def_.dt, gravity = def_.gravity;
   double maxSq = 0.0;
-  // Each thread a contiguous share of the grains, as a static schedule gives.
+  // Each thread the grains of its strip (NeighbourList::strip), whose force blocks it has just
+  // evaluated; before the first list build, an even share.
+  const bool byStrip = list_.rowCount() == n;
 #pragma omp parallel reduction(max : maxSq)
   {
-    const auto threads = static_cast<std::uint64_t>(omp_get_num_threads());
-    const auto t = static_cast<std::uint64_t>(omp_get_thread_num());
-    maxSq = range(a, static_cast<std::uint32_t>(n * t / threads), static_cast<std::uint32_t>(n * (t + 1) / threads), dt,
-                  gravity);
+    const auto threads = static_cast<std::uint32_t>(omp_get_num_threads());
+    const auto t = static_cast<std::uint32_t>(omp_get_thread_num());
+    if (byStrip) {
+      const NeighbourList::Strip strip = list_.strip(t, threads);
+      maxSq = range(a, strip.firstRow, strip.lastRow, dt, gravity);
+    } else {
+      maxSq = range(a, static_cast<std::uint32_t>(std::uint64_t{n} * t / threads),
+                    static_cast<std::uint32_t>(std::uint64_t{n} * (t + 1) / threads), dt, gravity);
+    }
   }
   return maxSq;
 }
@@ -536,19 +543,23 @@ void World::computeContactForces(bool updateShear) {
   // between two full scans still raises the alarm, and so a scan.
   const double overlapRatio = def_.maxOverlapRatio;
 
-  // 1. Force blocks, each on one thread (any thread: a block's sums do not depend on which), and
-  //    beside them, as one more work item (the first, as it is the largest), the intruder's pairs:
-  //    it reads only positions and velocities, which no block writes, and writes only its own
-  //    slots. The largest overlap excess is a max, so it does not depend on the thread count.
+  // 1. Force blocks, each thread those of its strip (NeighbourList::strip; a block's sums do not
+  //    depend on which thread evaluates it), and on the first thread, before its strip, the
+  //    intruder's pairs: they read only positions and velocities, which no block writes, and write
+  //    only their own slots. The largest overlap excess is a max: no dependence on the threads.
   double worstExcess = -std::numeric_limits<double>::infinity();
-  const std::int64_t first = hasIntruder_ ? -1 : 0;
-  const auto blocks = static_cast<std::int64_t>(list.blockCount());
-#pragma omp parallel for schedule(dynamic, 1) reduction(max : worstExcess)
-  for (std::int64_t b = first; b < blocks; ++b)
-    worstExcess = std::max(worstExcess, b < 0 ? kernels_->intruderPairForces(s, clump_, clumpState_, intruderPairs_,
-                                                                              params, dt, width, updateShear, overlapRatio)
-                                              : kernels_->forceBlock(static_cast<std::uint32_t>(b), s, kinematics_.data(),
-                                                                     list, params, dt, width, updateShear, overlapRatio));
+#pragma omp parallel reduction(max : worstExcess)
+  {
+    const auto threads = static_cast<std::uint32_t>(omp_get_num_threads());
+    const auto t = static_cast<std::uint32_t>(omp_get_thread_num());
+    if (t == 0 && hasIntruder_)
+      worstExcess = kernels_->intruderPairForces(s, clump_, clumpState_, intruderPairs_, params, dt, width, updateShear,
+                                                 overlapRatio);
+    const NeighbourList::Strip strip = list.strip(t, threads);
+    for (std::uint32_t b = strip.firstBlock; b < strip.lastBlock; ++b)
+      worstExcess = std::max(worstExcess, kernels_->forceBlock(b, s, kinematics_.data(), list, params, dt, width,
+                                                               updateShear, overlapRatio));
+  }
 
   // 2. The intruder's pair forces onto its grains and the clump, serially in list order (after the
   //    blocks, which start their grains' sums from zero), so that no sum depends on the thread count.

@@ -1,6 +1,6 @@
 // NeighbourList on its own (physics/NeighbourList.h): the list against every pair found by brute
 // force (periodic in x), its order, the contact history carried through a re-sort, the cross-pair
-// index of the force blocks, and the same list for any thread count.
+// index of the force blocks, the threads' strips of blocks, and the same list for any thread count.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -171,6 +171,34 @@ TEST(NeighbourList, SameListForAnyThreadCount) {
   EXPECT_EQ(one.rowStart, three.rowStart);
   EXPECT_EQ(one.partner, three.partner);
   EXPECT_EQ(one.crossPair, three.crossPair);
+}
+
+TEST(NeighbourList, StripsTileTheBlocksAndShareThePairs) {
+  const ParticleStore s = randomStore(600, 20.0, 8);
+  NeighbourList list = built(s);
+  list.deriveIndex(7);  // 86 blocks, so that the shares can be even
+  const std::uint32_t blocks = list.blockCount(), rows = list.rowCount();
+  for (std::uint32_t threads : {1u, 2u, 3u, 5u, 200u}) {
+    std::uint32_t nextBlock = 0, nextRow = 0, largest = 0;
+    for (std::uint32_t t = 0; t < threads; ++t) {
+      const NeighbourList::Strip strip = list.strip(t, threads);
+      EXPECT_EQ(strip.firstBlock, nextBlock) << threads << " threads, strip " << t;  // consecutive, no gap
+      EXPECT_EQ(strip.firstRow, nextRow);
+      EXPECT_LE(strip.firstBlock, strip.lastBlock);
+      EXPECT_EQ(strip.lastRow, std::min(strip.lastBlock * 7, rows));  // a strip's rows are its blocks'
+      nextBlock = strip.lastBlock;
+      nextRow = strip.lastRow;
+      const std::uint32_t pairs = list.rowStart[strip.lastRow] - list.rowStart[strip.firstRow];
+      largest = std::max(largest, pairs);
+    }
+    EXPECT_EQ(nextBlock, blocks) << threads << " threads";  // every block, and every row, once
+    EXPECT_EQ(nextRow, rows);
+    // No strip holds more than its share of the pairs and one block.
+    std::uint32_t largestBlock = 0;
+    for (std::uint32_t b = 0; b < blocks; ++b)
+      largestBlock = std::max(largestBlock, list.rowStart[std::min((b + 1) * 7, rows)] - list.rowStart[b * 7]);
+    EXPECT_LE(largest, (list.pairCount() + threads - 1) / threads + largestBlock) << threads << " threads";
+  }
 }
 
 TEST(NeighbourList, RefusesABoxNarrowerThanThreeCells) {
