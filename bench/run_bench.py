@@ -257,7 +257,10 @@ def main():
     if unknown:
         sys.exit("--cases: unknown %s (choose from %s)" % (",".join(unknown), ", ".join(CASES)))
 
-    targets = ["wiggle"] + (["wiggle_floor"] if with_floor else [])
+    threads = [int(t) for t in args.threads.split(",")]
+    # With more than one thread, how far apart the CPUs are says what the threads' numbers mean.
+    with_latency = max(threads) > 1 and len(os.sched_getaffinity(0)) > 1
+    targets = ["wiggle"] + (["wiggle_floor"] if with_floor else []) + (["wiggle_core_latency"] if with_latency else [])
     if not args.no_build:
         build(args.build_dir, targets)
     wiggle, floor = (os.path.join(args.build_dir, t) for t in ("wiggle", "wiggle_floor"))
@@ -277,9 +280,11 @@ def main():
     env = dict(os.environ)
     if args.cache:
         env["WIGGLE_CACHE"] = args.cache
-    threads = [int(t) for t in args.threads.split(",")]
     steps_of = {"small": args.steps_small, "paper": args.steps_paper, "tiny": CASES["tiny"][1]}
     log("machine: %s, %d logical CPUs" % (model, cpus))
+    if with_latency:  # one line per pair of CPUs: the placement every multi-thread number below had
+        r = run([os.path.join(args.build_dir, "wiggle_core_latency"), "--rounds", "100000"])
+        log("  " + r.stdout.strip().replace("\n", "\n  "))
     for code, binary in binaries.items():
         log("%s: %s, LAMMPS %s" % (code, binary, lammps_version(binary)))
     versions = {lammps_version(b) for b in binaries.values()}
