@@ -65,7 +65,7 @@ def main():
     fig, ax = plt.subplots(figsize=(9, 4) if many else (7, 4))
     print(f"{'run':24} {'V_y chord':>10} {'LSQ slope':>10} {'y_end':>8} {'V_y rule':>9} {'vy_settled':>10}")
     rows = []
-    for spec in args.runs:
+    for index, spec in enumerate(args.runs):
         label, sep, path = spec.partition("=")
         if not sep:
             sys.exit(f"compare_trajectories: '{spec}' is not LABEL=DIR")
@@ -78,7 +78,9 @@ def main():
         print(f"{label:24} {chord:+10.4f} {slope:+10.4f} {y_end:8.2f} {shown}")
         rows.append([label, path, f"{chord:.6f}", f"{slope:.6f}", f"{y_end:.4f}"] +
                     ([f"{rule[0]:.6f}", f"{rule[1]:.6f}"] if rule else ["", ""]))
-        ax.plot(traj["t"], np.asarray(traj["y"]) - traj["y"][0], lw=0.8, label=f"{label}: V_y = {chord:+.3f}")
+        # Past the colour cycle's ten colours, a new dash pattern, so that no two curves look alike.
+        dashes = ("-", "--", "-.", ":")[index // 10 % 4]
+        ax.plot(traj["t"], np.asarray(traj["y"]) - traj["y"][0], lw=0.8, ls=dashes, label=f"{label}: V_y = {chord:+.3f}")
     if args.csv:
         with open(args.csv, "w", newline="") as f:
             w = csv.writer(f)
