@@ -553,8 +553,8 @@ void World::computeContactForces(bool updateShear) {
     const auto threads = static_cast<std::uint32_t>(omp_get_num_threads());
     const auto t = static_cast<std::uint32_t>(omp_get_thread_num());
     if (t == 0 && hasIntruder_)
-      worstExcess = kernels_->intruderPairForces(s, clump_, clumpState_, intruderPairs_, params, dt, width, updateShear,
-                                                 overlapRatio);
+      worstExcess = std::max(worstExcess, kernels_->intruderPairForces(s, clump_, clumpState_, intruderPairs_, params,
+                                                                       dt, width, updateShear, overlapRatio));
     const NeighbourList::Strip strip = list.strip(t, threads);
     for (std::uint32_t b = strip.firstBlock; b < strip.lastBlock; ++b)
       worstExcess = std::max(worstExcess, kernels_->forceBlock(b, s, kinematics_.data(), list, params, dt, width,
