@@ -17,9 +17,10 @@ SpeedBasis speedBasis(const RunConfig& config) {
   if (const std::optional<MeasuredSpeed> m = measuredSpeed(config)) {
     basis.ns = m->nsPerParticleStep;
     basis.source = "the median of this machine's last " + std::to_string(m->runs) + " one-thread run" +
-                   (m->runs == 1 ? "" : "s") + " (" + m->path + ")";
+                   (m->runs == 1 ? "" : "s") + " of a " + m->buildKind + " build (" + m->path + ")";
   } else {
-    basis.source = "no run recorded on this machine yet, so the reference machine's figure, docs/SWEEPS.md";
+    basis.source = "no one-thread run of a " + speedBuildKind() +
+                   " build recorded on this machine yet, so the reference machine's figure, docs/SWEEPS.md";
   }
   return basis;
 }

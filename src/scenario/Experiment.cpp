@@ -338,7 +338,8 @@ RunOutcome writeRunOutputs(const Case& run, const std::string& dir, const World&
   writeFileAtomically(dir + "/summary.json", toJson(summary).dump(2) + "\n");
   // For the cost estimates (scenario/SpeedRecord.h); runs under 10^4 steps say more about start-up
   // than about the step.
-  if (summary.steps >= 10000) recordRunSpeed(config, static_cast<int>(summary.threads), summary.nsPerParticleStep);
+  if (summary.steps >= 10000)
+    recordRunSpeed(config, static_cast<int>(summary.threads), summary.nsPerParticleStep, summary.simd);
   log.line("done: vy = " + formatNumber(rate.vy) + ", slope = " + formatNumber(rate.slope) +
            ", vy_settled = " + formatNumber(settled.vy) + " (t_settled = " + formatNumber(settled.tSettled) + "), " +
            formatNumber(summary.nsPerParticleStep) + " ns/particle-step, state " + world.stateHash());

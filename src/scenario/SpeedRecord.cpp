@@ -11,6 +11,7 @@
 
 #include "core/Format.h"
 #include "core/Machine.h"
+#include "physics/ForceKernels.h"
 #include "scenario/BedMaker.h"
 
 namespace wiggle {
@@ -21,7 +22,26 @@ constexpr std::size_t lastRuns = 9;
 
 std::string speedLogPath(const RunConfig& config) { return bedCacheDir(config) + "/speed.log"; }
 
+// GCC says a sanitizer is on by these macros, clang by __has_feature.
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+constexpr bool kSanitized = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
+constexpr bool kSanitized = true;
+#else
+constexpr bool kSanitized = false;
+#endif
+#else
+constexpr bool kSanitized = false;
+#endif
+
 }  // namespace
+
+std::string speedBuildKind(const std::string& simd) {
+  return std::string(WIGGLE_BUILD_TYPE) + (kSanitized ? "+sanitized" : "") + "/" + simd;
+}
+
+std::string speedBuildKind() { return speedBuildKind(simdLevelName(defaultSimdLevel())); }
 
 std::string cpuModel() {
   std::ifstream in("/proc/cpuinfo");
@@ -37,10 +57,10 @@ std::string cpuModel() {
   return "";
 }
 
-void recordRunSpeed(const RunConfig& config, int threads, double nsPerParticleStep) {
+void recordRunSpeed(const RunConfig& config, int threads, double nsPerParticleStep, const std::string& simd) {
   if (!(nsPerParticleStep > 0)) return;
   const std::string line = cpuModel() + "\t" + std::to_string(threads) + "\t" + formatNumber(nsPerParticleStep, 6) +
-                           "\t" + formatNumber(loadAverage(), 3) + "\n";
+                           "\t" + formatNumber(loadAverage(), 3) + "\t" + speedBuildKind(simd) + "\n";
   std::error_code ec;
   std::filesystem::create_directories(bedCacheDir(config), ec);
   // O_APPEND and one write(): concurrent runs' lines do not interleave.
@@ -54,13 +74,15 @@ std::optional<MeasuredSpeed> measuredSpeed(const RunConfig& config) {
   std::ifstream in(speedLogPath(config));
   if (!in) return std::nullopt;
   const std::string cpu = cpuModel();
+  const std::string kind = speedBuildKind();
   std::vector<double> speeds;
   for (std::string line; std::getline(in, line);) {
     std::istringstream fields(line);
-    std::string model, threads, ns;
-    if (!std::getline(fields, model, '\t') || !std::getline(fields, threads, '\t') || !std::getline(fields, ns, '\t'))
-      continue;  // a line cut short (a full disk) or foreign: skipped
-    if (model != cpu || threads != "1") continue;
+    std::string model, threads, ns, load, build;
+    if (!std::getline(fields, model, '\t') || !std::getline(fields, threads, '\t') || !std::getline(fields, ns, '\t') ||
+        !std::getline(fields, load, '\t') || !std::getline(fields, build))
+      continue;  // a line cut short (a full disk), written before the build kind was, or foreign: skipped
+    if (model != cpu || threads != "1" || build != kind) continue;
     try {
       const double v = std::stod(ns);
       if (v > 0 && v < 1e6) speeds.push_back(v);
@@ -75,6 +97,7 @@ std::optional<MeasuredSpeed> measuredSpeed(const RunConfig& config) {
   m.nsPerParticleStep = n % 2 ? speeds[n / 2] : 0.5 * (speeds[n / 2 - 1] + speeds[n / 2]);
   m.runs = n;
   m.path = speedLogPath(config);
+  m.buildKind = kind;
   return m;
 }
 

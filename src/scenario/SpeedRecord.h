@@ -2,7 +2,8 @@
 // The speed this machine has shown, for cost estimates (`run --check`, `sweep --dry-run`,
 // `boundary --dry-run`, a sweep's ETA before its first case ends): every finished run appends one
 // line to speed.log in the bed cache directory, and an estimate takes the median of the last runs
-// on the same CPU model at one thread. Those runs' speed includes whatever else the machine was
+// on the same CPU model at one thread by the same kind of build (speedBuildKind: a debug or
+// sanitized build, or the scalar kernels, run several times slower than a release build). Those runs' speed includes whatever else the machine was
 // doing then: the estimate is "as this machine has been running", not a quiet machine's figure.
 #include <optional>
 #include <string>
@@ -15,19 +16,29 @@ namespace wiggle {
 // The CPU's model name (/proc/cpuinfo's first "model name"), "" when unknown.
 std::string cpuModel();
 
-// Appends "<cpu model>\t<threads>\t<ns per particle-step>\t<load average>" to <cache dir>/speed.log
-// as one write (whole lines even when runs end together). Never throws: a run's result does not
-// depend on its speed being recorded.
-void recordRunSpeed(const RunConfig& config, int threads, double nsPerParticleStep);
+// What a run's speed depends on besides the CPU and the threads: this program's build type
+// (CMAKE_BUILD_TYPE, "+sanitized" when built with a sanitizer) and the force kernels' instruction
+// set `simd` (physics/ForceKernels.h, simdLevelName): "Release/avx512".
+std::string speedBuildKind(const std::string& simd);
+// The build kind of a run started now: this build, with the kernels it would choose (defaultSimdLevel).
+std::string speedBuildKind();
+
+// Appends "<cpu model>\t<threads>\t<ns per particle-step>\t<load average>\t<build kind>" to
+// <cache dir>/speed.log as one write (whole lines even when runs end together). Never throws: a
+// run's result does not depend on its speed being recorded.
+void recordRunSpeed(const RunConfig& config, int threads, double nsPerParticleStep, const std::string& simd);
 
 struct MeasuredSpeed {
   double nsPerParticleStep = 0.0;  // the median
   std::size_t runs = 0;            // how many runs it is the median of
   std::string path;                // the log it was read from
+  std::string buildKind;           // the build kind it is for (speedBuildKind)
 };
 
-// The median ns per particle-step of the last (up to) 9 one-thread runs on this CPU model in the
-// cache directory's speed.log; nothing when there are none.
+// The median ns per particle-step of the last (up to) 9 one-thread runs on this CPU model by this
+// build kind, with the force kernels a run would use now (defaultSimdLevel), in the cache
+// directory's speed.log; nothing when there are none. Lines without a build kind (written before
+// it was recorded) are not counted: which build ran them is not known.
 std::optional<MeasuredSpeed> measuredSpeed(const RunConfig& config);
 
 }  // namespace wiggle

@@ -373,7 +373,8 @@ TEST(BedMaker, PaperDepthSweepsRunOnThePresetsBeds) {
   for (const char* file :
        {"paper_depth_box.toml", "paper_depth_seeds.toml", "paper_depth_table1.toml", "paper_depth_runlength.toml",
         "paper_depth_table1_bed2.toml", "paper_depth_fig5.toml", "paper_depth_fig5_bed2.toml", "paper_depth_t1000.toml",
-        "paper_depth_fig2_t1000.toml", "paper_depth_velocity.toml", "paper_depth_fields.toml",
+        "paper_depth_fig2_t1000.toml", "paper_depth_t1000_bed2.toml", "paper_depth_velocity.toml",
+        "paper_depth_fields.toml",
         "paper_depth_friction.toml"}) {  // the friction study at every mu on the preset's beds (bed.mu)
     for (const SweepCase& c : loadSweepSpec(root + "sweeps/" + file).cases) {
       RunConfig expected = preset;
@@ -389,25 +390,39 @@ TEST(BedMaker, PaperDepthSweepsRunOnThePresetsBeds) {
 }
 
 TEST(BedMaker, TheT1000StudiesAreTheT100StudiesRunLonger) {
-  // results/paper_depth/table1_t1000 (and fig2_t1000) read their first t = 100 as table1's (fig5's)
-  // runs, the same bits, and continue those runs' checkpoints when they are at hand: each case must
-  // be the shorter sweep's case of the same name but for run.duration.
+  // results/paper_depth/table1_t1000 (table1_t1000_bed2, fig2_t1000) read their first t = 100 as
+  // table1's (table1_bed2's, fig5's) runs, the same bits, and continue those runs' checkpoints when
+  // they are at hand: a case of the shorter sweep's name must be that case but for run.duration.
+  // A case the shorter sweep does not have (a period added where the paper's clock moved a
+  // crossing) must be a case of it with the same intruder but for run.duration and drive.period.
   const std::string root = std::string(WIGGLE_SOURCE_DIR) + "/configs/sweeps/";
-  for (const auto& [shorter, longer, count] :
-       {std::tuple{"paper_depth_table1.toml", "paper_depth_t1000.toml", 15u},
-        std::tuple{"paper_depth_fig5.toml", "paper_depth_fig2_t1000.toml", 10u}}) {
+  for (const auto& [shorter, longer, count, extended] :
+       {std::tuple{"paper_depth_table1.toml", "paper_depth_t1000.toml", 15u, 0u},
+        std::tuple{"paper_depth_table1_bed2.toml", "paper_depth_t1000_bed2.toml", 8u, 1u},
+        std::tuple{"paper_depth_fig5.toml", "paper_depth_fig2_t1000.toml", 10u, 0u}}) {
     const SweepSpec base = loadSweepSpec(root + shorter);
-    const SweepSpec extended = loadSweepSpec(root + longer);
-    EXPECT_EQ(extended.cases.size(), count) << longer;
-    for (const SweepCase& c : extended.cases) {
-      const auto same =
-          std::find_if(base.cases.begin(), base.cases.end(), [&](const SweepCase& t) { return t.name == c.name; });
-      ASSERT_NE(same, base.cases.end()) << longer << ": " << c.name;
+    const SweepSpec longRuns = loadSweepSpec(root + longer);
+    EXPECT_EQ(longRuns.cases.size(), count) << longer;
+    std::uint32_t newPeriods = 0;
+    for (const SweepCase& c : longRuns.cases) {
       EXPECT_EQ(c.config.run.duration, 1000.0) << c.name;
-      RunConfig expected = same->config;
+      auto same =
+          std::find_if(base.cases.begin(), base.cases.end(), [&](const SweepCase& t) { return t.name == c.name; });
+      RunConfig expected;
+      if (same != base.cases.end()) {
+        expected = same->config;
+      } else {
+        ++newPeriods;
+        same = std::find_if(base.cases.begin(), base.cases.end(),
+                            [&](const SweepCase& t) { return t.config.intruder.shape == c.config.intruder.shape; });
+        ASSERT_NE(same, base.cases.end()) << longer << ": " << c.name;
+        expected = same->config;
+        expected.drive.period = c.config.drive.period;
+      }
       expected.run.duration = c.config.run.duration;
       EXPECT_EQ(toToml(c.config), toToml(expected)) << longer << ": " << c.name;
     }
+    EXPECT_EQ(newPeriods, extended) << longer;
   }
 }
 

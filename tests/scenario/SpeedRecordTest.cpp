@@ -9,6 +9,7 @@
 
 #include "io/AtomicFile.h"
 #include "io/Config.h"
+#include "physics/ForceKernels.h"
 #include "scenario/SpeedRecord.h"
 #include "sweep/SweepPlan.h"
 
@@ -33,28 +34,44 @@ TEST_F(SpeedRecordTest, NoLogMeansTheReferenceFigure) {
   EXPECT_FALSE(measuredSpeed(config_));
   const SpeedBasis basis = speedBasis(config_);
   EXPECT_EQ(basis.ns, CostModel::nsPerParticleStep);
-  EXPECT_NE(basis.source.find("no run recorded"), std::string::npos) << basis.source;
+  EXPECT_NE(basis.source.find("no one-thread run of a " + speedBuildKind() + " build recorded"), std::string::npos)
+      << basis.source;
 }
 
-TEST_F(SpeedRecordTest, TheMedianOfTheLastNineOneThreadRunsOnThisCpu) {
+TEST_F(SpeedRecordTest, TheMedianOfTheLastNineOneThreadRunsOnThisCpuByThisBuild) {
   fs::create_directories(dir_);
   std::ofstream log(dir_ + "/speed.log");
   const std::string cpu = cpuModel();
-  for (int k = 1; k <= 12; ++k) log << cpu << "\t1\t" << 10 * k << "\t0.5\n";  // 10 ... 120: the last 9 are 40 ... 120
-  log << "Another CPU\t1\t1\t0\n" << cpu << "\t2\t1\t0\n" << cpu << "\t1\tnot-a-number\t0\n" << cpu << "\t1";
+  const std::string kind = speedBuildKind();
+  for (int k = 1; k <= 12; ++k) {  // 10 ... 120: the last 9 are 40 ... 120; the lines between are not counted
+    log << cpu << "\t1\t" << 10 * k << "\t0.5\t" << kind << "\n";
+    log << cpu << "\t1\t1\t0.5\tDebug/scalar\n" << cpu << "\t1\t1\t0.5\n";  // another build; no build kind
+  }
+  log << "Another CPU\t1\t1\t0\t" << kind << "\n" << cpu << "\t2\t1\t0\t" << kind << "\n";
+  log << cpu << "\t1\tnot-a-number\t0\t" << kind << "\n" << cpu << "\t1";
   log.close();
   const auto m = measuredSpeed(config_);
   ASSERT_TRUE(m);
   EXPECT_EQ(m->runs, 9u);
   EXPECT_DOUBLE_EQ(m->nsPerParticleStep, 80.0);
   EXPECT_EQ(speedBasis(config_).ns, 80.0);
-  EXPECT_NE(speedBasis(config_).source.find("last 9 one-thread runs"), std::string::npos);
+  EXPECT_NE(speedBasis(config_).source.find("last 9 one-thread runs of a " + kind + " build"), std::string::npos)
+      << speedBasis(config_).source;
+}
+
+TEST_F(SpeedRecordTest, TheBuildKindNamesTheBuildTypeAndTheKernels) {
+  const std::string kind = speedBuildKind("avx2");
+  EXPECT_GT(kind.find('/'), 0u) << kind;  // the build type before it
+  EXPECT_EQ(kind.substr(kind.size() - 5), "/avx2") << kind;
+  EXPECT_NE(kind, speedBuildKind("scalar"));
 }
 
 TEST_F(SpeedRecordTest, ARecordedRunIsReadBack) {
-  recordRunSpeed(config_, 1, 23.5);
-  recordRunSpeed(config_, 2, 15.0);  // two threads: not a one-thread figure
-  recordRunSpeed(config_, 1, 24.5);
+  const std::string simd = simdLevelName(defaultSimdLevel());
+  recordRunSpeed(config_, 1, 23.5, simd);
+  recordRunSpeed(config_, 2, 15.0, simd);      // two threads: not a one-thread figure
+  recordRunSpeed(config_, 1, 5.0, "unknown");  // other kernels than an estimate's run would use
+  recordRunSpeed(config_, 1, 24.5, simd);
   const auto m = measuredSpeed(config_);
   ASSERT_TRUE(m);
   EXPECT_EQ(m->runs, 2u);
