@@ -47,7 +47,7 @@ PAPER_T_RISING = {"disk": "2.5-3.0", "square": "3.0-4.0", "rect_narrow": "3.0-4.
 
 # Keys added after some of the committed cases were run, with the value every earlier run had.
 LATER_KEYS = {"intruder.surface": "smooth", "intruder.mass_rule": "disk_area", "bed.pour": "lattice",
-              "bed.cavity": "poured", "bed.relax_damping": 0.0}
+              "bed.cavity": "poured", "bed.relax_damping": 0.0, "drive.form": "displacement"}
 
 
 class Case:
@@ -430,6 +430,18 @@ TABLES = [
     shape_by_period("depth_t1000_window100", ["results/paper_depth/table1_t1000"], {}, True, value=chord(10, 100)),
     shape_by_period("depth_t1000_window1000", ["results/paper_depth/table1_t1000"], {}, True),
     shape_by_period("depth_t1000_settled", ["results/paper_depth/table1_t1000"], {}, True, value="vy_settled"),
+    # The drive's two readings (issue 28): the committed displacement cases (figure 5 at A = 3,
+    # Table 1 at A = 5; bed 1, t = 100) beside the same cases driven as a velocity
+    {"name": "depth_drive_form_A3", "kind": pivot, "sources": ["results/paper_depth/fig5", "results/paper_depth/velocity"],
+     "where": {"drive.amplitude": 3.0, "box.seed": 1.0}, "row": lambda c: (c.get("intruder.shape"), c.get("drive.form")),
+     "rows": [(s, f) for s in SHAPES for f in ("displacement", "velocity")], "col": "drive.period",
+     "cols": [0.5, 1.0, 2.0], "row_head": ["A = 3", "drive read as"], "row_label": lambda r: r,
+     "col_label": lambda t: f"T = {t:g}"},
+    {"name": "depth_drive_form_A5", "kind": pivot, "sources": ["results/paper_depth/table1", "results/paper_depth/velocity"],
+     "where": {"drive.amplitude": 5.0, "box.seed": 1.0}, "row": lambda c: (c.get("intruder.shape"), c.get("drive.form")),
+     "rows": [(s, f) for s in ("disk", "square") for f in ("displacement", "velocity")], "col": "drive.period",
+     "cols": [2.5, 3.0, 4.0], "row_head": ["A = 5", "drive read as"], "row_label": lambda r: r,
+     "col_label": lambda t: f"T = {t:g}"},
     # ---- docs/PERFORMANCE.md
     {"name": "perf_bed_protocols", "kind": pivot,
      "sources": ["results/paper_depth/box", "results/paper_depth/seeds", "results/paper_depth/table1",
