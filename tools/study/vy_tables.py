@@ -442,6 +442,13 @@ TABLES = [
      "rows": [(s, f) for s in ("disk", "square") for f in ("displacement", "velocity")], "col": "drive.period",
      "cols": [2.5, 3.0, 4.0], "row_head": ["A = 5", "drive read as"], "row_label": lambda r: r,
      "col_label": lambda t: f"T = {t:g}"},
+    # Table 1's crossings by the paper's window on two beds (bed 2: paper_depth_t1000_bed2.toml)
+    {"name": "depth_t1000_beds", "kind": pivot,
+     "sources": ["results/paper_depth/table1_t1000", "results/paper_depth/table1_t1000_bed2"],
+     "row": lambda c: (c.get("intruder.shape"), c.get("drive.period")), "col": "box.seed",
+     "rows": [(s, t) for s in SHAPES[:4] for t in (2.5, 3.0)], "cols": [1.0, 2.0],
+     "all": True, "row_head": ["shape", "T"], "row_label": lambda r: (r[0], f"{r[1]:g}"),
+     "col_label": lambda s: f"bed {s:g}, t = 100-1000"},
     # ---- docs/PERFORMANCE.md
     {"name": "perf_bed_protocols", "kind": pivot,
      "sources": ["results/paper_depth/box", "results/paper_depth/seeds", "results/paper_depth/table1",
