@@ -3,8 +3,9 @@
 // `boundary --dry-run`, a sweep's ETA before its first case ends): every finished run appends one
 // line to speed.log in the bed cache directory, and an estimate takes the median of the last runs
 // on the same CPU model at one thread by the same kind of build (speedBuildKind: a debug or
-// sanitized build, or the scalar kernels, run several times slower than a release build). Those runs' speed includes whatever else the machine was
-// doing then: the estimate is "as this machine has been running", not a quiet machine's figure.
+// sanitized build, or the scalar kernels, run several times slower than a release build). Those
+// runs' speed includes whatever else the machine was doing then: the estimate is "as this machine
+// has been running", not a quiet machine's figure.
 #include <optional>
 #include <string>
 #include <vector>
