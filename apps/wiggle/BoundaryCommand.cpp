@@ -4,11 +4,13 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <optional>
 
 #include "Arguments.h"
 #include "Commands.h"
 #include "PathChecks.h"
 #include "core/Error.h"
+#include "core/Format.h"
 #include "io/Config.h"
 #include "physics/ForceKernels.h"
 #include "sweep/BoundaryStudy.h"
@@ -25,7 +27,8 @@ struct BoundaryArgs {
   std::string range, beds = "2:4", over, rate = "paper";
   std::string out;
   int points = 5;
-  double resolution = 0.0, scatter = 0.0;
+  std::optional<double> resolution;  // none: not given (required)
+  double scatter = 0.0;
   int jobs = 0, threads = 0;
   bool dryRun = false;
 };
@@ -53,11 +56,13 @@ BoundarySpec specOf(const BoundaryArgs& a) {
   spec.options.lo = parseNumber(lo, "--range");
   spec.options.hi = parseNumber(hi, "--range");
   spec.options.points = a.points;
-  if (!(a.resolution > 0)) throw Error("--resolution R is required (the step of the values searched: LO + k R)");
-  spec.options.resolution = a.resolution;
+  if (!a.resolution) throw Error("--resolution R is required (the step of the values searched: LO + k R)");
+  if (!(*a.resolution > 0)) throw Error("--resolution " + formatNumber(*a.resolution) + ": must be positive");
+  spec.options.resolution = *a.resolution;
   const auto [bedMin, bedMax] = pairOf(a.beds, ':', "--beds", "MIN:MAX");
   spec.options.minBeds = parseCount(bedMin, "--beds");
   spec.options.maxBeds = parseCount(bedMax, "--beds");
+  if (!(a.scatter >= 0)) throw Error("--scatter " + formatNumber(a.scatter) + ": must be zero or positive");
   spec.options.knownScatter = a.scatter;
   if (!a.over.empty()) {
     const auto [key, values] = pairOf(a.over, '=', "--over", "KEY=V1,V2,...");
@@ -88,16 +93,14 @@ void addBoundaryCommand(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::Range(2, 1000));
   cmd->add_option("--resolution", args->resolution,
-                  "The step of the values searched, LO + k R (required): a change of sign is bracketed to it")
-      ->check(CLI::PositiveNumber);
+                  "The step of the values searched, LO + k R (required): a change of sign is bracketed to it");
   cmd->add_option("--beds", args->beds,
                   "MIN:MAX beds (box.seed = the config's seed, +1, ...) per value: at least MIN, more until the sign "
                   "of the mean is decided, at most MAX (then the value is neutral)")
       ->capture_default_str();
   cmd->add_option("--scatter", args->scatter,
                   "One bed's standard deviation of V_y when it is known (then 1.96 standard errors decide; default: "
-                  "Student's t with the beds' own scatter)")
-      ->check(CLI::NonNegativeNumber);
+                  "Student's t with the beds' own scatter)");
   cmd->add_option("--over", args->over, "KEY=V1,V2,...: one search per value of a second key (a rise/sink map)");
   cmd->add_option("--rate", args->rate,
                   "Which V_y decides: paper (summary.json vy) or settled (vy_settled, the paper's t_f rule)")
@@ -119,6 +122,7 @@ void addBoundaryCommand(CLI::App& app) {
     defaultSimdLevel();  // a bad WIGGLE_SIMD is bad input before anything is written
     if (!args->config.empty()) requireInputFile(args->config, "config file");
     const BoundarySpec spec = specOf(*args);
+    requireOutputDirectory("--out", args->out);  // a dry run checks it too; none given is checked below
     if (args->dryRun) {
       if (MpiQueue::launcherRank() == 0) std::fputs(boundaryPlanListing(spec).c_str(), stdout);  // one, under mpirun
       return;
