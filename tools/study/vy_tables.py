@@ -449,6 +449,16 @@ TABLES = [
      "rows": [(s, t) for s in SHAPES[:4] for t in (2.5, 3.0)], "cols": [1.0, 2.0],
      "all": True, "row_head": ["shape", "T"], "row_label": lambda r: (r[0], f"{r[1]:g}"),
      "col_label": lambda s: f"bed {s:g}, t = 100-1000"},
+    # Figure 2 by the paper's clock (paper_depth_fig2_t1000.toml): each case's rate by the three clocks
+    # and how far it moved
+    {"name": "depth_fig2_t1000", "kind": listing, "sources": ["results/paper_depth/fig2_t1000"],
+     "sort": lambda c: (SHAPES.index(c.get("intruder.shape")), c.get("drive.period")),
+     "columns": [("shape", column("intruder.shape", str)), ("T", column("drive.period")),
+                 ("V_y, t = 10-100", lambda c: fmt(3)(chord(10, 100)(c))),
+                 ("V_y, t = 100-1000", column("vy", fmt(3))), ("V_y, t_f rule", column("vy_settled", fmt(3))),
+                 ("settled at", lambda c: f"t = {c.get('t_settled'):g}" if c.get("t_settled") < 1000 else "not settled"),
+                 ("y(100) - y(0)", lambda c: f"{y_at(c, 100) - y_at(c, 0):+.1f}"),
+                 ("y(1000) - y(0)", lambda c: f"{y_at(c, 1000) - y_at(c, 0):+.1f}")]},
     # ---- docs/PERFORMANCE.md
     {"name": "perf_bed_protocols", "kind": pivot,
      "sources": ["results/paper_depth/box", "results/paper_depth/seeds", "results/paper_depth/table1",
