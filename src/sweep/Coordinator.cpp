@@ -16,6 +16,7 @@
 #include "core/StopSignal.h"
 #include "io/AtomicFile.h"
 #include "io/FileLock.h"
+#include "scenario/RunProgress.h"
 #include "sweep/ResultsTable.h"
 #include "sweep/SweepStart.h"
 #include "sweep/TaskRunner.h"
@@ -406,6 +407,18 @@ class Coordinator {
     return work > 0.0 ? 1e9 * wall / work : plan_.speed.ns;
   }
 
+  // A running case's wall seconds left: its own estimate (progress.json, from the pace of its
+  // own steps) once it has one; before that, or from a wiggle that writes none, the cost estimate
+  // less the time it has run (which reaches 0 and stays there when the case is slower than the
+  // estimate: a resumed case, a busy machine).
+  double runningCaseSecondsLeft(std::size_t c, double ns) const {
+    const std::optional<RunProgress> progress = readRunProgress(plan_.cases[c].dir);
+    if (progress && progress->etaSeconds >= 0.0) return progress->etaSeconds;
+    const auto it = running_.find(SweepTask{SweepTask::Kind::Case, c}.encode());
+    const double elapsed = it == running_.end() ? 0.0 : monotonicSeconds() - it->second;
+    return std::max(0.0, estimatedRunSeconds(plan_.spec.cases[c].config, ns) - elapsed);
+  }
+
   std::string statusLine() const {
     const double ns = nsPerParticleStep();
     double remaining = 0.0;  // wall seconds of work left, summed over tasks
@@ -417,9 +430,7 @@ class Coordinator {
         remaining += estimatedRunSeconds(config, ns);
       } else if (results_[c].status == "running") {
         ++running;
-        const auto it = running_.find(SweepTask{SweepTask::Kind::Case, c}.encode());
-        const double elapsed = it == running_.end() ? 0.0 : monotonicSeconds() - it->second;
-        remaining += std::max(0.0, estimatedRunSeconds(config, ns) - elapsed);
+        remaining += runningCaseSecondsLeft(c, ns);
       }
     }
     for (std::size_t b = 0; b < plan_.beds.size(); ++b) {
