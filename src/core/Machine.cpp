@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <ctime>
 #include <thread>
 
 namespace wiggle {
@@ -13,6 +14,13 @@ int availableCores() {
   cpu_set_t set;
   if (::sched_getaffinity(0, sizeof set, &set) == 0) return std::max(1, CPU_COUNT(&set));
   return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+}
+
+double processCpuSeconds() {
+  timespec t{};
+  return ::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t) == 0
+             ? static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec)
+             : 0.0;
 }
 
 double loadAverage() {

@@ -6,6 +6,10 @@ namespace wiggle {
 // Cores this process may run on (its CPU affinity), at least 1.
 int availableCores();
 
+// CPU time this process has used so far, all its threads together, in seconds (0 if unknown). A
+// run's CPU time per step is its speed on a core of its own, whatever share of the cores it got.
+double processCpuSeconds();
+
 // The 1-minute load average (runnable processes, ours included once they run), 0 if unknown.
 double loadAverage();
 

@@ -17,6 +17,7 @@
 #include "core/Console.h"
 #include "core/Error.h"
 #include "core/Format.h"
+#include "core/Machine.h"
 #include "core/StopSignal.h"
 #include "core/Version.h"
 #include "io/AtomicFile.h"
@@ -258,6 +259,12 @@ RunSummary summarise(const Case& run, const std::string& dir, const World& world
   return summary;
 }
 
+// What this process's stepping cost (a resumed run's earlier stretches not counted).
+struct SteppingCost {
+  double cpuSeconds = 0.0;  // CPU time of every thread
+  std::uint64_t steps = 0;
+};
+
 // Steps `world` to the end of the run, feeding the observers, with the progress line, periodic
 // checkpoints and the stop on a signal (a checkpoint, then an Error saying how to continue).
 // Returns false when options.stopAfterSteps stopped it first.
@@ -318,8 +325,9 @@ bool stepToTheEnd(const Case& run, const RunOptions& options, const std::string&
 }
 
 // The finished run's files: trajectory, phase rates, fields, model and the summary, written last.
+// `stepping` is this process's share of the stepping, for the speed log.
 RunOutcome writeRunOutputs(const Case& run, const std::string& dir, const World& world, const RunState& state,
-                        const FieldObserver& fields, LogFile& log) {
+                           const FieldObserver& fields, const SteppingCost& stepping, LogFile& log) {
   const RunConfig& config = run.config;
   const SettleRule rule;
   const auto [rate, settled] = measureRunRates(run, state.samples, paperWindow(config.run.duration), rule);
@@ -336,10 +344,13 @@ RunOutcome writeRunOutputs(const Case& run, const std::string& dir, const World&
   const double averagedFrom = static_cast<double>(world.stepCount() - accumulated) * config.run.dt;
   const RunSummary summary = summarise(run, dir, world, state, fields, rate, settled, rule, averagedFrom);
   writeFileAtomically(dir + "/summary.json", toJson(summary).dump(2) + "\n");
-  // For the cost estimates (scenario/SpeedRecord.h); runs under 10^4 steps say more about start-up
-  // than about the step.
-  if (summary.steps >= 10000)
-    recordRunSpeed(config, static_cast<int>(summary.threads), summary.nsPerParticleStep, summary.simd);
+  // For the cost estimates (scenario/SpeedRecord.h); stretches under 10^4 steps say more about
+  // start-up than about the step.
+  if (stepping.steps >= 10000)
+    recordRunSpeed(
+        config, static_cast<int>(summary.threads), summary.nsPerParticleStep,
+        1e9 * stepping.cpuSeconds / (static_cast<double>(summary.particles) * static_cast<double>(stepping.steps)),
+        summary.simd);
   log.line("done: vy = " + formatNumber(rate.vy) + ", slope = " + formatNumber(rate.slope) +
            ", vy_settled = " + formatNumber(settled.vy) + " (t_settled = " + formatNumber(settled.tSettled) + "), " +
            formatNumber(summary.nsPerParticleStep) + " ns/particle-step, state " + world.stateHash());
@@ -461,6 +472,9 @@ RunOutcome runExperiment(const Case& run, const RunOptions& options) {
   }
 
   bool finished = false;
+  SteppingCost stepping;
+  const double cpuAtStart = processCpuSeconds();
+  const std::uint64_t stepAtStart = world.stepCount();
   try {
     finished = stepToTheEnd(run, options, configToml, world, state, fields, observers, progress, progressFile, log);
   } catch (...) {
@@ -468,6 +482,8 @@ RunOutcome runExperiment(const Case& run, const RunOptions& options) {
     throw;
   }
   progress.clear();
+  stepping.cpuSeconds = processCpuSeconds() - cpuAtStart;
+  stepping.steps = world.stepCount() - stepAtStart;
   if (!finished) {
     RunOutcome stopped;
     stopped.status = "stopped";
@@ -476,7 +492,7 @@ RunOutcome runExperiment(const Case& run, const RunOptions& options) {
   writeCheckpoint(dir, configToml, world, state, fields);
   stopOnSignal.reset();
   progressFile.stage("writing its results", 1.0, world.time());
-  RunOutcome outcome = writeRunOutputs(run, dir, world, state, fields, log);
+  RunOutcome outcome = writeRunOutputs(run, dir, world, state, fields, stepping, log);
   progressFile.stage("finished", 1.0, world.time());
   return outcome;
 }

@@ -57,10 +57,12 @@ std::string cpuModel() {
   return "";
 }
 
-void recordRunSpeed(const RunConfig& config, int threads, double nsPerParticleStep, const std::string& simd) {
-  if (!(nsPerParticleStep > 0)) return;
-  const std::string line = cpuModel() + "\t" + std::to_string(threads) + "\t" + formatNumber(nsPerParticleStep, 6) +
-                           "\t" + formatNumber(loadAverage(), 3) + "\t" + speedBuildKind(simd) + "\n";
+void recordRunSpeed(const RunConfig& config, int threads, double wallNsPerParticleStep, double cpuNsPerParticleStep,
+                    const std::string& simd) {
+  if (!(wallNsPerParticleStep > 0) || !(cpuNsPerParticleStep > 0)) return;
+  const std::string line = cpuModel() + "\t" + std::to_string(threads) + "\t" + formatNumber(wallNsPerParticleStep, 6) +
+                           "\t" + formatNumber(loadAverage(), 3) + "\t" + speedBuildKind(simd) + "\t" +
+                           formatNumber(cpuNsPerParticleStep, 6) + "\n";
   std::error_code ec;
   std::filesystem::create_directories(bedCacheDir(config), ec);
   // O_APPEND and one write(): concurrent runs' lines do not interleave.
@@ -78,13 +80,14 @@ std::optional<MeasuredSpeed> measuredSpeed(const RunConfig& config) {
   std::vector<double> speeds;
   for (std::string line; std::getline(in, line);) {
     std::istringstream fields(line);
-    std::string model, threads, ns, load, build;
-    if (!std::getline(fields, model, '\t') || !std::getline(fields, threads, '\t') || !std::getline(fields, ns, '\t') ||
-        !std::getline(fields, load, '\t') || !std::getline(fields, build))
+    std::string model, threads, wallNs, load, build, cpuNs;
+    if (!std::getline(fields, model, '\t') || !std::getline(fields, threads, '\t') ||
+        !std::getline(fields, wallNs, '\t') || !std::getline(fields, load, '\t') || !std::getline(fields, build, '\t'))
       continue;  // a line cut short (a full disk), written before the build kind was, or foreign: skipped
     if (model != cpu || threads != "1" || build != kind) continue;
+    std::getline(fields, cpuNs);  // absent from lines written before it was recorded
     try {
-      const double v = std::stod(ns);
+      const double v = std::stod(cpuNs.empty() ? wallNs : cpuNs);
       if (v > 0 && v < 1e6) speeds.push_back(v);
     } catch (const std::exception&) {
     }

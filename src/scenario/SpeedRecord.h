@@ -3,9 +3,12 @@
 // `boundary --dry-run`, a sweep's ETA before its first case ends): every finished run appends one
 // line to speed.log in the bed cache directory, and an estimate takes the median of the last runs
 // on the same CPU model at one thread by the same kind of build (speedBuildKind: a debug or
-// sanitized build, or the scalar kernels, run several times slower than a release build). Those
-// runs' speed includes whatever else the machine was doing then: the estimate is "as this machine
-// has been running", not a quiet machine's figure.
+// sanitized build, or the scalar kernels, run several times slower than a release build). The
+// figure an estimate takes is the run's CPU time per particle-step: what a step costs on a core the
+// run has to itself, as this machine's cores run beside whatever else they run (a second study
+// sharing the caches and memory adds 10-20 %), but not stretched by the share of a core the run
+// was given: a run at a low priority beside two others took 4-10 x its CPU time in wall time, and
+// wall time per particle-step made every estimate after it that much too long.
 #include <optional>
 #include <string>
 #include <vector>
@@ -24,10 +27,12 @@ std::string speedBuildKind(const std::string& simd);
 // The build kind of a run started now: this build, with the kernels it would choose (defaultSimdLevel).
 std::string speedBuildKind();
 
-// Appends "<cpu model>\t<threads>\t<ns per particle-step>\t<load average>\t<build kind>" to
-// <cache dir>/speed.log as one write (whole lines even when runs end together). Never throws: a
-// run's result does not depend on its speed being recorded.
-void recordRunSpeed(const RunConfig& config, int threads, double nsPerParticleStep, const std::string& simd);
+// Appends "<cpu model>\t<threads>\t<wall ns per particle-step>\t<load average>\t<build kind>\t<CPU
+// ns per particle-step>" to <cache dir>/speed.log as one write (whole lines even when runs end
+// together). The CPU figure counts every thread's CPU time. Never throws: a run's result does not
+// depend on its speed being recorded.
+void recordRunSpeed(const RunConfig& config, int threads, double wallNsPerParticleStep, double cpuNsPerParticleStep,
+                    const std::string& simd);
 
 struct MeasuredSpeed {
   double nsPerParticleStep = 0.0;  // the median
@@ -36,10 +41,11 @@ struct MeasuredSpeed {
   std::string buildKind;           // the build kind it is for (speedBuildKind)
 };
 
-// The median ns per particle-step of the last (up to) 9 one-thread runs on this CPU model by this
-// build kind, with the force kernels a run would use now (defaultSimdLevel), in the cache
+// The median CPU ns per particle-step of the last (up to) 9 one-thread runs on this CPU model by
+// this build kind, with the force kernels a run would use now (defaultSimdLevel), in the cache
 // directory's speed.log; nothing when there are none. Lines without a build kind (written before
-// it was recorded) are not counted: which build ran them is not known.
+// it was recorded) are not counted: which build ran them is not known. Lines without the CPU figure
+// (written before it was recorded) count with their wall figure.
 std::optional<MeasuredSpeed> measuredSpeed(const RunConfig& config);
 
 }  // namespace wiggle

@@ -3,13 +3,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <csignal>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <random>
 #include <sstream>
-#include <nlohmann/json.hpp>
+#include <vector>
 
 #include "analysis/LammpsDump.h"
 #include "core/Error.h"
@@ -164,6 +165,35 @@ TEST(Experiment, ThreadCountDoesNotChangeTheResult) {
   const RunOutcome b = runExperiment(prepareCase(config), three);
   EXPECT_EQ(a.stateHash, b.stateHash);
   EXPECT_EQ(readFile(one.outDir + "/fields.csv"), readFile(three.outDir + "/fields.csv"));
+}
+
+// A run of 10^4 steps or more leaves its speed for the cost estimates (scenario/SpeedRecord.h): one
+// line in its bed cache's speed.log with the wall figure of its summary and its CPU figure, which is
+// what the estimates take. One thread's CPU time cannot exceed its wall time.
+TEST(Experiment, ARunRecordsItsWallAndCpuSpeedForTheEstimates) {
+  const std::string root = scratch("speed");
+  fs::remove_all(root);
+  RunConfig config = tinyConfig(root);
+  config.run.duration = 1.2;  // 12,000 steps
+  RunOptions options = quiet(root + "/run");
+  options.threads = 1;
+  ASSERT_EQ(runExperiment(prepareCase(config), options).status, "ok");
+  const nlohmann::json summary = nlohmann::json::parse(readFile(options.outDir + "/summary.json"));
+  std::ifstream log(config.bed.cacheDir + "/speed.log");
+  std::vector<std::vector<std::string>> lines;
+  for (std::string line; std::getline(log, line);) {
+    std::vector<std::string> fields;
+    std::istringstream in(line);
+    for (std::string f; std::getline(in, f, '\t');) fields.push_back(f);
+    lines.push_back(fields);
+  }
+  ASSERT_EQ(lines.size(), 1u);
+  ASSERT_EQ(lines[0].size(), 6u);
+  EXPECT_EQ(lines[0][1], "1");
+  const double wall = std::stod(lines[0][2]), cpu = std::stod(lines[0][5]);
+  EXPECT_NEAR(wall, summary.at("ns_per_particle_step").get<double>(), 1e-5 * wall);
+  EXPECT_GT(cpu, 0.0);
+  EXPECT_LE(cpu, 1.02 * wall);
 }
 
 TEST(Experiment, RefusesToOverwriteARunAndKeepsItsFiles) {

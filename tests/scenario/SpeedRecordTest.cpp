@@ -43,8 +43,13 @@ TEST_F(SpeedRecordTest, TheMedianOfTheLastNineOneThreadRunsOnThisCpuByThisBuild)
   std::ofstream log(dir_ + "/speed.log");
   const std::string cpu = cpuModel();
   const std::string kind = speedBuildKind();
-  for (int k = 1; k <= 12; ++k) {  // 10 ... 120: the last 9 are 40 ... 120; the lines between are not counted
-    log << cpu << "\t1\t" << 10 * k << "\t0.5\t" << kind << "\n";
+  // 10 ... 120, by the CPU figure where a line has one (the even k) and else by the wall figure: the
+  // last 9 are 40 ... 120; the lines between are not counted.
+  for (int k = 1; k <= 12; ++k) {
+    if (k % 2)
+      log << cpu << "\t1\t" << 10 * k << "\t0.5\t" << kind << "\n";
+    else
+      log << cpu << "\t1\t" << 1000 * k << "\t3.5\t" << kind << "\t" << 10 * k << "\n";
     log << cpu << "\t1\t1\t0.5\tDebug/scalar\n" << cpu << "\t1\t1\t0.5\n";  // another build; no build kind
   }
   log << "Another CPU\t1\t1\t0\t" << kind << "\n" << cpu << "\t2\t1\t0\t" << kind << "\n";
@@ -66,12 +71,12 @@ TEST_F(SpeedRecordTest, TheBuildKindNamesTheBuildTypeAndTheKernels) {
   EXPECT_NE(kind, speedBuildKind("scalar"));
 }
 
-TEST_F(SpeedRecordTest, ARecordedRunIsReadBack) {
+TEST_F(SpeedRecordTest, ARecordedRunIsReadBackByItsCpuFigure) {
   const std::string simd = simdLevelName(defaultSimdLevel());
-  recordRunSpeed(config_, 1, 23.5, simd);
-  recordRunSpeed(config_, 2, 15.0, simd);      // two threads: not a one-thread figure
-  recordRunSpeed(config_, 1, 5.0, "unknown");  // other kernels than an estimate's run would use
-  recordRunSpeed(config_, 1, 24.5, simd);
+  recordRunSpeed(config_, 1, 94.0, 23.5, simd);     // a quarter of a core: its wall figure is not its speed
+  recordRunSpeed(config_, 2, 15.0, 29.0, simd);     // two threads: not a one-thread figure
+  recordRunSpeed(config_, 1, 5.0, 5.0, "unknown");  // other kernels than an estimate's run would use
+  recordRunSpeed(config_, 1, 24.5, 24.5, simd);
   const auto m = measuredSpeed(config_);
   ASSERT_TRUE(m);
   EXPECT_EQ(m->runs, 2u);
