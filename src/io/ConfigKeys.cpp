@@ -198,7 +198,7 @@ const std::vector<KeyInfo>& keyTable() {
       shapesBed(number("run.dt", [](C& c) -> double& { return c.run.dt; }, above(0), noBound, "sqrt(d/g)",
                        "time step")),
       number("run.duration", [](C& c) -> double& { return c.run.duration; }, above(0), noBound,
-             "sqrt(d/g)", "simulated time t_total of the run; >= run.dt"),
+             "sqrt(d/g)", "simulated time t_total of the run; >= run.dt and >= 2 x run.sample_interval"),
       number("run.sample_interval", [](C& c) -> double& { return c.run.sampleInterval; }, above(0),
              noBound, "sqrt(d/g)", "trajectory sampling interval; a whole number of run.dt steps"),
       number("run.checkpoint_interval", [](C& c) -> double& { return c.run.checkpointInterval; },

@@ -148,6 +148,11 @@ void checkSchedule(const RunConfig& c) {
   }
   requireWholeSteps("run.duration", c.run.duration, c.run.dt, "a whole number of");
   requireWholeSteps("run.sample_interval", c.run.sampleInterval, c.run.dt, "a whole number of");
+  // The rise rate needs three samples (t = 0 and two more); refused here, not after the run.
+  if (c.run.duration < 2.0 * c.run.sampleInterval * (1.0 - 1e-12)) {
+    throw Error("run.duration = " + num(c.run.duration) + ": shorter than two run.sample_interval (" +
+                num(c.run.sampleInterval) + "), too few trajectory samples to measure a rise rate");
+  }
   if (c.run.dumpInterval > 0) requireWholeSteps("run.dump_interval", c.run.dumpInterval, c.run.dt, "0 or a whole number of");
 }
 

@@ -83,7 +83,7 @@ class Cli : public ::testing::Test {
                            "[-1.5, 1.5]]\ny0 = 6.0\n"
                         << "[drive]\namplitude = 0.5\nperiod = 1.0\n"
                         << "[bed]\nrest_energy = 1e-4\nmax_time = 100.0\n"
-                        << "[run]\ndt = 0.0001\nduration = 0.01\nsample_interval = 0.01\ndump_interval = 0.0\n"
+                        << "[run]\ndt = 0.0001\nduration = 0.01\nsample_interval = 0.005\ndump_interval = 0.0\n"
                         << "plot = false\n[fields]\nenabled = false\n";
     return path.string();
   }

@@ -215,7 +215,8 @@ TEST(Config, AwkwardValuesRoundTripBitForBit) {
   c.drive.period = 0.3;  // 0.3 / 1e-4 = 2999.9999999999995: a whole number within round-off
   c.bed.cacheDir = "dir with \"quotes\", back\\slash, tab\t and \xc3\xa9";
   c.run.dumpInterval = 0.0;
-  c.run.duration = 1e-4;
+  c.run.duration = 2e-4;
+  c.run.sampleInterval = 1e-4;
   c.fields.phases = {0.1, 19.999999999999996, 0.0};
   c.engine.sortInterval = 1;
   ASSERT_NO_THROW(validateRunConfig(c));
@@ -330,6 +331,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"[drive]\nperiod = 0.00005\n", "drive.period = 0.00005: must be a whole number of run.dt steps"},
         BadCase{"[run]\ndt = 0\n", "run.dt = 0: must be > 0"},
         BadCase{"[run]\nduration = 0.00005\n", "run.duration = 0.00005: must be >= run.dt (0.0001)"},
+        BadCase{"[run]\nduration = 0.05\n",
+                "run.duration = 0.05: shorter than two run.sample_interval (0.05), too few trajectory samples to "
+                "measure a rise rate"},
         BadCase{"[run]\nduration = -1\n", "run.duration = -1: must be > 0"},
         BadCase{"[run]\nsample_interval = 0.00015\n", "run.sample_interval = 0.00015: must be a whole number of run.dt steps"},
         BadCase{"[run]\nduration = 0.50005\n", "run.duration = 0.50005: must be a whole number of run.dt steps"},
@@ -362,7 +366,8 @@ TEST(Config, BoundaryValuesThatAreAllowed) {
   EXPECT_NO_THROW(parseRunConfig("[contact]\nmu = 0\ngamma_n = 0\ngamma_t = 0\n", "c.toml"));
   EXPECT_NO_THROW(parseRunConfig("[fields]\nphases = [0, 19.99]\n", "c.toml"));
   EXPECT_NO_THROW(parseRunConfig("[fields]\nphases = []\n", "c.toml"));
-  EXPECT_NO_THROW(parseRunConfig("[run]\nduration = 0.0001\ndump_interval = 0\n", "c.toml"));
+  EXPECT_NO_THROW(parseRunConfig("[run]\nduration = 0.0002\nsample_interval = 0.0001\ndump_interval = 0\n", "c.toml"));
+  EXPECT_NO_THROW(parseRunConfig("[run]\nduration = 0.1\n", "c.toml"));  // t = 0, 0.05, 0.1: three samples
   EXPECT_NO_THROW(parseRunConfig("[grains]\nd_min = 1\nd_max = 1\n", "c.toml"));
   // Whole numbers of steps up to round-off: 0.3 / 1e-4 and 0.07 / 1e-4 are not exact in binary.
   EXPECT_NO_THROW(parseRunConfig("[drive]\nperiod = 0.3\n[run]\nsample_interval = 0.07\n", "c.toml"));
