@@ -247,6 +247,27 @@ def pivot(spec):
     return lines, spec["sources"]
 
 
+def paired_steps(spec):
+    """Rows x steps of spec["key"] (from one value to the next): each cell the change of V_y on each
+    bed run at both values (a paired difference: the same bed, so the bed's own scatter cancels),
+    their mean +- standard error over the beds that have both."""
+    cases = select(spec["sources"], spec.get("where", {}))
+    grid = {}
+    for c in cases:
+        grid.setdefault(key_of(c, spec["row"]), {}).setdefault(c.get(spec["key"]), []).append(c)
+    steps = list(zip(spec["values"], spec["values"][1:]))
+    head = spec["row_head"] + [f"{spec['label']} {a:g} -> {b:g}" for a, b in steps]
+    lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
+    for r in spec["rows"]:
+        by_value = {v: {c.get("box.seed"): float(c.get("vy")) for c in beds(cs, f"{spec['name']}: {r} {v}")}
+                    for v, cs in grid.get(r, {}).items()}
+        row = list(spec["row_label"](r))
+        for a, b in steps:
+            both = sorted(set(by_value.get(a, {})) & set(by_value.get(b, {})))
+            row.append(cell_text([by_value[b][s] - by_value[a][s] for s in both], each=True))
+        lines.append("| " + " | ".join(row) + " |")
+    return lines, spec["sources"]
+
 def listing(spec):
     """One row per case: spec["columns"] = [(header, function(case) -> text)]."""
     cases = select(spec["sources"], spec.get("where", {}))
@@ -328,6 +349,9 @@ def protocol(c):
 
 # Table 1 by the paper's clock: bed 1 (paper_depth_t1000.toml) and the second beds (paper_depth_t1000_bed2.toml)
 T1000_BEDS = ["results/paper_depth/table1_t1000", "results/paper_depth/table1_t1000_bed2"]
+DEPTH_FRICTION = ["results/paper_depth/friction"]
+FRICTION_MUS = [0.0, 0.1, 0.3, 0.5]
+FRICTION_ROWS = [(shape, t) for shape in ("disk", "square") for t in (3.0, 5.0)]
 
 TABLES = [
     # ---- docs/VALIDATION.md, the small preset (60 d wide, intruder 25 d deep)
@@ -452,6 +476,16 @@ TABLES = [
      "rows": [(s, t) for s in SHAPES[:4] for t in (2.5, 3.0)], "cols": [1.0, 2.0],
      "all": True, "row_head": ["shape", "T"], "row_label": lambda r: (r[0], f"{r[1]:g}"),
      "col_label": lambda s: f"bed {s:g}, t = 100-1000"},
+    # Figure 6 at the paper's depth (paper_depth_friction.toml): the disk and the square at A = 3, each bed
+    # poured at mu = 0.1 and run at four mu; the rates, then their changes bed by bed (paired)
+    {"name": "depth_friction", "kind": pivot, "sources": DEPTH_FRICTION,
+     "row": lambda c: (c.get("intruder.shape"), c.get("drive.period")), "col": "contact.mu",
+     "rows": FRICTION_ROWS, "cols": FRICTION_MUS, "each": True, "row_head": ["A = 3", "T"],
+     "row_label": lambda r: (r[0], f"{r[1]:g}"), "col_label": lambda m: f"mu = {m:g}"},
+    {"name": "depth_friction_steps", "kind": paired_steps, "sources": DEPTH_FRICTION,
+     "row": lambda c: (c.get("intruder.shape"), c.get("drive.period")), "key": "contact.mu", "label": "mu",
+     "values": FRICTION_MUS, "rows": FRICTION_ROWS, "row_head": ["A = 3", "T"],
+     "row_label": lambda r: (r[0], f"{r[1]:g}")},
     # Figure 2 by the paper's clock (paper_depth_fig2_t1000.toml): each case's rate by the three clocks
     # and how far it moved
     {"name": "depth_fig2_t1000", "kind": listing, "sources": ["results/paper_depth/fig2_t1000"],
@@ -720,6 +754,9 @@ def paper_findings():
             "paper's clock": (clock, sinks(CLOCK_A5, "A = 5", "triangle") + sinks(CLOCK_A3, "A = 3", "triangle")),
             "small preset": (small, sinks(SMALL_SESSION2, "A = 3 (session 2)", "triangle"))}),
         (6, "more friction, faster rise", {
+            "paper's depth": (depth, [step for shape, t in FRICTION_ROWS
+                                      for step in friction(DEPTH_FRICTION, f"{shape}, A = 3, T = {t:g}", shape,
+                                                           drive__period=t)]),
             "small preset": (small, friction(SMALL_FRICTION, "disk, A = 3, T = 5", "disk", drive__amplitude=3.0)
                              + friction(SMALL_FRICTION, "square, A = 3, T = 5", "square"))}),
         (7, "each shape starts rising where the paper's Table 1 says (A = 5)", {
@@ -731,7 +768,7 @@ def paper_findings():
 
 FINDING_SOURCES = DEPTH_A5 + DEPTH_A3 + ["results/paper_depth/box", "results/paper_depth/seeds"] + CLOCK_A5 + CLOCK_A3 \
     + SMALL_POUR \
-    + SMALL_FRICTION + SMALL_SESSION2
+    + DEPTH_FRICTION + SMALL_FRICTION + SMALL_SESSION2
 TABLES += [
     {"name": "findings", "kind": findings_table, "findings": paper_findings, "scales": ["paper's depth", "paper's clock", "small preset"],
      "sources": FINDING_SOURCES},
