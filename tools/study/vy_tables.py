@@ -486,6 +486,14 @@ TABLES = [
      "row": lambda c: (c.get("intruder.shape"), c.get("drive.period")), "key": "contact.mu", "label": "mu",
      "values": FRICTION_MUS, "rows": FRICTION_ROWS, "row_head": ["A = 3", "T"],
      "row_label": lambda r: (r[0], f"{r[1]:g}")},
+    # The control (paper_depth_friction_own_beds.toml): bed 1 poured at the case's own mu, beside the pinned bed
+    {"name": "depth_friction_own_beds", "kind": pivot, "sources": DEPTH_FRICTION + ["results/paper_depth/friction_own_beds"],
+     "where": {"box.seed": 1.0, "drive.period": 3.0},
+     "row": lambda c: (c.get("intruder.shape"), c.get("contact.mu")),
+     "col": lambda c: "own" if c.get("bed.mu") < 0 else f"{c.get('bed.mu'):g}",
+     "rows": [(s, m) for s in ("disk", "square") for m in (0.0, 0.5)], "cols": ["0.1", "own"],
+     "row_head": ["A = 3, T = 3, bed 1", "mu"], "row_label": lambda r: (r[0], f"{r[1]:g}"),
+     "col_label": lambda k: "bed poured at mu = 0.1" if k == "0.1" else "bed poured at the case's mu"},
     # Figure 2 by the paper's clock (paper_depth_fig2_t1000.toml): each case's rate by the three clocks
     # and how far it moved
     {"name": "depth_fig2_t1000", "kind": listing, "sources": ["results/paper_depth/fig2_t1000"],
