@@ -268,6 +268,7 @@ def paired_steps(spec):
         lines.append("| " + " | ".join(row) + " |")
     return lines, spec["sources"]
 
+
 def listing(spec):
     """One row per case: spec["columns"] = [(header, function(case) -> text)]."""
     cases = select(spec["sources"], spec.get("where", {}))
@@ -349,6 +350,7 @@ def protocol(c):
 
 # Table 1 by the paper's clock: bed 1 (paper_depth_t1000.toml) and the second beds (paper_depth_t1000_bed2.toml)
 T1000_BEDS = ["results/paper_depth/table1_t1000", "results/paper_depth/table1_t1000_bed2"]
+# Figure 6 at the paper's depth (paper_depth_friction.toml): its cells, shape and period by friction
 DEPTH_FRICTION = ["results/paper_depth/friction"]
 FRICTION_MUS = [0.0, 0.1, 0.3, 0.5]
 FRICTION_ROWS = [(shape, t) for shape in ("disk", "square") for t in (3.0, 5.0)]
