@@ -217,14 +217,19 @@ def select(sources, where):
     return [c for source in sources for c in load(source) if all(key_of(c, k) == v for k, v in where.items())]
 
 
+def grid_of(spec, col):
+    """The finished cases of spec's sources and filter, by spec["row"] and then by col (a key or a function)."""
+    grid = {}
+    for c in select(spec["sources"], spec.get("where", {})):
+        grid.setdefault(key_of(c, spec["row"]), {}).setdefault(key_of(c, col), []).append(c)
+    return grid
+
+
 def pivot(spec):
     """Rows x columns of V_y cells (each the beds of that row and column), with optional columns
     made from a row's cells before and after them (spec["pre"], spec["extra"]:
     [(header, function(row_key, {col: [values]}, {col: [cases]}))])."""
-    cases = select(spec["sources"], spec.get("where", {}))
-    grid = {}
-    for c in cases:
-        grid.setdefault(key_of(c, spec["row"]), {}).setdefault(key_of(c, spec["col"]), []).append(c)
+    grid = grid_of(spec, spec["col"])
     rows = spec.get("rows") or sorted(grid, key=spec.get("row_sort", lambda r: r))
     cols = spec.get("cols") or sorted({k for r in grid.values() for k in r})
     row_label = spec.get("row_label", lambda r: f"{r:g}" if isinstance(r, float) else str(r))
@@ -251,15 +256,12 @@ def paired_steps(spec):
     """Rows x steps of spec["key"] (from one value to the next): each cell the change of V_y on each
     bed run at both values (a paired difference: the same bed, so the bed's own scatter cancels),
     their mean +- standard error over the beds that have both."""
-    cases = select(spec["sources"], spec.get("where", {}))
-    grid = {}
-    for c in cases:
-        grid.setdefault(key_of(c, spec["row"]), {}).setdefault(c.get(spec["key"]), []).append(c)
+    grid = grid_of(spec, spec["key"])
     steps = list(zip(spec["values"], spec["values"][1:]))
     head = spec["row_head"] + [f"{spec['label']} {a:g} -> {b:g}" for a, b in steps]
     lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
     for r in spec["rows"]:
-        by_value = {v: {c.get("box.seed"): float(c.get("vy")) for c in beds(cs, f"{spec['name']}: {r} {v}")}
+        by_value = {v: {c.get("box.seed"): value_of(c, spec.get("value", "vy")) for c in beds(cs, f"{spec['name']}: {r} {v}")}
                     for v, cs in grid.get(r, {}).items()}
         row = list(spec["row_label"](r))
         for a, b in steps:
