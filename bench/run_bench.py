@@ -11,6 +11,8 @@ bench/results/<date>-<host>.csv.
 
 Codes (--codes):
   wiggle      `wiggle run --threads N`
+  wiggle-bound  the same with the threads bound one per CPU (OMP_PROC_BIND=true, OMP_PLACES=cores):
+              the pinned placement, beside wiggle's unpinned one
   lammps      Debian's `lmp`, N MPI ranks (mpirun -np N)
   lammps-opt  the anchor: the same LAMMPS version built -O3 -march=native with OPENMP
               (bench/build_lammps.sh), one rank, `-sf omp -pk omp N`, OMP_NUM_THREADS=N
@@ -19,7 +21,10 @@ Timings are the run phase only: wiggle's summary.json `run_wall_s` (bed excluded
 "Loop time of X on P procs for N steps with M atoms". All are divided by the same particle count
 (every atom of the LAMMPS data file: grains + base + intruder atoms) and the step count.
 
-Usage: bench/run_bench.sh [--quick] [--cases small,paper] [--codes wiggle,lammps,lammps-opt]
+Then each case's `wiggle run --check` estimate (ns per particle-step, from this machine's speed log)
+against wiggle's measured one-thread median.
+
+Usage: bench/run_bench.sh [--quick] [--cases small,preset,paper] [--codes wiggle,lammps,lammps-opt]
                           [--rounds N] [--threads 1,2] [--no-floor] [--lammps-opt PATH] ...
   --quick   the ~3,000-grain bed only (the 63,000-grain paper bed takes hours to make the first time)
 """
@@ -39,6 +44,8 @@ REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 CASES = {
     # name: (--set overrides, steps)
     "small": (["box.width=60", "box.bed_height=50", "intruder.y0=25"], 20000),
+    # the paper-depth preset's box (configs/paper_depth.toml): ~12,500 grains
+    "preset": (["box.width=60", "box.bed_height=195", "intruder.y0=90"], 10000),
     "paper": (["box.width=300", "box.bed_height=195", "intruder.y0=90"], 5000),
     # The 245-grain bed of tests/io/LammpsExportTest.cpp: a smoke test of this script (--cases tiny).
     "tiny": (["box.width=20", "box.bed_height=14", "box.seed=7", "intruder.y0=7", "bed.rest_energy=1e-6"], 20000),
@@ -46,8 +53,11 @@ CASES = {
 COMMON = ["intruder.shape=disk", "drive.amplitude=3", "drive.period=5", "run.dt=0.0001",
           "run.dump_interval=0", "fields.enabled=false", "run.plot=false",
           "run.checkpoint_interval=1e9", "run.sample_interval=0.05"]
-CODES = ["wiggle", "lammps", "lammps-opt"]
-WHAT_THREADS_ARE = {"wiggle": "OpenMP threads", "lammps": "MPI ranks", "lammps-opt": "OpenMP threads, 1 rank"}
+CODES = ["wiggle", "wiggle-bound", "lammps", "lammps-opt"]
+WHAT_THREADS_ARE = {"wiggle": "OpenMP threads", "wiggle-bound": "OpenMP threads bound one per CPU",
+                    "lammps": "MPI ranks", "lammps-opt": "OpenMP threads, 1 rank"}
+BOUND = {"OMP_PROC_BIND": "true", "OMP_PLACES": "cores"}
+ESTIMATE_TOL = 0.25   # `run --check`'s ns per particle-step within 25 % of the measured (the performance issue)
 # The optimised LAMMPS is compiled with FMA contraction, Debian's is not (nor is wiggle): the same
 # deck gives the same physics with other round-off, which the granular dynamics amplifies. So the
 # intruder's height must agree closely at the first sample (t = 0.05, 500 steps: measured 1e-13 on
@@ -139,8 +149,9 @@ def data_file_atoms(deck_dir):
     sys.exit("no 'N atoms' line in %s/data.lammps" % deck_dir)
 
 
-def run_wiggle(wiggle, case_sets, out_dir, threads, env):
+def run_wiggle(wiggle, case_sets, out_dir, threads, env, bound):
     shutil.rmtree(out_dir, ignore_errors=True)
+    env = dict(env, **BOUND) if bound else env
     cmd = ["/usr/bin/time", "-v", wiggle, "run"] + sets(case_sets) + \
           ["--out", out_dir, "--threads", str(threads), "--no-plot"]
     r = run(cmd, env=env)
@@ -179,6 +190,15 @@ def run_lammps(binary, deck_dir, work_dir, n, openmp):
         sys.exit("no loop time in %s/log.lammps" % work_dir)
     return dict(wall=float(m.group(1)), steps=int(m.group(3)), atoms=int(m.group(4)), rss=peak_rss_mb(r.stderr),
                 samples=samples(work_dir))
+
+
+def estimated_ns(wiggle, case_sets, out_dir, env):
+    """The ns per particle-step `wiggle run --check` would plan this case with (this machine's speed log)."""
+    r = run([wiggle, "run"] + sets(case_sets) + ["--check", "--out", out_dir], env=env)
+    m = re.search(r"at ([0-9.]+) ns per particle-step", r.stdout + (r.stderr or ""))
+    if not m:
+        sys.exit("no 'at X ns per particle-step' in `wiggle run --check`'s output:\n" + r.stdout)
+    return float(m.group(1))
 
 
 def run_floor(floor, case_sets, json_path, env):
@@ -239,8 +259,9 @@ def main():
     ap.add_argument("--work-dir", default=os.path.join(REPO, "build", "bench-work"))
     ap.add_argument("--no-build", action="store_true", help="use the wiggle already in --build-dir")
     ap.add_argument("--cache", default="", help="bed cache (default: $WIGGLE_CACHE or ~/.cache/wiggle)")
-    ap.add_argument("--cases", default="", help="comma-separated case names (small, paper, tiny); overrides --quick")
+    ap.add_argument("--cases", default="", help="comma-separated case names (small, preset, paper, tiny); overrides --quick")
     ap.add_argument("--steps-small", type=int, default=CASES["small"][1])
+    ap.add_argument("--steps-preset", type=int, default=CASES["preset"][1])
     ap.add_argument("--steps-paper", type=int, default=CASES["paper"][1])
     args = ap.parse_args()
 
@@ -250,7 +271,7 @@ def main():
         sys.exit("--codes: unknown %s (choose from %s)" % (",".join(unknown), ", ".join(CODES)))
     codes = [c for c in CODES if c in codes]  # the table's order
     with_floor = "wiggle" in codes and not args.no_floor
-    cases = ["small"] if args.quick else ["small", "paper"]
+    cases = ["small"] if args.quick else ["small", "preset", "paper"]
     if args.cases:
         cases = args.cases.split(",")
     unknown = [c for c in cases if c not in CASES]
@@ -280,7 +301,7 @@ def main():
     env = dict(os.environ)
     if args.cache:
         env["WIGGLE_CACHE"] = args.cache
-    steps_of = {"small": args.steps_small, "paper": args.steps_paper, "tiny": CASES["tiny"][1]}
+    steps_of = {"small": args.steps_small, "preset": args.steps_preset, "paper": args.steps_paper, "tiny": CASES["tiny"][1]}
     log("machine: %s, %d logical CPUs" % (model, cpus))
     if with_latency:  # one line per pair of CPUs: the placement every multi-thread number below had
         r = run([os.path.join(args.build_dir, "wiggle_core_latency"), "--rounds", "100000"])
@@ -291,7 +312,7 @@ def main():
     if len(versions) > 1:
         sys.exit("the two LAMMPS builds are of different versions: %s" % ", ".join(sorted(versions)))
 
-    rows, floors, checks, all_same = [], {}, [], True
+    rows, floors, checks, all_same, estimates = [], {}, [], True, {}
     for case in cases:
         steps = steps_of[case]
         case_sets = COMMON + CASES[case][0] + ["run.duration=%r" % (steps * 1e-4)]
@@ -305,6 +326,8 @@ def main():
         log("  " + r.stdout.strip().replace("\n", "\n  ") +
             "  (%.0f s)" % (datetime.datetime.now() - t0).total_seconds())
         atoms = data_file_atoms(deck_dir)
+        if "wiggle" in codes:   # before this case's own runs enter the speed log
+            estimates[case] = estimated_ns(wiggle, case_sets, os.path.join(case_dir, "check"), env)
         for rnd in range(1, args.rounds + 1):
             for t in threads:
                 # Interleave the codes at the same thread count, rotating which goes first each round.
@@ -312,14 +335,14 @@ def main():
                 for code in codes[shift:] + codes[:shift]:
                     load = os.getloadavg()[0]
                     work = os.path.join(case_dir, "%s-%d" % (code, t))
-                    if code == "wiggle":
-                        res = run_wiggle(wiggle, case_sets, work, t, env)
+                    if code in ("wiggle", "wiggle-bound"):
+                        res = run_wiggle(wiggle, case_sets, work, t, env, bound=code == "wiggle-bound")
                     else:
                         res = run_lammps(binaries[code], deck_dir, work, t, openmp=(code == "lammps-opt"))
                     row = dict(case=case, code=code, threads=t, round=rnd, load=load, **res)
                     row["ns"] = 1e9 * row["wall"] / (atoms * row["steps"])
                     rows.append(row)
-                    log("  round %d %-10s %d thr: %.3f s for %d steps, %.1f ns/particle-step, peak RSS %.0f MB "
+                    log("  round %d %-12s %d thr: %.3f s for %d steps, %.1f ns/particle-step, peak RSS %.0f MB "
                         "(load before %.2f)" % (rnd, code, t, row["wall"], row["steps"], row["ns"], row["rss"], load))
         for r in rows:
             if r["case"] == case:
@@ -344,7 +367,7 @@ def main():
     log("\nns per particle-step (median of %d rounds; min-max), particles = all LAMMPS atoms; "
         "'x wiggle' = this code's time / wiggle's at the same thread count" % args.rounds)
     log("threads: " + "; ".join("%s = %s" % (c, WHAT_THREADS_ARE[c]) for c in codes))
-    log("%-6s %7s %4s %-10s | %-20s | %-8s | %-8s" % ("case", "atoms", "thr", "code", "ns/particle-step",
+    log("%-6s %7s %4s %-12s | %-20s | %-8s | %-8s" % ("case", "atoms", "thr", "code", "ns/particle-step",
                                                        "x wiggle", "peak RSS"))
     for case in cases:
         for t in threads:
@@ -353,7 +376,7 @@ def main():
             for code in codes:
                 ns = [r["ns"] for r in runs[code]]
                 m = median(ns)
-                log("%-6s %7d %4d %-10s | %6.1f (%5.1f-%5.1f) | %8s | %5.0f MB" %
+                log("%-6s %7d %4d %-12s | %6.1f (%5.1f-%5.1f) | %8s | %5.0f MB" %
                     (case, runs[code][0]["atoms"], t, code, m, min(ns), max(ns),
                      "%.2f" % (m / wm) if wm else "-", max(r["rss"] for r in runs[code])))
         if case in floors:
@@ -361,9 +384,13 @@ def main():
             floor_ns = 1e9 * fl["floor_sweep_s"] / fl["particles"]
             one = [r["ns"] for r in rows if r["case"] == case and r["code"] == "wiggle" and r["threads"] == 1]
             ratio = "wiggle 1-thread step / floor: %.2f" % (median(one) / floor_ns) if one else "(no 1-thread wiggle run)"
-            log("%-6s %7d %4d %-10s | %6.1f ns (%.2f ns per pair) | %s (wiggle_floor's own step: %.1f ns, %.2f)" %
+            log("%-6s %7d %4d %-12s | %6.1f ns (%.2f ns per pair) | %s (wiggle_floor's own step: %.1f ns, %.2f)" %
                 (case, fl["particles"], 1, "floor", floor_ns, fl["floor_ns_per_pair"], ratio,
                  fl["step_ns_per_particle_step"], fl["step_over_floor"]))
+    for case, est in estimates.items():
+        one = median([r["ns"] for r in rows if r["case"] == case and r["code"] == "wiggle" and r["threads"] == 1] or [float("nan")])
+        log("%-6s `run --check` plans %.1f ns per particle-step, measured %.1f (1 thread): %.2f x, %s (tolerance %d %%)" %
+            (case, est, one, est / one, "within" if abs(est / one - 1) <= ESTIMATE_TOL else "OUTSIDE", ESTIMATE_TOL * 100))
     for line in checks:
         log(line)
 
