@@ -41,14 +41,17 @@ def _draw_map(ax, b):
             if p.get("beds"):
                 ax.annotate(f"{p['mean']:+.3f}\n{p['beds']}", (p["value"], y), textcoords="offset points",
                             xytext=(0, 7), ha="center", fontsize=5)
-    for verdict in ("rising", "sinking", "neutral", "failed"):
+    pending = any(p["verdict"] == "undecided" for s in searches for p in s["probes"])
+    for verdict in ("rising", "sinking", "neutral", "failed") + (("undecided",) if pending else ()):
         colour, marker = VERDICT_STYLE[verdict]
-        ax.scatter([], [], color=colour, marker=marker, label=verdict)
+        label = "undecided (more beds to run)" if verdict == "undecided" else verdict
+        ax.scatter([], [], color=colour, marker=marker, label=label)
     ax.plot([], [], color="black", lw=3, label="crossing (bracket)")
     ax.set_xlabel(_label(b["key"]))
     if over:
         ax.set_ylabel(_label(over))
         ax.set_yticks(ys)
+        ax.margins(y=0.15)   # room above the top row for its probes' labels
     else:
         ax.set_yticks([])
     ax.legend(fontsize=6, loc="upper left", bbox_to_anchor=(1.01, 1.0))
