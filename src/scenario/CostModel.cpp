@@ -14,10 +14,11 @@ namespace wiggle {
 
 SpeedBasis speedBasis(const RunConfig& config) {
   SpeedBasis basis;
-  if (const std::optional<MeasuredSpeed> m = measuredSpeed(config)) {
+  if (const std::optional<MeasuredSpeed> m = measuredSpeed(config, estimatedParticles(config))) {
     basis.ns = m->nsPerParticleStep;
     basis.source = "the median of this machine's last " + std::to_string(m->runs) + " one-thread run" +
-                   (m->runs == 1 ? "" : "s") + " of a " + m->buildKind + " build (" + m->path + ")";
+                   (m->runs == 1 ? "" : "s") + " of a " + m->buildKind + " build" +
+                   (m->sameSize ? " on beds of this size" : " (none yet on a bed of this size)") + " (" + m->path + ")";
   } else {
     basis.source = "no one-thread run of a " + speedBuildKind() +
                    " build recorded on this machine yet, so the reference machine's figure, docs/SWEEPS.md";

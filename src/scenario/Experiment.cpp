@@ -350,7 +350,7 @@ RunOutcome writeRunOutputs(const Case& run, const std::string& dir, const World&
     recordRunSpeed(
         config, static_cast<int>(summary.threads), summary.nsPerParticleStep,
         1e9 * stepping.cpuSeconds / (static_cast<double>(summary.particles) * static_cast<double>(stepping.steps)),
-        summary.simd);
+        summary.simd, summary.particles);
   log.line("done: vy = " + formatNumber(rate.vy) + ", slope = " + formatNumber(rate.slope) +
            ", vy_settled = " + formatNumber(settled.vy) + " (t_settled = " + formatNumber(settled.tSettled) + "), " +
            formatNumber(summary.nsPerParticleStep) + " ns/particle-step, state " + world.stateHash());

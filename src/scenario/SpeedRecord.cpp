@@ -58,11 +58,11 @@ std::string cpuModel() {
 }
 
 void recordRunSpeed(const RunConfig& config, int threads, double wallNsPerParticleStep, double cpuNsPerParticleStep,
-                    const std::string& simd) {
+                    const std::string& simd, std::uint64_t particles) {
   if (!(wallNsPerParticleStep > 0) || !(cpuNsPerParticleStep > 0)) return;
   const std::string line = cpuModel() + "\t" + std::to_string(threads) + "\t" + formatNumber(wallNsPerParticleStep, 6) +
                            "\t" + formatNumber(loadAverage(), 3) + "\t" + speedBuildKind(simd) + "\t" +
-                           formatNumber(cpuNsPerParticleStep, 6) + "\n";
+                           formatNumber(cpuNsPerParticleStep, 6) + "\t" + std::to_string(particles) + "\n";
   std::error_code ec;
   std::filesystem::create_directories(bedCacheDir(config), ec);
   // O_APPEND and one write(): concurrent runs' lines do not interleave.
@@ -72,12 +72,12 @@ void recordRunSpeed(const RunConfig& config, int threads, double wallNsPerPartic
   ::close(fd);
 }
 
-std::optional<MeasuredSpeed> measuredSpeed(const RunConfig& config) {
+std::optional<MeasuredSpeed> measuredSpeed(const RunConfig& config, double particles) {
   std::ifstream in(speedLogPath(config));
   if (!in) return std::nullopt;
   const std::string cpu = cpuModel();
   const std::string kind = speedBuildKind();
-  std::vector<double> speeds;
+  std::vector<double> speeds, sameSize;
   for (std::string line; std::getline(in, line);) {
     std::istringstream fields(line);
     std::string model, threads, wallNs, load, build, cpuNs;
@@ -85,13 +85,20 @@ std::optional<MeasuredSpeed> measuredSpeed(const RunConfig& config) {
         !std::getline(fields, wallNs, '\t') || !std::getline(fields, load, '\t') || !std::getline(fields, build, '\t'))
       continue;  // a line cut short (a full disk), written before the build kind was, or foreign: skipped
     if (model != cpu || threads != "1" || build != kind) continue;
-    std::getline(fields, cpuNs);  // absent from lines written before it was recorded
+    std::string count;
+    std::getline(fields, cpuNs, '\t');  // these two are absent from lines written before they were recorded
+    std::getline(fields, count);
     try {
       const double v = std::stod(cpuNs.empty() ? wallNs : cpuNs);
-      if (v > 0 && v < 1e6) speeds.push_back(v);
+      if (!(v > 0 && v < 1e6)) continue;
+      speeds.push_back(v);
+      const double n = count.empty() ? 0.0 : std::stod(count);
+      if (n * kSameSizeFactor >= particles && n <= particles * kSameSizeFactor) sameSize.push_back(v);
     } catch (const std::exception&) {
     }
   }
+  const bool ofThisSize = !sameSize.empty();
+  if (ofThisSize) speeds.swap(sameSize);
   if (speeds.empty()) return std::nullopt;
   if (speeds.size() > lastRuns) speeds.erase(speeds.begin(), speeds.end() - lastRuns);
   std::sort(speeds.begin(), speeds.end());
@@ -99,6 +106,7 @@ std::optional<MeasuredSpeed> measuredSpeed(const RunConfig& config) {
   MeasuredSpeed m;
   m.nsPerParticleStep = n % 2 ? speeds[n / 2] : 0.5 * (speeds[n / 2 - 1] + speeds[n / 2]);
   m.runs = n;
+  m.sameSize = ofThisSize;
   m.path = speedLogPath(config);
   m.buildKind = kind;
   return m;

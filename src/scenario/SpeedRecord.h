@@ -9,6 +9,7 @@
 // sharing the caches and memory adds 10-20 %), but not stretched by the share of a core the run
 // was given: a run at a low priority beside two others took 4-10 x its CPU time in wall time, and
 // wall time per particle-step made every estimate after it that much too long.
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -28,24 +29,32 @@ std::string speedBuildKind(const std::string& simd);
 std::string speedBuildKind();
 
 // Appends "<cpu model>\t<threads>\t<wall ns per particle-step>\t<load average>\t<build kind>\t<CPU
-// ns per particle-step>" to <cache dir>/speed.log as one write (whole lines even when runs end
-// together). The CPU figure counts every thread's CPU time. Never throws: a run's result does not
-// depend on its speed being recorded.
+// ns per particle-step>\t<particles>" to <cache dir>/speed.log as one write (whole lines even when
+// runs end together). The CPU figure counts every thread's CPU time. Never throws: a run's result
+// does not depend on its speed being recorded.
 void recordRunSpeed(const RunConfig& config, int threads, double wallNsPerParticleStep, double cpuNsPerParticleStep,
-                    const std::string& simd);
+                    const std::string& simd, std::uint64_t particles);
+
+// A bed within this factor of a run's particle count counts as its size: the cost of a
+// particle-step grows with the bed once its arrays outgrow the caches (bench/run_bench.sh,
+// 2026-11-27, one Zen 4 core: 27-28 ns for 3,200 and 12,500 particles, 38 for 62,000).
+constexpr double kSameSizeFactor = 2.0;
 
 struct MeasuredSpeed {
   double nsPerParticleStep = 0.0;  // the median
   std::size_t runs = 0;            // how many runs it is the median of
+  bool sameSize = false;           // the runs were of beds of this run's size (kSameSizeFactor)
   std::string path;                // the log it was read from
   std::string buildKind;           // the build kind it is for (speedBuildKind)
 };
 
 // The median CPU ns per particle-step of the last (up to) 9 one-thread runs on this CPU model by
 // this build kind, with the force kernels a run would use now (defaultSimdLevel), in the cache
-// directory's speed.log; nothing when there are none. Lines without a build kind (written before
-// it was recorded) are not counted: which build ran them is not known. Lines without the CPU figure
-// (written before it was recorded) count with their wall figure.
-std::optional<MeasuredSpeed> measuredSpeed(const RunConfig& config);
+// directory's speed.log, of beds within kSameSizeFactor of `particles` when there are any, else of
+// any size; nothing when there are none. Lines without a build kind (written before it was
+// recorded) are not counted: which build ran them is not known. Lines without the CPU figure or
+// the particle count (written before they were recorded) count with their wall figure and as of
+// another size.
+std::optional<MeasuredSpeed> measuredSpeed(const RunConfig& config, double particles);
 
 }  // namespace wiggle

@@ -168,8 +168,9 @@ TEST(Experiment, ThreadCountDoesNotChangeTheResult) {
 }
 
 // A run of 10^4 steps or more leaves its speed for the cost estimates (scenario/SpeedRecord.h): one
-// line in its bed cache's speed.log with the wall figure of its summary and its CPU figure, which is
-// what the estimates take. One thread's CPU time cannot exceed its wall time.
+// line in its bed cache's speed.log with the wall figure of its summary, its CPU figure, which is
+// what the estimates take, and its particle count, by which they pick runs of beds of their size.
+// One thread's CPU time cannot exceed its wall time.
 TEST(Experiment, ARunRecordsItsWallAndCpuSpeedForTheEstimates) {
   const std::string root = scratch("speed");
   fs::remove_all(root);
@@ -188,12 +189,13 @@ TEST(Experiment, ARunRecordsItsWallAndCpuSpeedForTheEstimates) {
     lines.push_back(fields);
   }
   ASSERT_EQ(lines.size(), 1u);
-  ASSERT_EQ(lines[0].size(), 6u);
+  ASSERT_EQ(lines[0].size(), 7u);
   EXPECT_EQ(lines[0][1], "1");
   const double wall = std::stod(lines[0][2]), cpu = std::stod(lines[0][5]);
   EXPECT_NEAR(wall, summary.at("ns_per_particle_step").get<double>(), 1e-5 * wall);
   EXPECT_GT(cpu, 0.0);
   EXPECT_LE(cpu, 1.02 * wall);
+  EXPECT_EQ(lines[0][6], std::to_string(summary.at("n_particles").get<std::uint64_t>()));
 }
 
 TEST(Experiment, RefusesToOverwriteARunAndKeepsItsFiles) {

@@ -31,7 +31,7 @@ class SpeedRecordTest : public ::testing::Test {
 };
 
 TEST_F(SpeedRecordTest, NoLogMeansTheReferenceFigure) {
-  EXPECT_FALSE(measuredSpeed(config_));
+  EXPECT_FALSE(measuredSpeed(config_, 3000.0));
   const SpeedBasis basis = speedBasis(config_);
   EXPECT_EQ(basis.ns, CostModel::nsPerParticleStep);
   EXPECT_NE(basis.source.find("no one-thread run of a " + speedBuildKind() + " build recorded"), std::string::npos)
@@ -55,12 +55,15 @@ TEST_F(SpeedRecordTest, TheMedianOfTheLastNineOneThreadRunsOnThisCpuByThisBuild)
   log << "Another CPU\t1\t1\t0\t" << kind << "\n" << cpu << "\t2\t1\t0\t" << kind << "\n";
   log << cpu << "\t1\tnot-a-number\t0\t" << kind << "\n" << cpu << "\t1";
   log.close();
-  const auto m = measuredSpeed(config_);
+  const auto m = measuredSpeed(config_, 3000.0);
   ASSERT_TRUE(m);
   EXPECT_EQ(m->runs, 9u);
   EXPECT_DOUBLE_EQ(m->nsPerParticleStep, 80.0);
+  EXPECT_FALSE(m->sameSize);  // no line says its bed's size
   EXPECT_EQ(speedBasis(config_).ns, 80.0);
-  EXPECT_NE(speedBasis(config_).source.find("last 9 one-thread runs of a " + kind + " build"), std::string::npos)
+  EXPECT_NE(speedBasis(config_).source.find("last 9 one-thread runs of a " + kind +
+                                            " build (none yet on a bed of this size)"),
+            std::string::npos)
       << speedBasis(config_).source;
 }
 
@@ -73,15 +76,41 @@ TEST_F(SpeedRecordTest, TheBuildKindNamesTheBuildTypeAndTheKernels) {
 
 TEST_F(SpeedRecordTest, ARecordedRunIsReadBackByItsCpuFigure) {
   const std::string simd = simdLevelName(defaultSimdLevel());
-  recordRunSpeed(config_, 1, 94.0, 23.5, simd);     // a quarter of a core: its wall figure is not its speed
-  recordRunSpeed(config_, 2, 15.0, 29.0, simd);     // two threads: not a one-thread figure
-  recordRunSpeed(config_, 1, 5.0, 5.0, "unknown");  // other kernels than an estimate's run would use
-  recordRunSpeed(config_, 1, 24.5, 24.5, simd);
-  const auto m = measuredSpeed(config_);
+  recordRunSpeed(config_, 1, 94.0, 23.5, simd, 3000);     // a quarter of a core: its wall figure is not its speed
+  recordRunSpeed(config_, 2, 15.0, 29.0, simd, 3000);     // two threads: not a one-thread figure
+  recordRunSpeed(config_, 1, 5.0, 5.0, "unknown", 3000);  // other kernels than an estimate's run would use
+  recordRunSpeed(config_, 1, 24.5, 24.5, simd, 3000);
+  const auto m = measuredSpeed(config_, 3000.0);
   ASSERT_TRUE(m);
   EXPECT_EQ(m->runs, 2u);
   EXPECT_DOUBLE_EQ(m->nsPerParticleStep, 24.0);
+  EXPECT_TRUE(m->sameSize);
   EXPECT_EQ(m->path, dir_ + "/speed.log");
+}
+
+// A particle-step costs more in a bed that outgrows the caches (the paper bed's 62,000 particles:
+// 38 ns against 27-28 for 3,000-12,500 on one Zen 4 core), so an estimate takes the runs of beds of
+// its own size when the log has any, and all of them when it has none.
+TEST_F(SpeedRecordTest, RunsOfBedsOfTheEstimatesSizeComeFirst) {
+  const std::string simd = simdLevelName(defaultSimdLevel());
+  recordRunSpeed(config_, 1, 27.0, 27.0, simd, 3243);
+  recordRunSpeed(config_, 1, 28.0, 28.0, simd, 3243);
+  recordRunSpeed(config_, 1, 38.0, 38.0, simd, 62327);
+  recordRunSpeed(config_, 1, 40.0, 40.0, simd, 62327);
+  const auto paper = measuredSpeed(config_, 62000.0);
+  ASSERT_TRUE(paper);
+  EXPECT_TRUE(paper->sameSize);
+  EXPECT_EQ(paper->runs, 2u);
+  EXPECT_DOUBLE_EQ(paper->nsPerParticleStep, 39.0);
+  const auto small = measuredSpeed(config_, 3243.0 * kSameSizeFactor);  // the factor's edge counts
+  ASSERT_TRUE(small);
+  EXPECT_TRUE(small->sameSize);
+  EXPECT_DOUBLE_EQ(small->nsPerParticleStep, 27.5);
+  const auto between = measuredSpeed(config_, 12500.0);  // 3.9 x the one, 0.2 x the other
+  ASSERT_TRUE(between);
+  EXPECT_FALSE(between->sameSize);
+  EXPECT_EQ(between->runs, 4u);
+  EXPECT_DOUBLE_EQ(between->nsPerParticleStep, 33.0);
 }
 
 }  // namespace

@@ -271,6 +271,36 @@ def paired_steps(spec):
     return lines, spec["sources"]
 
 
+def amplitude_threshold(spec):
+    """Rows x periods: the smallest amplitude of spec["amplitudes"] at which V_y leaves the scatter of
+    the beds, |mean| >= RESOLVED standard errors from zero (se = sigma / sqrt(beds), sigma one bed's
+    standard deviation, spec["sigma"]()), as the bracket from the next smaller amplitude measured, and
+    the sign it goes."""
+    sig = spec["sigma"]()
+    grid = grid_of(spec, lambda c: (c.get("drive.amplitude"), c.get("drive.period")))
+    head = spec["row_head"] + [f"T = {t:g}" for t in spec["periods"]]
+    lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
+    for r in spec["rows"]:
+        row = [spec["row_label"](r)]
+        for t in spec["periods"]:
+            measured = [(a, [value_of(c, "vy") for c in beds(grid[r][(a, t)], f"{spec['name']}: {r} {a} {t}")])
+                        for a in spec["amplitudes"] if (a, t) in grid.get(r, {})]
+            resolved = [i for i, (a, vs) in enumerate(measured) if abs(mean(vs)) * math.sqrt(len(vs)) / sig >= RESOLVED]
+            if not measured:
+                text = ""
+            elif not resolved:
+                text = f"above {measured[-1][0]:g}"
+            else:
+                i = resolved[0]
+                a, vs = measured[i]
+                text = (f"{measured[i - 1][0]:g}-{a:g}" if i else f"<= {a:g}") + (" (rises)" if mean(vs) > 0 else " (sinks)")
+            row.append(text)
+        lines.append("| " + " | ".join(row) + " |")
+    lines += ["", f"(the amplitudes measured: {', '.join(f'{a:g}' for a in spec['amplitudes'])}; "
+              f"resolved: |V_y| >= {RESOLVED:g} sigma / sqrt(beds), sigma = {sig:.3f})"]
+    return lines, spec["sources"]
+
+
 def listing(spec):
     """One row per case: spec["columns"] = [(header, function(case) -> text)]."""
     cases = select(spec["sources"], spec.get("where", {}))
@@ -353,7 +383,12 @@ def protocol(c):
 # Table 1 by the paper's clock: bed 1 (paper_depth_t1000.toml) and the second beds (paper_depth_t1000_bed2.toml)
 T1000_BEDS = ["results/paper_depth/table1_t1000", "results/paper_depth/table1_t1000_bed2"]
 # Figure 6 at the paper's depth (paper_depth_friction.toml): its cells, shape and period by friction
+DEPTH_A5 = ["results/paper_depth/table1", "results/paper_depth/table1_bed2"]
+DEPTH_A3 = ["results/paper_depth/fig5", "results/paper_depth/fig5_bed2"]
 DEPTH_FRICTION = ["results/paper_depth/friction"]
+DEPTH_SMALL_A = ["results/paper_depth/small_amplitude"]
+AMPLITUDES = [0.5, 1.0, 3.0, 5.0]          # A = 0.5 and 1 (paper_depth_small_amplitude.toml), figure 5's 3, Table 1's 5
+AMPLITUDE_PERIODS = [1.0, 3.0, 5.0, 8.0]
 FRICTION_MUS = [0.0, 0.1, 0.3, 0.5]
 FRICTION_ROWS = [(shape, t) for shape in ("disk", "square") for t in (3.0, 5.0)]
 
@@ -498,6 +533,15 @@ TABLES = [
      "rows": [(s, m) for s in ("disk", "square") for m in (0.0, 0.5)], "cols": ["0.1", "own"],
      "row_head": ["A = 3, T = 3, bed 1", "mu"], "row_label": lambda r: (r[0], f"{r[1]:g}"),
      "col_label": lambda k: "bed poured at mu = 0.1" if k == "0.1" else "bed poured at the case's mu"},
+    # Small amplitudes at the paper's depth (paper_depth_small_amplitude.toml, bed 1) beside figure 5's A = 3
+    # and Table 1's A = 5 (their beds 1 and 2); then the amplitude at which V_y leaves the beds' scatter
+    {"name": "depth_amplitude", "kind": pivot, "sources": DEPTH_SMALL_A + DEPTH_A3 + DEPTH_A5,
+     "row": lambda c: (c.get("intruder.shape"), c.get("drive.amplitude")), "col": "drive.period",
+     "rows": [(s, a) for s in SHAPES for a in AMPLITUDES], "cols": AMPLITUDE_PERIODS, "row_head": ["shape", "A"],
+     "row_label": lambda r: (r[0], f"{r[1]:g}"), "col_label": lambda t: f"T = {t:g}"},
+    {"name": "depth_amplitude_threshold", "kind": amplitude_threshold, "sources": DEPTH_SMALL_A + DEPTH_A3 + DEPTH_A5,
+     "row": "intruder.shape", "rows": SHAPES, "amplitudes": AMPLITUDES, "periods": AMPLITUDE_PERIODS,
+     "sigma": lambda: depth_sigma(), "row_head": ["shape: A_min between"], "row_label": str},
     # Figure 2 by the paper's clock (paper_depth_fig2_t1000.toml): each case's rate by the three clocks
     # and how far it moved
     {"name": "depth_fig2_t1000", "kind": listing, "sources": ["results/paper_depth/fig2_t1000"],
@@ -636,8 +680,6 @@ def findings_table(spec):
     return lines, spec["sources"]
 
 
-DEPTH_A5 = ["results/paper_depth/table1", "results/paper_depth/table1_bed2"]
-DEPTH_A3 = ["results/paper_depth/fig5", "results/paper_depth/fig5_bed2"]
 CLOCK_A5 = T1000_BEDS                              # the paper's clock: t = 1000 runs, V_y over t = 100-1000
 CLOCK_A3 = ["results/paper_depth/fig2_t1000"]
 SMALL_SESSION2 = ["docs/figures/small_fig5_results.csv"]   # disk and triangle, A = 3, bed 1, session 2's engine
@@ -721,6 +763,19 @@ def table1_range(sources, **where):
     return out
 
 
+def depth_sigma():
+    """One bed's standard deviation at the paper's depth: the disk at A = 3, T = 3 on the box study's beds."""
+    return sigma([Cell(["results/paper_depth/box", "results/paper_depth/seeds"], intruder__shape="disk",
+                       box__width=60.0, drive__period=3.0)])
+
+
+def small_amplitudes(sources, shape, t, direction):
+    """Finding 3: A = 3 moves the intruder further than A = 1 and 0.5 do, the way it goes at A = 3 in the paper."""
+    cell = lambda a: Cell(sources, intruder__shape=shape, drive__amplitude=a, drive__period=t)  # noqa: E731
+    way = "above" if direction > 0 else "below"
+    return [compare(f"{shape}, T = {t:g}: A = 3 {way} A = {a:g}", cell(3.0), cell(a), direction) for a in (1.0, 0.5)]
+
+
 _FINDINGS = []
 
 
@@ -728,8 +783,7 @@ def paper_findings():
     """[(number, the finding, {scale: (sigma, [comparisons])})], docs/PHYSICS.md §12."""
     if _FINDINGS:
         return _FINDINGS
-    depth = sigma([Cell(["results/paper_depth/box", "results/paper_depth/seeds"], intruder__shape="disk",
-                        box__width=60.0, drive__period=3.0)])
+    depth = depth_sigma()
     # The paper's clock: the largest standard deviation of its cells of two beds.
     clock = sigma(cells_with_beds(CLOCK_A5))
     small = sigma([Cell(SMALL_POUR, bed__pour="lattice", drive__period=t) for t in (1.0, 5.0)])
@@ -746,6 +800,11 @@ def paper_findings():
             "paper's clock": (clock, [], "not judged: its periods stop below the maxima"),
             "small preset": (small, has_maximum(SMALL_SESSION2, "A = 3 (session 2)", ["disk"]))}),
         (3, "at A = 0.5 and 1 the intruder hardly moves", {
+            # the paper's way at A = 3: every shape sinks at T = 1 (finding 1); at T = 5 the disk rises and
+            # the triangle sinks (findings 1 and 5)
+            "paper's depth": (depth, [c for shape in SHAPES for c in small_amplitudes(DEPTH_SMALL_A + DEPTH_A3, shape, 1.0, -1)]
+                              + small_amplitudes(DEPTH_SMALL_A + DEPTH_A3, "disk", 5.0, +1)
+                              + small_amplitudes(DEPTH_SMALL_A + DEPTH_A3, "triangle", 5.0, -1)),
             "small preset": (small, [
                 compare(f"disk, T = 5: A = 3 above A = {a:g}",
                         Cell(SMALL_FRICTION, intruder__shape="disk", drive__amplitude=3.0, drive__period=5.0, contact__mu=0.1),
@@ -780,7 +839,7 @@ def paper_findings():
 
 FINDING_SOURCES = DEPTH_A5 + DEPTH_A3 + ["results/paper_depth/box", "results/paper_depth/seeds"] + CLOCK_A5 + CLOCK_A3 \
     + SMALL_POUR \
-    + DEPTH_FRICTION + SMALL_FRICTION + SMALL_SESSION2
+    + DEPTH_FRICTION + DEPTH_SMALL_A + SMALL_FRICTION + SMALL_SESSION2
 TABLES += [
     {"name": "findings", "kind": findings_table, "findings": paper_findings, "scales": ["paper's depth", "paper's clock", "small preset"],
      "sources": FINDING_SOURCES},
