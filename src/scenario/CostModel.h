@@ -29,10 +29,10 @@ struct CostModel {
   static constexpr double dampedRelaxTime = 6.0;
 };
 
-// The ns per particle-step the estimates use, and where it comes from: the median of this machine's
-// last one-thread runs (scenario/SpeedRecord.h), on beds of the config's size when there are any,
-// when it has recorded any on this CPU, else CostModel::nsPerParticleStep (the reference machine's
-// figure).
+// The ns per particle-step the estimates use, and where it comes from: once this machine has
+// recorded one-thread runs on this CPU, the median of the last ones (scenario/SpeedRecord.h), of
+// beds of the config's size when there are any; else CostModel::nsPerParticleStep (the reference
+// machine's figure).
 struct SpeedBasis {
   double ns = CostModel::nsPerParticleStep;
   std::string source;  // for people: "the median of this machine's last 9 one-thread runs (PATH)"

@@ -285,7 +285,8 @@ def amplitude_threshold(spec):
         for t in spec["periods"]:
             measured = [(a, [value_of(c, "vy") for c in beds(grid[r][(a, t)], f"{spec['name']}: {r} {a} {t}")])
                         for a in spec["amplitudes"] if (a, t) in grid.get(r, {})]
-            resolved = [i for i, (a, vs) in enumerate(measured) if abs(mean(vs)) * math.sqrt(len(vs)) / sig >= RESOLVED]
+            # the findings' rule against zero (judged), whichever way V_y goes
+            resolved = [i for i, (a, vs) in enumerate(measured) if abs(judged((None, vs, [], 1), sig)[1]) >= RESOLVED]
             if not measured:
                 text = ""
             elif not resolved:
@@ -382,9 +383,10 @@ def protocol(c):
 
 # Table 1 by the paper's clock: bed 1 (paper_depth_t1000.toml) and the second beds (paper_depth_t1000_bed2.toml)
 T1000_BEDS = ["results/paper_depth/table1_t1000", "results/paper_depth/table1_t1000_bed2"]
-# Figure 6 at the paper's depth (paper_depth_friction.toml): its cells, shape and period by friction
+# At the paper's depth, t = 100: Table 1 (A = 5) and figure 5 (A = 3), each on beds 1 and 2
 DEPTH_A5 = ["results/paper_depth/table1", "results/paper_depth/table1_bed2"]
 DEPTH_A3 = ["results/paper_depth/fig5", "results/paper_depth/fig5_bed2"]
+# Figure 6 at the paper's depth (paper_depth_friction.toml): its cells, shape and period by friction
 DEPTH_FRICTION = ["results/paper_depth/friction"]
 DEPTH_SMALL_A = ["results/paper_depth/small_amplitude"]
 AMPLITUDES = [0.5, 1.0, 3.0, 5.0]          # A = 0.5 and 1 (paper_depth_small_amplitude.toml), figure 5's 3, Table 1's 5
