@@ -292,6 +292,14 @@ std::string boundaryCsv(const BoundarySpec& spec, const BoundaryResult& result) 
   return out.str();
 }
 
+namespace {
+// "over KEY = a-b", or "at KEY = a" when the span is one value (a band of one probe).
+std::string valueSpan(const std::string& keyIs, double first, double last) {
+  if (first == last) return "at " + keyIs + formatNumber(first);
+  return "over " + keyIs + formatNumber(first) + "-" + formatNumber(last);
+}
+}  // namespace
+
 std::string boundaryLines(const BoundarySpec& spec, const BoundaryResult& result) {
   std::ostringstream out;
   const std::string& key = spec.key;
@@ -306,17 +314,15 @@ std::string boundaryLines(const BoundarySpec& spec, const BoundaryResult& result
     for (const Crossing& c : crossings) {
       out << head << verdictName(c.from) << " -> " << verdictName(c.to) << " between " << key << " = "
           << formatNumber(c.below) << " and " << formatNumber(c.above);
-      if (c.neutralLo)
-        out << " (V_y indistinguishable from zero over " << formatNumber(*c.neutralLo) << "-"
-            << formatNumber(*c.neutralHi) << ")";
+      if (c.neutralLo) out << " (V_y indistinguishable from zero " << valueSpan("", *c.neutralLo, *c.neutralHi) << ")";
       out << '\n';
     }
     for (const NeutralBand& b : bands) {
       const bool inCrossing = std::any_of(crossings.begin(), crossings.end(),
                                           [&](const Crossing& c) { return c.neutralLo && *c.neutralLo == b.first; });
       if (inCrossing) continue;
-      out << head << "V_y indistinguishable from zero over " << key << " = " << formatNumber(b.first) << "-"
-          << formatNumber(b.last) << " (no change of sign across it)\n";
+      out << head << "V_y indistinguishable from zero " << valueSpan(key + " = ", b.first, b.last)
+          << " (no change of sign across it)\n";
     }
     if (crossings.empty() && bands.empty()) {
       Verdict v = Verdict::Undecided;

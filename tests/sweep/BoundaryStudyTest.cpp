@@ -134,6 +134,17 @@ TEST_F(BoundaryStudyTest, NoCrossingIsSaidAsSuch) {
             std::string::npos);
 }
 
+TEST_F(BoundaryStudyTest, ABandOfOneValueIsSaidAtThatValue) {
+  BoundarySpec spec = periodSearch();
+  StandIn runner([](double T, double) { return 0.1 * std::fabs(T - 3.0); });  // touches zero at T = 3 only
+  const BoundaryResult result = runBoundary(spec, runner, dir_);
+  const std::string lines = boundaryLines(spec, result);
+  EXPECT_NE(lines.find("V_y indistinguishable from zero at drive.period = 3 (no change of sign across it)"),
+            std::string::npos)
+      << lines;
+  EXPECT_EQ(lines.find("over drive.period = 3-3"), std::string::npos) << lines;
+}
+
 TEST_F(BoundaryStudyTest, TheSweepFileHoldsEveryRunInOrder) {
   BoundarySpec spec = periodSearch();
   spec.base.box.seed = 7;

@@ -620,11 +620,21 @@ def compare(label, a, b, direction):
     return (label, va, vb, direction) if va and (vb or b is None) else None
 
 
+OWN_SCATTER_BEDS = 3   # a cell of this many beds or more also has a standard deviation of its own
+
+
+def side_sigma(values, sig):
+    """One bed's standard deviation for a cell: the scale's sigma, or the cell's own when it has
+    OWN_SCATTER_BEDS beds or more and they scatter more (a cell never counts as better known than
+    its own beds show)."""
+    return max(sig, sd(values)) if len(values) >= OWN_SCATTER_BEDS else sig
+
+
 def judged(comparison, sig):
     """(difference a - b, standard errors in the paper's direction, 'for' / 'against' / 'within')."""
     label, a, b, direction = comparison
     diff = mean(a) - (mean(b) if b else 0.0)
-    se = sig * math.sqrt(1 / len(a) + (1 / len(b) if b else 0.0))
+    se = math.sqrt(side_sigma(a, sig) ** 2 / len(a) + (side_sigma(b, sig) ** 2 / len(b) if b else 0.0))
     z = round(direction * diff / se, 1)   # judged as printed, to 0.1
     return diff, z, "for" if z >= RESOLVED else "against" if z <= -RESOLVED else "within"
 
@@ -687,6 +697,10 @@ CLOCK_A3 = ["results/paper_depth/fig2_t1000"]
 SMALL_SESSION2 = ["docs/figures/small_fig5_results.csv"]   # disk and triangle, A = 3, bed 1, session 2's engine
 SMALL_POUR = ["results/pour_protocol_small"]
 SMALL_FRICTION = ["results/small_friction_amplitude"]
+SMALL_MAP = ["results/boundary/small_pd_disk"]   # the disk's rise/sink map, A = 1-5, beds 1-3 (`wiggle boundary`)
+# Today's engine on the small preset's lattice beds at mu = 0.1 (a run in two folders counts once)
+SMALL_TODAY = SMALL_MAP + SMALL_POUR + SMALL_FRICTION
+SMALL_TODAY_WHERE = {"bed__pour": "lattice", "contact__mu": 0.1}
 PAPER_ORDER = ["disk", "rect_narrow", "square", "rect_wide", "triangle"]   # the paper's order of rise rates
 PAPER_RANGE = {"disk": (2.5, 3.0), "square": (3.0, 4.0), "rect_narrow": (3.0, 4.0), "rect_wide": (2.0, 3.0),
                "triangle": (4.0, 5.0)}   # the paper's Table 1, observed (A = 5)
@@ -771,9 +785,9 @@ def depth_sigma():
                        box__width=60.0, drive__period=3.0)])
 
 
-def small_amplitudes(sources, shape, t, direction):
+def small_amplitudes(sources, shape, t, direction, **where):
     """Finding 3: A = 3 moves the intruder further than A = 1 and 0.5 do, the way it goes at A = 3 in the paper."""
-    cell = lambda a: Cell(sources, intruder__shape=shape, drive__amplitude=a, drive__period=t)  # noqa: E731
+    cell = lambda a: Cell(sources, intruder__shape=shape, drive__amplitude=a, drive__period=t, **where)  # noqa: E731
     way = "above" if direction > 0 else "below"
     return [compare(f"{shape}, T = {t:g}: A = 3 {way} A = {a:g}", cell(3.0), cell(a), direction) for a in (1.0, 0.5)]
 
@@ -789,32 +803,30 @@ def paper_findings():
     # The paper's clock: the largest standard deviation of its cells of two beds.
     clock = sigma(cells_with_beds(CLOCK_A5))
     small = sigma([Cell(SMALL_POUR, bed__pour="lattice", drive__period=t) for t in (1.0, 5.0)])
-    lattice = {"bed__pour": "lattice"}
+    today = SMALL_TODAY_WHERE
     _FINDINGS.extend([
         (1, "for A >= 3 the intruder sinks at short periods and rises at long ones", {
             "paper's depth": (depth, sinks_then_rises(DEPTH_A5, "A = 5", SHAPES) + sinks_then_rises(DEPTH_A3, "A = 3", SHAPES)),
             "paper's clock": (clock, sinks_then_rises(CLOCK_A5, "A = 5", SHAPES) + sinks_then_rises(CLOCK_A3, "A = 3", SHAPES)),
-            "small preset": (small, sinks_then_rises(SMALL_POUR, "A = 3", ["disk"], **lattice)
+            "small preset": (small, [c for a in (3.0, 4.0, 5.0)
+                                     for c in sinks_then_rises(SMALL_TODAY, f"A = {a:g}", ["disk"], drive__amplitude=a, **today)]
                              + sinks_then_rises(SMALL_SESSION2, "A = 3 (session 2)", ["triangle"]))}),
         (2, "the rise rate has a maximum in T", {
             "paper's depth": (depth, has_maximum(DEPTH_A5, "A = 5", SHAPES) + has_maximum(DEPTH_A3, "A = 3", SHAPES)),
             # Table 1's t = 1000 periods stop at T = 3-4, below the t = 100 grid's maxima, and figure 2's are 1 and 5
             "paper's clock": (clock, [], "not judged: its periods stop below the maxima"),
-            "small preset": (small, has_maximum(SMALL_SESSION2, "A = 3 (session 2)", ["disk"]))}),
+            "small preset": (small, [c for a in (3.0, 4.0, 5.0)
+                                     for c in has_maximum(SMALL_TODAY, f"A = {a:g}", ["disk"], drive__amplitude=a, **today)]
+                             + has_maximum(SMALL_SESSION2, "A = 3 (session 2)", ["disk"]))}),
         (3, "at A = 0.5 and 1 the intruder hardly moves", {
             # the paper's way at A = 3: every shape sinks at T = 1 (finding 1); at T = 5 the disk rises and
             # the triangle sinks (findings 1 and 5)
             "paper's depth": (depth, [c for shape in SHAPES for c in small_amplitudes(DEPTH_SMALL_A + DEPTH_A3, shape, 1.0, -1)]
                               + small_amplitudes(DEPTH_SMALL_A + DEPTH_A3, "disk", 5.0, +1)
                               + small_amplitudes(DEPTH_SMALL_A + DEPTH_A3, "triangle", 5.0, -1)),
-            "small preset": (small, [
-                compare(f"disk, T = 5: A = 3 above A = {a:g}",
-                        Cell(SMALL_FRICTION, intruder__shape="disk", drive__amplitude=3.0, drive__period=5.0, contact__mu=0.1),
-                        Cell(SMALL_FRICTION, intruder__shape="disk", drive__amplitude=a, drive__period=5.0), +1)
-                for a in (1.0, 0.5)] + [
-                compare("disk, T = 2: A = 3 (session 2) below A = 1",
-                        Cell(SMALL_SESSION2, intruder__shape="disk", drive__period=2.0),
-                        Cell(SMALL_FRICTION, intruder__shape="disk", drive__amplitude=1.0, drive__period=2.0), -1)])}),
+            # the disk at A = 3 sinks at T = 2 and rises at T = 5 on this bed (finding 1)
+            "small preset": (small, small_amplitudes(SMALL_TODAY, "disk", 2.0, -1, **today)
+                             + small_amplitudes(SMALL_TODAY, "disk", 5.0, +1, **today))}),
         (4, "rise rates order the shapes disk > narrow rectangle > square > wide rectangle > triangle", {
             "paper's depth": (depth, in_order(DEPTH_A5, "A = 5", [3.0, 4.0, 5.0, 6.0])
                               + in_order(DEPTH_A3, "A = 3", [3.0, 4.0, 5.0, 6.0, 8.0])),
@@ -840,7 +852,7 @@ def paper_findings():
 
 
 FINDING_SOURCES = DEPTH_A5 + DEPTH_A3 + ["results/paper_depth/box", "results/paper_depth/seeds"] + CLOCK_A5 + CLOCK_A3 \
-    + SMALL_POUR \
+    + SMALL_POUR + SMALL_MAP \
     + DEPTH_FRICTION + DEPTH_SMALL_A + SMALL_FRICTION + SMALL_SESSION2
 TABLES += [
     {"name": "findings", "kind": findings_table, "findings": paper_findings, "scales": ["paper's depth", "paper's clock", "small preset"],
