@@ -333,6 +333,24 @@ class FigureFilesTest(DataDirs):
         boundaryplots.plot_boundary(d, os.path.join(d, "one"), ["png"], report)
         self.assert_files(os.path.join(d, "one"), ["boundary.png"])
 
+    def test_boundary_map_marks_the_models_t_rise_per_row(self):
+        """T_rise per --over value from the runs' model.json and config.toml; a row whose runs give two
+        values (the model depends on the varied key) gets none; runs without a model are skipped."""
+        from wiggleplot import boundaryplots
+        d = os.path.join(self.tmp, "boundary_model")
+        runs = [("a3_T2_s1", 3.0, 2.83), ("a3_T5_s1", 3.0, 2.83), ("a5_T2_s1", 5.0, 3.1), ("a5_T5_s1", 5.0, 3.2),
+                ("a4_T2_s1", 4.0, None)]
+        for name, amplitude, t_rise in runs:
+            case = os.path.join(d, "cases", name)
+            os.makedirs(case, exist_ok=True)
+            with open(os.path.join(case, "config.toml"), "w") as f:
+                f.write(f"[drive]\namplitude = {amplitude}\n")
+            if t_rise is not None:
+                with open(os.path.join(case, "model.json"), "w") as f:
+                    json.dump({"T_rise": t_rise, "curve": []}, f)
+        self.assertEqual(boundaryplots.model_t_rise(d, "drive.amplitude"), {3.0: 2.83})
+        self.assertEqual(boundaryplots.model_t_rise(os.path.join(self.tmp, "nowhere"), ""), {})
+
     def test_movie_trail_is_the_path_so_far(self):
         traj = {"t": np.array([0.0, 0.5, 1.0, 1.5]), "x": np.array([30.0, 31.0, 30.0, 29.0]),
                 "y": np.array([25.0, 25.5, 26.0, 26.5])}
