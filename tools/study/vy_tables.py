@@ -253,21 +253,39 @@ def pivot(spec):
 
 
 def paired_steps(spec):
-    """Rows x steps of spec["key"] (from one value to the next): each cell the change of V_y on each
-    bed run at both values (a paired difference: the same bed, so the bed's own scatter cancels),
-    their mean +- standard error over the beds that have both."""
+    """Rows x steps of spec["key"] (from one value to the next, then from the first to the last):
+    each cell the change of V_y on each bed run at both values (a paired difference: the same bed,
+    so the bed's own scatter cancels), their mean +- standard error over the beds that have both.
+    Under the table, one bed's standard deviation of a change, pooled over the steps' cells of two
+    beds or more, and the changes it resolves (mean at least RESOLVED x that / sqrt(beds) from zero)."""
     grid = grid_of(spec, spec["key"])
-    steps = list(zip(spec["values"], spec["values"][1:]))
+    values = spec["values"]
+    steps = list(zip(values, values[1:])) + [(values[0], values[-1])]
     head = spec["row_head"] + [f"{spec['label']} {a:g} -> {b:g}" for a, b in steps]
     lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
+    changes = {}   # (row, step): the beds' changes
     for r in spec["rows"]:
         by_value = {v: {c.get("box.seed"): value_of(c, spec.get("value", "vy")) for c in beds(cs, f"{spec['name']}: {r} {v}")}
                     for v, cs in grid.get(r, {}).items()}
         row = list(spec["row_label"](r))
         for a, b in steps:
             both = sorted(set(by_value.get(a, {})) & set(by_value.get(b, {})))
-            row.append(cell_text([by_value[b][s] - by_value[a][s] for s in both], each=True))
+            changes[r, (a, b)] = [by_value[b][s] - by_value[a][s] for s in both]
+            row.append(cell_text(changes[r, (a, b)], each=True))
         lines.append("| " + " | ".join(row) + " |")
+    pooled = [d for (r, step), d in changes.items() if step != steps[-1] and len(d) >= 2]
+    if pooled:
+        dof = sum(len(d) - 1 for d in pooled)
+        spread = math.sqrt(sum((x - mean(d)) ** 2 for d in pooled for x in d) / dof)
+        def named(r):   # "disk, T = 3": the row's labels after the first, each with its column head
+            first, *rest = spec["row_label"](r)
+            return first + "".join(f", {h} = {v}" for h, v in zip(spec["row_head"][1:], rest))
+        resolved = [f"{named(r)}, {spec['label']} {a:g} -> {b:g} ({mean(d):+.3f}, "
+                    f"{mean(d) / (spread / math.sqrt(len(d))):+.1f})"
+                    for (r, (a, b)), d in changes.items() if d and abs(mean(d)) >= RESOLVED * spread / math.sqrt(len(d))]
+        lines += ["", f"One bed's standard deviation of a change, pooled over the {len(pooled)} steps of two beds or "
+                  f"more ({dof} degrees of freedom): {spread:.3f}. Changes at least {RESOLVED:g} standard errors from "
+                  "zero by it (the mean change, then its standard errors): " + ("; ".join(resolved) or "none") + "."]
     return lines, spec["sources"]
 
 
