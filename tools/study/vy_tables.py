@@ -403,7 +403,7 @@ def protocol(c):
 T1000_BEDS = ["results/paper_depth/table1_t1000", "results/paper_depth/table1_t1000_bed2"]
 # At the paper's depth, t = 100: Table 1 (A = 5) and figure 5 (A = 3), each on beds 1 and 2
 DEPTH_A5 = ["results/paper_depth/table1", "results/paper_depth/table1_bed2"]
-DEPTH_A3 = ["results/paper_depth/fig5", "results/paper_depth/fig5_bed2"]
+DEPTH_A3 = ["results/paper_depth/fig5", "results/paper_depth/fig5_bed2", "results/paper_depth/fast_corner"]
 # Figure 6 at the paper's depth (paper_depth_friction.toml): its cells, shape and period by friction
 DEPTH_FRICTION = ["results/paper_depth/friction"]
 DEPTH_SMALL_A = ["results/paper_depth/small_amplitude"]
@@ -494,7 +494,7 @@ TABLES = [
      "cols": [2.0, 2.5], "each": True, "row_head": ["disk, A = 5"], "col_label": lambda t: f"T = {t:g}",
      "row_label": lambda s: {"smooth": "smooth, disk-area mass 25.7 (the defaults)",
                              "glued": "glued 0.5 d spheres, glued-disk mass 9.9 (the paper's construction)"}[s]},
-    shape_by_period("depth_fig5", ["results/paper_depth/fig5"], {}, False),
+    shape_by_period("depth_fig5", ["results/paper_depth/fig5", "results/paper_depth/fast_corner"], {}, False),
     {"name": "depth_fig5_beds", "kind": pivot, "sources": ["results/paper_depth/fig5", "results/paper_depth/fig5_bed2"],
      "row": lambda c: (c.get("intruder.shape"), c.get("drive.period")), "col": "box.seed",
      "rows": [("square", 5.0), ("square", 8.0), ("rect_wide", 5.0), ("rect_wide", 8.0), ("disk", 3.0)],
