@@ -274,9 +274,9 @@ def paired_steps(spec):
             row.append(cell_text(changes[r, (a, b)], each=True))
         lines.append("| " + " | ".join(row) + " |")
     pooled = [d for (r, step), d in changes.items() if step != steps[-1] and len(d) >= 2]
-    if pooled:
-        dof = sum(len(d) - 1 for d in pooled)
-        spread = math.sqrt(sum((x - mean(d)) ** 2 for d in pooled for x in d) / dof)
+    dof = sum(len(d) - 1 for d in pooled)
+    spread = math.sqrt(sum((x - mean(d)) ** 2 for d in pooled for x in d) / dof) if dof else 0.0
+    if spread > 0:   # none when no step has two beds, or (degenerate) every bed changed alike
         def named(r):   # "disk, T = 3": the row's labels after the first, each with its column head
             first, *rest = spec["row_label"](r)
             return first + "".join(f", {h} = {v}" for h, v in zip(spec["row_head"][1:], rest))
