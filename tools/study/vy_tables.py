@@ -404,13 +404,14 @@ T1000_BEDS = ["results/paper_depth/table1_t1000", "results/paper_depth/table1_t1
 # At the paper's depth, t = 100: Table 1 (A = 5) and figure 5 (A = 3), each on beds 1 and 2
 DEPTH_A5 = ["results/paper_depth/table1", "results/paper_depth/table1_bed2"]
 DEPTH_A3 = ["results/paper_depth/fig5", "results/paper_depth/fig5_bed2", "results/paper_depth/fast_corner"]
-# Figure 6 at the paper's depth (paper_depth_friction.toml): its cells, shape and period by friction
-DEPTH_FRICTION = ["results/paper_depth/friction"]
+# Figure 6 at the paper's depth: the disk and the square (paper_depth_friction.toml), the other three shapes
+# (paper_depth_friction_shapes.toml); its cells, shape and period by friction
+DEPTH_FRICTION = ["results/paper_depth/friction", "results/paper_depth/friction_shapes"]
 DEPTH_SMALL_A = ["results/paper_depth/small_amplitude"]
 AMPLITUDES = [0.5, 1.0, 3.0, 5.0]          # A = 0.5 and 1 (paper_depth_small_amplitude.toml), figure 5's 3, Table 1's 5
 AMPLITUDE_PERIODS = [1.0, 3.0, 5.0, 8.0]
 FRICTION_MUS = [0.0, 0.1, 0.3, 0.5]
-FRICTION_ROWS = [(shape, t) for shape in ("disk", "square") for t in (3.0, 5.0)]
+FRICTION_ROWS = [(shape, t) for shape in SHAPES for t in (3.0, 5.0)]
 
 TABLES = [
     # ---- docs/VALIDATION.md, the small preset (60 d wide, intruder 25 d deep)
@@ -715,7 +716,10 @@ CLOCK_A3 = ["results/paper_depth/fig2_t1000"]
 SMALL_SESSION2 = ["docs/figures/small_fig5_results.csv"]   # disk and triangle, A = 3, bed 1, session 2's engine
 SMALL_POUR = ["results/pour_protocol_small"]
 SMALL_FRICTION = ["results/small_friction_amplitude"]
-SMALL_MAP = ["results/boundary/small_pd_disk"]   # the disk's rise/sink map, A = 1-5, beds 1-3 (`wiggle boundary`)
+# The disk's and the triangle's rise/sink maps, A = 1-5, beds 1-3 (`wiggle boundary`)
+SMALL_MAP = ["results/boundary/small_pd_disk", "results/boundary/small_pd_triangle"]
+SMALL_MAP_SHAPES = ["disk", "triangle"]
+SMALL_MAP_AMPLITUDES = [3.0, 4.0, 5.0]   # the findings for A >= 3
 # Today's engine on the small preset's lattice beds at mu = 0.1 (a run in two folders counts once)
 SMALL_TODAY = SMALL_MAP + SMALL_POUR + SMALL_FRICTION
 SMALL_TODAY_WHERE = {"bed__pour": "lattice", "contact__mu": 0.1}
@@ -781,7 +785,7 @@ def sinks(sources, label, shape, **where):
 
 def friction(sources, label, shape, **where):
     """Finding 6: each step up in mu raises the rate."""
-    mus = sorted({c.get("contact.mu") for c in load(sources[0]) if c.get("intruder.shape") == shape})
+    mus = sorted({c.get("contact.mu") for s in sources for c in load(s) if c.get("intruder.shape") == shape})
     cell = lambda mu: Cell(sources, intruder__shape=shape, contact__mu=mu, **where)  # noqa: E731
     return [compare(f"{label}: mu = {b:g} above mu = {a:g}", cell(b), cell(a), +1) for a, b in zip(mus, mus[1:])]
 
@@ -826,15 +830,15 @@ def paper_findings():
         (1, "for A >= 3 the intruder sinks at short periods and rises at long ones", {
             "paper's depth": (depth, sinks_then_rises(DEPTH_A5, "A = 5", SHAPES) + sinks_then_rises(DEPTH_A3, "A = 3", SHAPES)),
             "paper's clock": (clock, sinks_then_rises(CLOCK_A5, "A = 5", SHAPES) + sinks_then_rises(CLOCK_A3, "A = 3", SHAPES)),
-            "small preset": (small, [c for a in (3.0, 4.0, 5.0)
-                                     for c in sinks_then_rises(SMALL_TODAY, f"A = {a:g}", ["disk"], drive__amplitude=a, **today)]
-                             + sinks_then_rises(SMALL_SESSION2, "A = 3 (session 2)", ["triangle"]))}),
+            "small preset": (small, [c for a in SMALL_MAP_AMPLITUDES
+                                     for c in sinks_then_rises(SMALL_TODAY, f"A = {a:g}", SMALL_MAP_SHAPES,
+                                                               drive__amplitude=a, **today)])}),
         (2, "the rise rate has a maximum in T", {
             "paper's depth": (depth, has_maximum(DEPTH_A5, "A = 5", SHAPES) + has_maximum(DEPTH_A3, "A = 3", SHAPES)),
             # Table 1's t = 1000 periods stop at T = 3-4, below the t = 100 grid's maxima, and figure 2's are 1 and 5
             "paper's clock": (clock, [], "not judged: its periods stop below the maxima"),
-            "small preset": (small, [c for a in (3.0, 4.0, 5.0)
-                                     for c in has_maximum(SMALL_TODAY, f"A = {a:g}", ["disk"], drive__amplitude=a, **today)]
+            "small preset": (small, [c for a in SMALL_MAP_AMPLITUDES
+                                     for c in has_maximum(SMALL_TODAY, f"A = {a:g}", SMALL_MAP_SHAPES, drive__amplitude=a, **today)]
                              + has_maximum(SMALL_SESSION2, "A = 3 (session 2)", ["disk"]))}),
         (3, "at A = 0.5 and 1 the intruder hardly moves", {
             # the paper's way at A = 3: every shape sinks at T = 1 (finding 1); at T = 5 the disk rises and
@@ -850,12 +854,16 @@ def paper_findings():
                               + in_order(DEPTH_A3, "A = 3", [3.0, 4.0, 5.0, 6.0, 8.0])),
             "paper's clock": (clock, in_order(CLOCK_A5, "A = 5", [3.0, 4.0, 5.0, 6.0])
                               + in_order(CLOCK_A3, "A = 3", [3.0, 4.0, 5.0, 6.0, 8.0])),
-            "small preset": (small, in_order(SMALL_SESSION2, "A = 3 (session 2)", [3.0, 5.0, 8.0]),
-                             "the disk and the triangle only")}),
+            "small preset": (small, [c for a in SMALL_MAP_AMPLITUDES
+                                     for c in in_order(SMALL_TODAY, f"A = {a:g}",
+                                                       [t for t in periods(SMALL_TODAY, drive__amplitude=a, **today) if t >= 3],
+                                                       drive__amplitude=a, **today)],
+                             "the disk and the triangle, and at A = 3, T = 5 the square (one bed)")}),
         (5, "the triangle sinks in most of the grid", {
             "paper's depth": (depth, sinks(DEPTH_A5, "A = 5", "triangle") + sinks(DEPTH_A3, "A = 3", "triangle")),
             "paper's clock": (clock, sinks(CLOCK_A5, "A = 5", "triangle") + sinks(CLOCK_A3, "A = 3", "triangle")),
-            "small preset": (small, sinks(SMALL_SESSION2, "A = 3 (session 2)", "triangle"))}),
+            "small preset": (small, [c for a in SMALL_MAP_AMPLITUDES
+                                     for c in sinks(SMALL_TODAY, f"A = {a:g}", "triangle", drive__amplitude=a, **today)])}),
         (6, "more friction, faster rise", {
             "paper's depth": (depth, [step for shape, t in FRICTION_ROWS
                                       for step in friction(DEPTH_FRICTION, f"{shape}, A = 3, T = {t:g}", shape,
