@@ -846,9 +846,11 @@ def paper_findings():
             "paper's depth": (depth, [c for shape in SHAPES for c in small_amplitudes(DEPTH_SMALL_A + DEPTH_A3, shape, 1.0, -1)]
                               + small_amplitudes(DEPTH_SMALL_A + DEPTH_A3, "disk", 5.0, +1)
                               + small_amplitudes(DEPTH_SMALL_A + DEPTH_A3, "triangle", 5.0, -1)),
-            # the disk at A = 3 sinks at T = 2 and rises at T = 5 on this bed (finding 1)
+            # at A = 3 on this bed the disk sinks at T = 2 and rises at T = 5 (finding 1), the triangle sinks at both
             "small preset": (small, small_amplitudes(SMALL_TODAY, "disk", 2.0, -1, **today)
-                             + small_amplitudes(SMALL_TODAY, "disk", 5.0, +1, **today))}),
+                             + small_amplitudes(SMALL_TODAY, "disk", 5.0, +1, **today)
+                             + small_amplitudes(SMALL_TODAY, "triangle", 2.0, -1, **today)
+                             + small_amplitudes(SMALL_TODAY, "triangle", 5.0, -1, **today))}),
         (4, "rise rates order the shapes disk > narrow rectangle > square > wide rectangle > triangle", {
             "paper's depth": (depth, in_order(DEPTH_A5, "A = 5", [3.0, 4.0, 5.0, 6.0])
                               + in_order(DEPTH_A3, "A = 3", [3.0, 4.0, 5.0, 6.0, 8.0])),
