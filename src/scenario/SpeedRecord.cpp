@@ -3,7 +3,6 @@
 #include <fcntl.h>
 #include <unistd.h>
 
-#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -11,6 +10,7 @@
 
 #include "core/Format.h"
 #include "core/Machine.h"
+#include "core/Median.h"
 #include "physics/ForceKernels.h"
 #include "scenario/BedMaker.h"
 
@@ -101,11 +101,9 @@ std::optional<MeasuredSpeed> measuredSpeed(const RunConfig& config, double parti
   if (ofThisSize) speeds.swap(sameSize);
   if (speeds.empty()) return std::nullopt;
   if (speeds.size() > lastRuns) speeds.erase(speeds.begin(), speeds.end() - lastRuns);
-  std::sort(speeds.begin(), speeds.end());
-  const std::size_t n = speeds.size();
   MeasuredSpeed m;
-  m.nsPerParticleStep = n % 2 ? speeds[n / 2] : 0.5 * (speeds[n / 2 - 1] + speeds[n / 2]);
-  m.runs = n;
+  m.nsPerParticleStep = median(speeds);
+  m.runs = speeds.size();
   m.sameSize = ofThisSize;
   m.path = speedLogPath(config);
   m.buildKind = kind;

@@ -395,17 +395,8 @@ class Coordinator {
     resultsDirty_ = false;
   }
 
-  // Measured ns per particle-step over every finished case (this session and earlier ones), or
-  // the cost model's constant before any has finished.
-  double nsPerParticleStep() const {
-    double wall = 0.0, work = 0.0;
-    for (const CaseResult& r : results_) {
-      if (r.status != "ok" || r.particleSteps <= 0.0) continue;
-      wall += r.runWallSeconds;
-      work += r.particleSteps;
-    }
-    return work > 0.0 ? 1e9 * wall / work : plan_.speed.ns;
-  }
+  // Measured over every finished case (this session and earlier ones), or the cost model's.
+  double nsPerParticleStep() const { return sweepNsPerParticleStep(results_, plan_.speed.ns); }
 
   // A running case's wall seconds left: its own estimate (progress.json, from the pace of its
   // own steps) once it has one; before that, or from a wiggle that writes none, the cost estimate

@@ -6,6 +6,7 @@
 
 #include "core/Error.h"
 #include "core/Format.h"
+#include "core/Median.h"
 #include "io/AtomicFile.h"
 #include "io/Config.h"
 #include "scenario/RunSummary.h"
@@ -64,6 +65,13 @@ std::string joinedWarnings(const std::vector<std::string>& warnings) {
   std::string out;
   for (const std::string& w : warnings) out += (out.empty() ? "" : " | ") + w;
   return out;
+}
+
+double sweepNsPerParticleStep(const std::vector<CaseResult>& results, double fallback) {
+  std::vector<double> each;
+  for (const CaseResult& r : results)
+    if (r.status == "ok" && r.particleSteps > 0.0) each.push_back(1e9 * r.runWallSeconds / r.particleSteps);
+  return each.empty() ? fallback : median(std::move(each));
 }
 
 CaseResult readCaseSummary(const std::string& runDir) {

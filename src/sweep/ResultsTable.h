@@ -43,6 +43,12 @@ bool caseFinished(const std::string& runDir);
 // wiggle::Error when the file is missing or unreadable.
 CaseResult readCaseSummary(const std::string& runDir);
 
+// The sweep's pace for its ETA [ns per particle-step]: the median over the finished cases of each
+// one's stepping time per particle-step, or `fallback` (the cost model's) before any has finished.
+// A median, not the total time over the total work: a case paused for hours (SIGSTOP while the
+// machine does a benchmark) is one slow case and moves the pace by one place, not by its hours.
+double sweepNsPerParticleStep(const std::vector<CaseResult>& results, double fallback);
+
 // One row's inputs, which each fixed column reads its cell from.
 struct ResultRow {
   const SweepCase& sweepCase;
