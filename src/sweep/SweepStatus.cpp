@@ -9,6 +9,7 @@
 
 #include "core/Error.h"
 #include "core/Format.h"
+#include "core/Median.h"
 #include "io/AtomicFile.h"
 #include "io/FileLock.h"
 #include "scenario/Experiment.h"
@@ -55,8 +56,8 @@ SweepStatus readSweepStatus(const std::string& dir) {
     s.jobs = start->jobs;
     s.name = start->name;
   }
-  double finishedWall = 0.0, casesLeft = 0.0;
-  int finished = 0;
+  double casesLeft = 0.0;
+  std::vector<double> finishedWall;  // each finished case's wall time
   for (std::size_t r = 1; r < rows.size(); ++r) {
     const auto& row = rows[r];
     if (row.size() < header.size()) throw Error(resultsPath + ": row " + std::to_string(r + 1) + " is short");
@@ -78,8 +79,7 @@ SweepStatus readSweepStatus(const std::string& dir) {
         c.warnings = readCaseSummary(caseDir).warnings;
       c.vy = number(row[vyAt]);
       c.wallSeconds = number(row[wallAt]);
-      finishedWall += c.wallSeconds;
-      ++finished;
+      finishedWall.push_back(c.wallSeconds);
     } else if (c.status == "running") {
       // How far it is: its progress.json, which the run rewrites at each stage and every few seconds.
       const RunProgress progress = readRunProgress(caseDir).value_or(RunProgress{"starting"});
@@ -92,7 +92,7 @@ SweepStatus readSweepStatus(const std::string& dir) {
     }
     s.cases.push_back(std::move(c));
   }
-  if (finished > 0) s.etaSeconds = finishedWall / finished * casesLeft / std::max(1, s.jobs);
+  if (!finishedWall.empty()) s.etaSeconds = median(finishedWall) * casesLeft / std::max(1, s.jobs);
   return s;
 }
 
@@ -130,7 +130,7 @@ std::string formatSweepStatus(const SweepStatus& s) {
   else if (s.etaSeconds < 0)
     out << "time to go: unknown until a case has finished\n";
   else
-    out << "time to go: about " << formatDuration(s.etaSeconds) << " (estimate: the finished cases' mean wall time x "
+    out << "time to go: about " << formatDuration(s.etaSeconds) << " (estimate: the finished cases' median wall time x "
         << "the cases left, over " << std::max(1, s.jobs) << " job" << (std::max(1, s.jobs) > 1 ? "s" : "")
         << "; beds still to make are not counted)\n";
   return out.str();

@@ -27,8 +27,9 @@ struct SweepStatus {
   std::vector<CaseStatus> cases;
   bool sweepRunning = false;  // a wiggle sweep holds the directory's lock now
   int jobs = 0;               // cases at once, from sweep.json (0 = unknown)
-  // Seconds to go: the finished cases' mean wall time, times the cases left (a running case counts
-  // for what it has left), over the jobs; negative when nothing has finished yet.
+  // Seconds to go: the finished cases' median wall time (a case paused for hours moves it by one
+  // place only), times the cases left (a running case counts for what it has left), over the jobs;
+  // negative when nothing has finished yet.
   double etaSeconds = -1.0;
 };
 

@@ -20,8 +20,9 @@ namespace fs = std::filesystem;
 using testing_support::errorOf;
 using testing_support::ScratchDir;
 
-// A sweep of five cases: two done (wall 100 s and 300 s), one failed, one running a quarter through
-// its steps, one pending, and one that results.csv calls ok but whose summary.json is missing.
+// A sweep of seven cases: three done (wall 100 s, 300 s, and 5000 s for one paused for most of its
+// run), one failed, one running a quarter through its steps, one pending, and one that results.csv
+// calls ok but whose summary.json is missing.
 class SweepStatusTest : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -32,12 +33,14 @@ class SweepStatusTest : public ::testing::Test {
                         "c,cases/c,failed,,,the run blew up at t = 3,\n"
                         "d,cases/d,running,,,,\n"
                         "e,cases/e,pending,,,,\n"
-                        "f,cases/f,ok,0.1,50,,\n");
-    for (const char* name : {"a", "b", "c", "d", "e", "f"})
+                        "f,cases/f,ok,0.1,50,,\n"
+                        "g,cases/g,ok,0.2,5000,,\n");
+    for (const char* name : {"a", "b", "c", "d", "e", "f", "g"})
       fs::create_directories(dir_ / (std::string("cases/") + name));
     RunSummary ok;
     ok.status = "ok";
     writeFileAtomically(dir_ / "cases/a/summary.json", toJson(ok).dump());
+    writeFileAtomically(dir_ / "cases/g/summary.json", toJson(ok).dump());
     ok.warnings = {"short window"};
     writeFileAtomically(dir_ / "cases/b/summary.json", toJson(ok).dump());
     writeRunProgress(dir_ / "cases/d", RunProgress{"running", 0.25, 25.0, 100.0, 60.0});
@@ -51,7 +54,7 @@ TEST_F(SweepStatusTest, EachCaseIsInTheStateItsFilesShow) {
   EXPECT_EQ(s.name, "demo");
   EXPECT_EQ(s.jobs, 2);
   EXPECT_FALSE(s.sweepRunning);  // nothing holds the directory's lock
-  ASSERT_EQ(s.cases.size(), 6u);
+  ASSERT_EQ(s.cases.size(), 7u);
   EXPECT_EQ(s.cases[0].status, "ok");
   EXPECT_EQ(s.cases[0].vy, 0.25);
   EXPECT_EQ(s.cases[1].warnings, std::vector<std::string>{"short window"});
@@ -65,18 +68,18 @@ TEST_F(SweepStatusTest, EachCaseIsInTheStateItsFilesShow) {
   EXPECT_EQ(s.cases[5].error.rfind("results.csv says ok, but", 0), 0u) << s.cases[5].error;
 }
 
-TEST_F(SweepStatusTest, TimeToGoIsTheMeanFinishedWallTimesWhatIsLeftOverTheJobs) {
+TEST_F(SweepStatusTest, TimeToGoIsTheMedianFinishedWallTimesWhatIsLeftOverTheJobs) {
   const SweepStatus s = readSweepStatus(dir_.path().string());
-  // Finished: a and b, mean (100 + 300) / 2 = 200 s. Left: d's three quarters, e and f whole = 2.75
-  // cases, over 2 jobs.
-  EXPECT_DOUBLE_EQ(s.etaSeconds, 200.0 * 2.75 / 2.0);
+  // Finished: a, b and g, median 300 s (the paused g does not set it; the mean would be 1800 s).
+  // Left: d's three quarters, e and f whole = 2.75 cases, over 2 jobs.
+  EXPECT_DOUBLE_EQ(s.etaSeconds, 300.0 * 2.75 / 2.0);
   const std::string text = formatSweepStatus(s);
-  EXPECT_NE(text.find("6 cases: 2 done, 1 running, 1 failed, 2 pending"), std::string::npos) << text;
+  EXPECT_NE(text.find("7 cases: 3 done, 1 running, 1 failed, 2 pending"), std::string::npos) << text;
   EXPECT_NE(text.find("running  d (25 % of its run)  [stale: interrupted]"), std::string::npos) << text;
   EXPECT_NE(text.find("failed   c: the run blew up at t = 3"), std::string::npos) << text;
   EXPECT_NE(text.find("warning  b: short window"), std::string::npos) << text;
   const auto json = nlohmann::json::parse(sweepStatusJson(s));
-  EXPECT_DOUBLE_EQ(json["eta_s"].get<double>(), 275.0);
+  EXPECT_DOUBLE_EQ(json["eta_s"].get<double>(), 412.5);
   EXPECT_TRUE(json["cases"][2]["vy"].is_null());  // a value only for a finished case
   EXPECT_EQ(json["cases"][3]["fraction"].get<double>(), 0.25);
 }
