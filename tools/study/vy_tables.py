@@ -791,13 +791,22 @@ def friction(sources, label, shape, **where):
 
 
 def table1_range(sources, **where):
-    """Finding 7 for each shape: at or below zero at the paper's lower end, rising at its upper end."""
+    """Finding 7 for each shape: not rising at the paper's lower end, rising at its upper end; where a
+    scale did not run that period, the nearest period it ran on the far side of the range (below the
+    lower end, above the upper), where the paper's range says the same."""
     out = []
     for shape, (lo, hi) in PAPER_RANGE.items():
-        out.append(compare(f"{shape}: not rising at T = {lo:g} (the paper's lower end)",
-                           Cell(sources, intruder__shape=shape, drive__period=lo, **where), None, -1))
-        out.append(compare(f"{shape}: rising at T = {hi:g} (the paper's upper end)",
-                           Cell(sources, intruder__shape=shape, drive__period=hi, **where), None, +1))
+        ts = periods(sources, intruder__shape=shape, **where)
+        cell = lambda t: Cell(sources, intruder__shape=shape, drive__period=t, **where)  # noqa: E731
+        below, above = [t for t in ts if t <= lo], [t for t in ts if t >= hi]
+        if below:
+            t = below[-1]
+            end = "the paper's lower end" if t == lo else f"below the paper's lower end, {lo:g}"
+            out.append(compare(f"{shape}: not rising at T = {t:g} ({end})", cell(t), None, -1))
+        if above:
+            t = above[0]
+            end = "the paper's upper end" if t == hi else f"above the paper's upper end, {hi:g}"
+            out.append(compare(f"{shape}: rising at T = {t:g} ({end})", cell(t), None, +1))
     return out
 
 
@@ -874,7 +883,8 @@ def paper_findings():
                              + friction(SMALL_FRICTION, "square, A = 3, T = 5", "square"))}),
         (7, "each shape starts rising where the paper's Table 1 says (A = 5)", {
             "paper's depth": (depth, table1_range(DEPTH_A5)),
-            "paper's clock": (clock, table1_range(CLOCK_A5))}),
+            "paper's clock": (clock, table1_range(CLOCK_A5)),
+            "small preset": (small, table1_range(SMALL_TODAY, drive__amplitude=5.0, **today))}),
     ])
     return _FINDINGS
 
