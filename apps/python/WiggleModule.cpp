@@ -111,7 +111,8 @@ class PyCase {
           "save: the Python case writes no dump frames, so a run continued from its checkpoint would miss "
           "them: make the case with run.dump_interval = 0 (case.frame() gives a frame whenever you ask)");
     const std::string configToml = toToml(config);
-    prepareRunDirectory(dir, config, configToml, /*resume=*/false);  // as `wiggle run --out DIR` starts one
+    // As `wiggle run --out DIR` starts one, holding the directory while the checkpoint is written.
+    const FileLock writing = prepareRunDirectory(dir, config, configToml, /*resume=*/false);
     writeCheckpoint(dir, configToml, *world_, record_, fields_);
   }
 

@@ -238,6 +238,17 @@ class SweepDataTest(DataDirs):
         page = htmlreport.render(self.sweep_dir, status, load_sweep(self.sweep_dir), [], [])
         self.assertIn("warning: V_y is measured over 0.9 drive periods", page)
 
+    def test_report_marks_only_the_cases_no_process_runs(self):
+        from wiggleplot import htmlreport
+        from wiggleplot.data import load_sweep
+        running = {"status": "running", "error": "", "vy": None, "wall_s": None, "fraction": 0.25, "warnings": []}
+        status = {"name": "s", "sweep_running": True, "eta_s": None, "text": "",
+                  "cases": [dict(running, name="case_001", interrupted=False),
+                            dict(running, name="case_002", interrupted=True)]}
+        page = htmlreport.render(self.sweep_dir, status, load_sweep(self.sweep_dir), [], [])
+        self.assertEqual(page.count("running (25 %)"), 1)
+        self.assertEqual(page.count("running (25 %; interrupted)"), 1)
+
     def test_rate_map_grid(self):
         sweep = sweepplots.Sweep(self.sweep_dir, quiet_report())
         amps, periods, grid, counts = sweepplots.rate_map(sweep, "triangle", sweep.rows)

@@ -146,9 +146,9 @@ def render(sweep_dir, status, table, figures, notes):
         get = (lambda key: row[key] if row is not None and key in row.index else None)
         state = c["status"]
         shown = STATUS_WORDS.get(state, state)
-        if state == "running":  # how far it got; with no sweep holding the directory, it was interrupted
+        if state == "running":  # how far it got, and whether no process runs it now
             details = [f"{100 * c['fraction']:.0f} %"] if c.get("fraction") is not None else []
-            details += [] if status["sweep_running"] else ["interrupted"]
+            details += ["interrupted"] if c.get("interrupted") else []
             shown += f" ({'; '.join(details)})" if details else ""
         cell_notes = ([c["error"]] if c.get("error") else []) + [f"warning: {w}" for w in c.get("warnings") or []]
         out.append(

@@ -529,7 +529,8 @@ bool makeCacheDir(const RunConfig& config, CacheNotes& notes) {
 std::optional<FileLock> lockBedMaking(const RunConfig& config, const std::string& key, bool cacheWritable) {
   if (!cacheWritable) return std::nullopt;
   try {
-    return std::optional<FileLock>(std::in_place, bedCacheDir(config) + "/bed-" + key + ".lock", false, true);
+    return std::optional<FileLock>(std::in_place, bedCacheDir(config) + "/bed-" + key + ".lock", false, true,
+                                   "bed " + key + " is being made");
   } catch (const Error&) {
     return std::nullopt;
   }

@@ -382,10 +382,14 @@ std::string RunOutcome::resultLine() const {
   return line + "; summary in " + summaryPath;
 }
 
-void prepareRunDirectory(const std::string& dir, const RunConfig& config, const std::string& configToml, bool resume) {
+std::string runLockPath(const std::string& dir) { return dir + "/.running.lock"; }
+
+FileLock prepareRunDirectory(const std::string& dir, const RunConfig& config, const std::string& configToml,
+                             bool resume) {
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec) throw Error("cannot create output directory " + dir + ": " + ec.message());
+  FileLock running(runLockPath(dir), false, false, "another wiggle process is running the case in " + dir);
   if (config.run.dumpInterval > 0) fs::create_directories(dir + "/dumps", ec);
   const bool hasCheckpoint = fs::exists(checkpointPath(dir)) || fs::exists(previousCheckpointPath(dir));
   if (!resume && (hasCheckpoint || fs::exists(dir + "/summary.json")))
@@ -400,6 +404,7 @@ void prepareRunDirectory(const std::string& dir, const RunConfig& config, const 
   else
     fs::remove(runWarningsPath(dir), ec);  // a new run has no history
   writeFileAtomically(dir + "/config.toml", configToml);
+  return running;
 }
 
 CachedBed startRun(const Case& run, const BedProgress& progress) {
@@ -414,7 +419,7 @@ RunOutcome runExperiment(const Case& run, const RunOptions& options) {
   const RunConfig& config = run.config;
   const std::string dir = options.outDir;
   const std::string configToml = toToml(config);
-  prepareRunDirectory(dir, config, configToml, options.resume);
+  const FileLock running = prepareRunDirectory(dir, config, configToml, options.resume);
   LogFile log(dir + "/log.txt");
   log.line("wiggle " + versionText() + (options.resume ? " run --resume" : " run") + " in " + dir +
            " with " + std::to_string(omp_get_max_threads()) + (omp_get_max_threads() == 1 ? " thread, " : " threads, ") +

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "io/FileLock.h"
 #include "io/RunConfig.h"
 #include "physics/Intruder.h"
 #include "physics/World.h"
@@ -50,10 +51,17 @@ std::vector<std::string> readRunWarnings(const std::string& runDir);
 // step from here, after World::evaluateForces. Throws wiggle::Error as obtainBed does.
 CachedBed startRun(const Case& run, const BedProgress& progress = {});
 
-// The run directory's rules: made if missing; a run already there is continued only with `resume`,
-// and only by a config that can continue it; leftovers of a write cut short are removed; the
-// config is written. Throws wiggle::Error naming the directory.
-void prepareRunDirectory(const std::string& dir, const RunConfig& config, const std::string& configToml, bool resume);
+// The run directory's rules: made if missing; held by one run at a time (the lock returned, on
+// runLockPath, which the run keeps until it ends); a run already there is continued only with
+// `resume`, and only by a config that can continue it; leftovers of a write cut short are removed;
+// the config is written. Throws wiggle::Error naming the directory.
+[[nodiscard]] FileLock prepareRunDirectory(const std::string& dir, const RunConfig& config,
+                                           const std::string& configToml, bool resume);
+
+// The lock a run holds on its directory while it writes there: a second run given the same
+// directory stops instead of writing beside it, and `wiggle status` sees which cases of a sweep
+// are running whichever process runs them (array tasks leave no trace in results.csv until done).
+std::string runLockPath(const std::string& runDir);
 
 // Runs the case into options.outDir (or continues it there with options.resume).
 RunOutcome runExperiment(const Case& run, const RunOptions& options);

@@ -381,7 +381,7 @@ class Coordinator {
     // One case of several processes': the table is rebuilt from every case directory, under a lock,
     // so that the last process to write has seen every case that finished before it (each writes
     // its summary.json before it takes the lock).
-    FileLock lock(plan_.outDir + "/.results.lock", false, true);
+    FileLock lock(plan_.outDir + "/.results.lock", false, true, "results.csv is being rewritten");
     std::vector<CaseResult> table = results_;
     for (std::size_t c = 0; c < table.size(); ++c) {
       if (c == *only_ || !fs::exists(plan_.cases[c].dir + "/summary.json")) continue;

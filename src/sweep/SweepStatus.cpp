@@ -51,12 +51,13 @@ SweepStatus readSweepStatus(const std::string& dir) {
   const auto warningsIt = std::find(header.begin(), header.end(), "warnings");
   SweepStatus s;
   s.dir = dir;
-  s.sweepRunning = FileLock::heldExclusivelyElsewhere(dir + "/.sweep.lock");
+  s.sweepLock = FileLock::holders(dir + "/.sweep.lock");
   if (const std::optional<SweepStart> start = readSweepStart(dir)) {
     s.jobs = start->jobs;
     s.name = start->name;
   }
   double casesLeft = 0.0;
+  int running = 0;
   std::vector<double> finishedWall;  // each finished case's wall time
   for (std::size_t r = 1; r < rows.size(); ++r) {
     const auto& row = rows[r];
@@ -74,6 +75,13 @@ SweepStatus readSweepStatus(const std::string& dir) {
         c.error = std::string("results.csv says ok, but ") + e.what();
       }
     }
+    // A case whose run holds its directory runs now, whatever results.csv says (a one-case task
+    // writes the table only when its case ends).
+    const bool runHeld = FileLock::holders(runLockPath(caseDir)) != FileLock::Holders::None;
+    if (runHeld && c.status != "ok") {
+      c.status = "running";
+      c.error.clear();
+    }
     if (c.status == "ok") {
       if (warningsIt != header.end() && !row[warningsIt - header.begin()].empty())
         c.warnings = readCaseSummary(caseDir).warnings;
@@ -86,13 +94,16 @@ SweepStatus readSweepStatus(const std::string& dir) {
       c.fraction = progress.fraction;
       c.stage = progress.stage;
       c.warnings = readRunWarnings(caseDir);
+      c.interrupted = !runHeld && s.sweepLock != FileLock::Holders::Exclusive;
+      running += !c.interrupted;
       casesLeft += 1.0 - std::max(0.0, c.fraction);
     } else if (c.status == "pending") {
       casesLeft += 1.0;
     }
     s.cases.push_back(std::move(c));
   }
-  if (!finishedWall.empty()) s.etaSeconds = median(finishedWall) * casesLeft / std::max(1, s.jobs);
+  s.casesAtOnce = std::max({1, s.jobs, running});  // array tasks: as many as run now
+  if (!finishedWall.empty()) s.etaSeconds = median(finishedWall) * casesLeft / s.casesAtOnce;
   return s;
 }
 
@@ -107,15 +118,16 @@ std::string formatSweepStatus(const SweepStatus& s) {
   std::ostringstream out;
   out << "sweep " << s.dir << ": " << s.cases.size() << " cases: " << ok << " done, " << running << " running, "
       << failed << " failed, " << pending << " pending; "
-      << (s.sweepRunning ? "a wiggle sweep is running in it"
-                         : "no wiggle sweep is running in it (run the same `wiggle sweep` or `wiggle boundary` command "
-                           "to continue)")
+      << (s.sweepLock == FileLock::Holders::Exclusive ? "a wiggle sweep is running in it"
+          : s.sweepLock == FileLock::Holders::Shared  ? "one-case `wiggle sweep --case` tasks are running in it"
+                                                      : "no wiggle sweep is running in it (run the same `wiggle sweep` "
+                                                       "or `wiggle boundary` command to continue)")
       << "\n";
   for (const CaseStatus& c : s.cases) {
     if (c.status == "running")
       out << "  running  " << c.name
           << (c.fraction >= 0 ? " (" + formatNumber(100.0 * c.fraction, 3) + " % of its run)" : " (" + c.stage + ")")
-          << (s.sweepRunning ? "" : "  [stale: interrupted]") << "\n";
+          << (c.interrupted ? "  [stale: interrupted]" : "") << "\n";
     else if (c.status == "failed")
       out << "  failed   " << c.name << ": " << c.error << "\n";
     else if (c.status == "pending" && c.error.rfind("results.csv says ok", 0) == 0)
@@ -131,7 +143,7 @@ std::string formatSweepStatus(const SweepStatus& s) {
     out << "time to go: unknown until a case has finished\n";
   else
     out << "time to go: about " << formatDuration(s.etaSeconds) << " (estimate: the finished cases' median wall time x "
-        << "the cases left, over " << std::max(1, s.jobs) << " job" << (std::max(1, s.jobs) > 1 ? "s" : "")
+        << "the cases left, over " << s.casesAtOnce << " job" << (s.casesAtOnce > 1 ? "s" : "")
         << "; beds still to make are not counted)\n";
   return out.str();
 }
@@ -147,11 +159,12 @@ std::string sweepStatusJson(const SweepStatus& s) {
                      {"vy", ok ? json(c.vy) : json(nullptr)},
                      {"wall_s", ok ? json(c.wallSeconds) : json(nullptr)},
                      {"fraction", c.fraction >= 0 ? json(c.fraction) : json(nullptr)},
+                     {"interrupted", c.interrupted},
                      {"warnings", c.warnings}});
   }
   const json out = {{"dir", s.dir},
                     {"name", s.name},
-                    {"sweep_running", s.sweepRunning},
+                    {"sweep_running", s.sweepRunning()},
                     {"jobs", s.jobs},
                     {"eta_s", s.etaSeconds >= 0 ? json(s.etaSeconds) : json(nullptr)},
                     {"text", formatSweepStatus(s)},

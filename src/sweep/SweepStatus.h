@@ -1,9 +1,11 @@
 #pragma once
 // `wiggle status DIR`: a sweep directory at a glance, from what the sweep leaves on disk (results.csv,
-// each case's log.txt, sweep.log, the directory's lock), without touching it: per case done,
-// running (with how far it got), failed (with its error) or pending, and an estimated time to go.
+// each case's progress.json, the directory's lock and each run's), without touching it: per case
+// done, running (with how far it got), failed (with its error) or pending, and an estimated time to go.
 #include <string>
 #include <vector>
+
+#include "io/FileLock.h"
 
 namespace wiggle {
 
@@ -19,17 +21,24 @@ struct CaseStatus {
   double fraction = -1.0;    // running: the fraction of its steps done (its progress.json), else -1
   std::string stage;         // running, before its first step: what its progress.json says it is doing
   std::vector<std::string> warnings;  // ok: summary.json's; running: its warnings.txt so far
+  // running: no process runs it now (neither its run's lock nor a whole sweep's is held): the
+  // sweep that ran it was stopped or killed, and the same command continues it.
+  bool interrupted = false;
 };
 
 struct SweepStatus {
   std::string dir;
   std::string name;  // the sweep's name, from sweep.json (empty when unknown)
   std::vector<CaseStatus> cases;
-  bool sweepRunning = false;  // a wiggle sweep holds the directory's lock now
-  int jobs = 0;               // cases at once, from sweep.json (0 = unknown)
+  // Who holds the directory's lock now: a whole sweep (exclusive), one-case tasks (`--case`, shared)
+  // or nobody.
+  FileLock::Holders sweepLock = FileLock::Holders::None;
+  bool sweepRunning() const { return sweepLock != FileLock::Holders::None; }
+  int jobs = 0;         // cases at once, from sweep.json (0 = unknown)
+  int casesAtOnce = 1;  // what the time to go divides by: the jobs, or the cases running now when more
   // Seconds to go: the finished cases' median wall time (a case paused for hours moves it by one
-  // place only), times the cases left (a running case counts for what it has left), over the jobs;
-  // negative when nothing has finished yet.
+  // place only), times the cases left (a running case counts for what it has left), over
+  // casesAtOnce; negative when nothing has finished yet.
   double etaSeconds = -1.0;
 };
 
@@ -40,7 +49,7 @@ std::string formatSweepStatus(const SweepStatus& status);
 
 // The status as JSON, for `wiggle report` to hand to the plotting package: {"dir", "name",
 // "sweep_running", "jobs", "eta_s" (null when unknown), "text" (what `wiggle status` prints),
-// "cases": [{"name", "status", "error", "vy", "wall_s", "fraction", "warnings"}]} (vy and wall_s null unless ok,
+// "cases": [{"name", "status", "error", "vy", "wall_s", "fraction", "interrupted", "warnings"}]} (vy and wall_s null unless ok,
 // fraction null unless a running case's progress.json says how far it got).
 std::string sweepStatusJson(const SweepStatus& status);
 

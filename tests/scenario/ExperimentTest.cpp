@@ -17,6 +17,7 @@
 #include "core/StopSignal.h"
 #include "io/AtomicFile.h"
 #include "io/Config.h"
+#include "io/FileLock.h"
 #include "io/StateFile.h"
 #include "scenario/BedMaker.h"
 #include "scenario/Checkpoint.h"
@@ -211,6 +212,24 @@ TEST(Experiment, RefusesToOverwriteARunAndKeepsItsFiles) {
   resume.resume = true;
   EXPECT_THROW(runExperiment(prepareCase(other), resume), Error);  // a different config cannot resume this run
   EXPECT_EQ(readFile(dir + "/summary.json"), before);
+}
+
+// Two processes given one directory (two array tasks with the same case, a resume while the run
+// goes on): the second stops before it writes anything, naming the directory.
+TEST(Experiment, ARunningRunsDirectoryIsRefusedToAnother) {
+  const RunConfig config = tinyConfig(scratch(""));
+  const std::string dir = scratch("held");
+  fs::create_directories(dir);
+  RunOptions resume = quiet(dir);
+  resume.resume = true;
+  {
+    const FileLock running(runLockPath(dir), false, false, "");  // as the run writing there holds it
+    const std::string refused = testing_support::errorOf([&] { runExperiment(prepareCase(config), resume); });
+    EXPECT_NE(refused.find("another wiggle process is running the case in " + dir), std::string::npos) << refused;
+    EXPECT_FALSE(fs::exists(dir + "/config.toml"));
+  }
+  EXPECT_EQ(runExperiment(prepareCase(config), resume).status, "ok");       // released: it runs
+  EXPECT_EQ(FileLock::holders(runLockPath(dir)), FileLock::Holders::None);  // and lets go when it ends
 }
 
 TEST(Experiment, GeometryErrorsNameTheKey) {

@@ -1,12 +1,15 @@
 // `wiggle status` read from a sweep directory laid out by hand (sweep/SweepStatus.h): each state a
 // case can be in, the rule that a case results.csv calls ok is done only when its summary says so,
-// and the time-to-go estimate, computed here from the numbers written into the directory.
+// whether a process runs a case now (the directory's lock and each run's), and the time-to-go
+// estimate, computed here from the numbers written into the directory.
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include "io/AtomicFile.h"
+#include "io/FileLock.h"
+#include "scenario/Experiment.h"
 #include "scenario/RunProgress.h"
 #include "scenario/RunSummary.h"
 #include "support/TestSupport.h"
@@ -53,7 +56,7 @@ TEST_F(SweepStatusTest, EachCaseIsInTheStateItsFilesShow) {
   const SweepStatus s = readSweepStatus(dir_.path().string());
   EXPECT_EQ(s.name, "demo");
   EXPECT_EQ(s.jobs, 2);
-  EXPECT_FALSE(s.sweepRunning);  // nothing holds the directory's lock
+  EXPECT_FALSE(s.sweepRunning());  // nothing holds the directory's lock
   ASSERT_EQ(s.cases.size(), 7u);
   EXPECT_EQ(s.cases[0].status, "ok");
   EXPECT_EQ(s.cases[0].vy, 0.25);
@@ -82,6 +85,46 @@ TEST_F(SweepStatusTest, TimeToGoIsTheMedianFinishedWallTimesWhatIsLeftOverTheJob
   EXPECT_DOUBLE_EQ(json["eta_s"].get<double>(), 412.5);
   EXPECT_TRUE(json["cases"][2]["vy"].is_null());  // a value only for a finished case
   EXPECT_EQ(json["cases"][3]["fraction"].get<double>(), 0.25);
+}
+
+// Slurm array tasks: they share the directory's lock and write results.csv only when their case
+// ends, so a case runs when its run holds its own directory's lock, whatever the table says.
+TEST_F(SweepStatusTest, ArrayTasksCasesRunWhereTheirRunsHoldTheirDirectories) {
+  writeSweepStart(dir_.path().string(), SweepStart{"demo", 0, 1});  // jobs unknown: tasks say none
+  writeRunProgress(dir_ / "cases/e", RunProgress{"running", 0.5, 50.0, 100.0, 60.0});
+  const FileLock tasks(dir_ / ".sweep.lock", /*shared=*/true, false, "");
+  const FileLock e(runLockPath(dir_ / "cases/e"), false, false, ""), f(runLockPath(dir_ / "cases/f"), false, false, "");
+  const SweepStatus s = readSweepStatus(dir_.path().string());
+  EXPECT_EQ(s.sweepLock, FileLock::Holders::Shared);
+  EXPECT_TRUE(s.sweepRunning());
+  EXPECT_EQ(s.cases[3].status, "running");  // d: results.csv's word, but no process runs it
+  EXPECT_TRUE(s.cases[3].interrupted);
+  EXPECT_EQ(s.cases[4].status, "running");  // e: pending in the table, its run holds it
+  EXPECT_FALSE(s.cases[4].interrupted);
+  EXPECT_EQ(s.cases[4].fraction, 0.5);
+  EXPECT_EQ(s.cases[5].status, "running");  // f: "ok" without a summary, being run again
+  EXPECT_EQ(s.cases[5].error, "");
+  // Two cases run at once: d's three quarters, e's half and f whole = 2.25 cases of 300 s, over 2.
+  EXPECT_EQ(s.casesAtOnce, 2);
+  EXPECT_DOUBLE_EQ(s.etaSeconds, 300.0 * 2.25 / 2.0);
+  const std::string text = formatSweepStatus(s);
+  EXPECT_NE(text.find("one-case `wiggle sweep --case` tasks are running in it"), std::string::npos) << text;
+  EXPECT_NE(text.find("running  e (50 % of its run)\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("running  d (25 % of its run)  [stale: interrupted]"), std::string::npos) << text;
+  const auto json = nlohmann::json::parse(sweepStatusJson(s));
+  EXPECT_TRUE(json["sweep_running"].get<bool>());
+  EXPECT_TRUE(json["cases"][3]["interrupted"].get<bool>());
+  EXPECT_FALSE(json["cases"][4]["interrupted"].get<bool>());
+}
+
+TEST_F(SweepStatusTest, UnderAWholeSweepItsRunningCasesRun) {
+  const FileLock whole(dir_ / ".sweep.lock", /*shared=*/false, false, "");
+  const SweepStatus s = readSweepStatus(dir_.path().string());
+  EXPECT_EQ(s.sweepLock, FileLock::Holders::Exclusive);
+  EXPECT_FALSE(s.cases[3].interrupted);  // d: the sweep says running and holds the directory
+  const std::string text = formatSweepStatus(s);
+  EXPECT_NE(text.find("a wiggle sweep is running in it"), std::string::npos) << text;
+  EXPECT_EQ(text.find("[stale"), std::string::npos) << text;
 }
 
 TEST_F(SweepStatusTest, WithNothingFinishedTheTimeToGoIsUnknown) {
