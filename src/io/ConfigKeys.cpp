@@ -151,6 +151,10 @@ const std::vector<KeyInfo>& keyTable() {
                        "the friction coefficient the bed is poured with, when it is not the run's contact.mu: the "
                        "bed of that friction, run with contact.mu (a friction study on the same beds); -1 = "
                        "contact.mu")),
+      shapesBed(number("bed.intruder_mass", [](C& c) -> double& { return c.bed.intruderMass; }, atLeast(0),
+                       noBound, "rho d^3",
+                       "the intruder mass the bed is poured around, when it is not the run's: the bed of that "
+                       "mass, run with the run's intruder mass (a mass study on the same beds); 0 = the run's")),
       shapesBed(number("bed.batch_height", [](C& c) -> double& { return c.bed.batchHeight; }, above(0),
                        noBound, "d", "height of each poured layer")),
       shapesBed(choice(

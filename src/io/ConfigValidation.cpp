@@ -103,6 +103,9 @@ void checkShapeKeys(const RunConfig& c) {
     throw Error("bed.mu = " + num(c.bed.mu) +
                 ": the bed is bed.file's, poured with whatever friction it was; "
                 "set one of the two");
+  if (c.bed.intruderMass > 0.0 && !c.bed.file.empty())
+    throw Error("bed.intruder_mass = " + num(c.bed.intruderMass) +
+                ": the bed is bed.file's, poured around whatever intruder mass it was; set one of the two");
   if (c.drive.form == DriveForm::Velocity && c.drive.rampPeriods > 0) {
     throw Error("drive.ramp_periods = " + std::to_string(c.drive.rampPeriods) +
                 ": only with drive.form = \"displacement\" (the velocity form starts from rest already)");

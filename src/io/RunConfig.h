@@ -88,6 +88,9 @@ struct BedDef {
   // bed.mu: the friction coefficient the bed is poured with, when it is not the run's contact.mu
   // (a friction study on one bed per seed); -1 = contact.mu (scenario/BedMaker.h bedMakingConfig).
   double mu = -1.0;
+  // bed.intruder_mass: the intruder mass the bed is poured around, when it is not the run's (a mass
+  // study on one bed per seed and shape); 0 = the run's (scenario/BedMaker.h bedMakingConfig).
+  double intruderMass = 0.0;
   std::string cacheDir;        // bed.cache_dir: where beds are cached ("" = $WIGGLE_CACHE or ~/.cache/wiggle)
   std::string file;            // bed.file: run on the bed in this file instead of the config's own ("" = own)
   // bed.lammps_types: when bed.file is a LAMMPS data file, the role of each atom type; the default

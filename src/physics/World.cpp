@@ -283,6 +283,13 @@ void World::setParameters(const WorldDef& def) {
   prepared_ = false;
 }
 
+void World::setIntruderMass(double mass) {
+  if (!hasIntruder_) throw Error("set an intruder before its mass");
+  if (!(mass > 0) || !std::isfinite(mass)) throw Error("intruder mass must be > 0");
+  clump_.mass = mass;
+  prepared_ = false;
+}
+
 void World::scaleGrainVelocities(double factor) {
   requireFinite(factor, "velocity factor");
   ParticleStore& s = store_;

@@ -97,6 +97,9 @@ class World {
   // or engine settings, run with these): the box width, mass model and density must be the ones
   // the particles were made with. The lists are rebuilt and the forces evaluated afresh.
   void setParameters(const WorldDef& def);
+  // Another total mass for the same intruder atoms (a bed poured around a held intruder of one mass,
+  // run with another); the forces are evaluated afresh, since the mass enters the contacts' meff.
+  void setIntruderMass(double mass);
   // Every grain's velocity and spin multiplied by `factor` (bed making's damped relaxation); the
   // forces are evaluated afresh before the next step, as after any change of the state.
   void scaleGrainVelocities(double factor);

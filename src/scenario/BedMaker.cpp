@@ -112,13 +112,24 @@ RunConfig bedMakingConfig(const RunConfig& config) {
     made.contact.mu = config.bed.mu;
     made.bed.mu = -1.0;
   }
+  if (config.bed.intruderMass > 0.0) {
+    made.intruder.mass = config.bed.intruderMass;
+    made.bed.intruderMass = 0.0;
+  }
+  return made;
+}
+
+ClumpDef bedMakingClump(const RunConfig& config, const ClumpDef& clump) {
+  ClumpDef made = clump;
+  if (config.bed.intruderMass > 0.0) made.mass = config.bed.intruderMass;
   return made;
 }
 
 std::string baseBedKey(const RunConfig& config) { return pouredBedKey(bedMakingConfig(config), kNoIntruder); }
 
-std::string bedKey(const RunConfig& config, const ClumpDef& clump) {
+std::string bedKey(const RunConfig& config, const ClumpDef& runClump) {
   const RunConfig c = bedMakingConfig(config);
+  const ClumpDef clump = bedMakingClump(config, runClump);
   if (c.bed.cavity == BedCavity::Poured) return pouredBedKey(c, clump);
   Hasher h;
   h.addValue(kCarvedFormat);
@@ -613,10 +624,14 @@ CachedBed obtainCarvedBed(const RunConfig& config, const ClumpDef& clump, const 
 CachedBed obtainBed(const RunConfig& config, const ClumpDef& clump, const BedProgress& progress) {
   if (!config.bed.file.empty()) return pinnedBed(config, clump);
   const RunConfig made = bedMakingConfig(config);
-  CachedBed bed = made.bed.cavity == BedCavity::Carved ? obtainCarvedBed(made, clump, progress)
-                                                       : obtainPouredBed(made, clump, bedKey(made, clump), progress);
-  // The bed of another friction (bed.mu): run with this config's. summary.json's bed_key names it.
+  const ClumpDef madeClump = bedMakingClump(config, clump);
+  CachedBed bed = made.bed.cavity == BedCavity::Carved
+                      ? obtainCarvedBed(made, madeClump, progress)
+                      : obtainPouredBed(made, madeClump, bedKey(made, madeClump), progress);
+  // The bed of another friction (bed.mu) or intruder mass (bed.intruder_mass): run with this
+  // config's. summary.json's bed_key names the bed.
   if (config.bed.mu >= 0.0) bed.world.setParameters(worldDefFor(config));
+  if (config.bed.intruderMass > 0.0) bed.world.setIntruderMass(clump.mass);
   return bed;
 }
 

@@ -51,6 +51,11 @@ std::string baseBedKey(const RunConfig& config);
 // keys above are the keys of this config's bed.
 RunConfig bedMakingConfig(const RunConfig& config);
 
+// The clump a case's bed is poured around: the case's own, or with bed.intruder_mass > 0 the same
+// atoms of that mass (the held intruder's mass enters the pour through the contacts' meff), so that
+// the bed is that mass's own; obtainBed then gives the bed's intruder the case's mass to run with.
+ClumpDef bedMakingClump(const RunConfig& config, const ClumpDef& clump);
+
 // Free-surface height: the median over 2-d-wide columns of the highest grain top in the column.
 double freeSurfaceHeight(const World& world);
 

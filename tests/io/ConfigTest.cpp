@@ -69,6 +69,7 @@ std::vector<std::string> differingFields(const RunConfig& a, const RunConfig& b)
   num("bed.pourFraction", a.bed.pourFraction, b.bed.pourFraction);
   num("bed.pourSpeed", a.bed.pourSpeed, b.bed.pourSpeed);
   num("bed.mu", a.bed.mu, b.bed.mu);
+  num("bed.intruderMass", a.bed.intruderMass, b.bed.intruderMass);
   num("bed.settleSpeed", a.bed.settleSpeed, b.bed.settleSpeed);
   num("bed.restEnergy", a.bed.restEnergy, b.bed.restEnergy);
   num("bed.relaxDamping", a.bed.relaxDamping, b.bed.relaxDamping);
@@ -135,6 +136,7 @@ const std::vector<std::tuple<std::string, std::string, std::string>>& everyKey()
       {"bed.relax_damping", "2", "bed.relaxDamping"},
       {"bed.max_time", "500", "bed.maxTime"},
       {"bed.mu", "0.3", "bed.mu"},
+      {"bed.intruder_mass", "9.5", "bed.intruderMass"},
       {"bed.cache_dir", "/tmp/beds", "bed.cacheDir"},
       {"bed.file", "/tmp/bed.bin", "bed.file"},
       {"bed.lammps_types", "\"1=grain 2=base 3=drop 4=base\"", "bed.lammpsTypes"},
@@ -168,7 +170,7 @@ TEST(Config, KeyListIsExactlyTheSpecKeys) {
   std::set<std::string> expected;
   for (const auto& [key, value, field] : everyKey()) expected.insert(key);
   const std::vector<std::string> keys = configKeys();
-  EXPECT_EQ(keys.size(), 52u);
+  EXPECT_EQ(keys.size(), 53u);
   EXPECT_EQ(std::set<std::string>(keys.begin(), keys.end()), expected);
 }
 
@@ -518,6 +520,13 @@ TEST(Config, ShippedPresetsLoad) {
   EXPECT_EQ(paper.run.duration, 1000.0);
   EXPECT_EQ(paper.run.dt, 1e-4);
   EXPECT_EQ(paper.contact.mu, 0.1);
+  // The paper's stated protocol (docs/PHYSICS.md §12): grains poured at random batch by batch, every
+  // intruder of glued 0.5 d spheres with one mass for all shapes.
+  EXPECT_EQ(paper.bed.pour, BedPour::Random);
+  EXPECT_EQ(paper.bed.cavity, BedCavity::Poured);
+  EXPECT_EQ(paper.intruder.surface, IntruderSurface::Glued);
+  EXPECT_EQ(paper.intruder.massRule, MassRule::GluedDisk);
+  EXPECT_EQ(paper.intruder.mass, 0.0);
 }
 
 TEST(Config, DocsListTheCurrentKeys) {

@@ -194,6 +194,45 @@ TEST(BedMaker, BedMuGivesTheBedOfThatFrictionRunWithTheCasesOwn) {
   fs::remove_all(cache);
 }
 
+// bed.intruder_mass: a case run with one intruder mass on the bed poured around another is given
+// that bed (the same key, cache entry and grains) with its own mass; without it, its own bed.
+TEST(BedMaker, BedIntruderMassGivesTheBedOfThatMassRunWithTheCasesOwn) {
+  const OneThread oneThread;
+  const RunConfig defaults = loadRunConfig(std::nullopt, {});
+  const ClumpDef disk = prepareCase(defaults).clump;
+  const std::string heavier = "intruder.mass=" + formatNumber(2 * disk.mass, 17);
+  const RunConfig pinned = loadRunConfig(std::nullopt, {heavier, "bed.intruder_mass=" + formatNumber(disk.mass, 17)});
+  const RunConfig own = loadRunConfig(std::nullopt, {heavier});
+  EXPECT_EQ(prepareCase(pinned).clump.mass, 2 * disk.mass);
+  EXPECT_EQ(bedKey(pinned, prepareCase(pinned).clump), "b8ece11933d4975e");  // the default bed's key
+  EXPECT_NE(bedKey(own, prepareCase(own).clump), "b8ece11933d4975e");
+
+  const std::string cache = scratch("bed-intruder-mass-cache");
+  RunConfig tiny = tinyRandomConfig();
+  tiny.bed.cacheDir = cache;
+  const ClumpDef square = prepareCase(tiny).clump;
+  const CachedBed poured = obtainBed(tiny, square);  // made now around the square of its own mass
+  RunConfig light = tiny;
+  light.intruder.mass = square.mass / 3;
+  light.bed.intruderMass = square.mass;
+  const ClumpDef lightSquare = prepareCase(light).clump;
+  ASSERT_EQ(lightSquare.mass, square.mass / 3);
+  const CachedBed given = obtainBed(light, lightSquare);
+  EXPECT_TRUE(given.fromCache);
+  EXPECT_EQ(given.key, poured.key);
+  EXPECT_EQ(given.world.clump().mass, square.mass / 3);
+  EXPECT_EQ(poured.world.clump().mass, square.mass);
+  const ParticleStore& a = given.world.particles();
+  const ParticleStore& b = poured.world.particles();
+  ASSERT_EQ(given.world.grainCount(), poured.world.grainCount());
+  for (std::uint32_t i = 0; i < given.world.grainCount(); ++i) {  // the same grains where they lay
+    ASSERT_EQ(a.x[i], b.x[i]) << i;
+    ASSERT_EQ(a.y[i], b.y[i]) << i;
+    ASSERT_EQ(a.vx[i], b.vx[i]) << i;
+  }
+  fs::remove_all(cache);
+}
+
 TEST(BedMaker, TinyRandomBedComesToRestAndContinuesToTheSameBits) {
   const OneThread oneThread;
   const RunConfig config = tinyRandomConfig();
@@ -375,7 +414,8 @@ TEST(BedMaker, PaperDepthSweepsRunOnThePresetsBeds) {
         "paper_depth_table1_bed2.toml", "paper_depth_fig5.toml", "paper_depth_fig5_bed2.toml", "paper_depth_t1000.toml",
         "paper_depth_fig2_t1000.toml", "paper_depth_t1000_bed2.toml", "paper_depth_velocity.toml",
         "paper_depth_fields.toml",
-        "paper_depth_friction.toml"}) {  // the friction study at every mu on the preset's beds (bed.mu)
+        "paper_depth_friction.toml",  // the friction study at every mu on the preset's beds (bed.mu)
+        "paper_depth_mass_t1000.toml"}) {  // the glued disk's mass on the preset's beds (bed.intruder_mass)
     for (const SweepCase& c : loadSweepSpec(root + "sweeps/" + file).cases) {
       RunConfig expected = preset;
       expected.box.width = c.config.box.width;
@@ -387,6 +427,23 @@ TEST(BedMaker, PaperDepthSweepsRunOnThePresetsBeds) {
     }
   }
   EXPECT_GE(compared, 30);
+}
+
+TEST(BedMaker, ThePaperBoxSweepRunsOnPaperTomlsBeds) {
+  // results/paper_box/t1000 stands for configs/paper.toml (the paper's stated protocol) only if
+  // each case's bed is the one paper.toml pours for the case's shape.
+  const std::string root = std::string(WIGGLE_SOURCE_DIR) + "/configs/";
+  const RunConfig paper = loadRunConfig(root + "paper.toml", {});
+  int compared = 0;
+  for (const SweepCase& c : loadSweepSpec(root + "sweeps/paper_box_t1000.toml").cases) {
+    RunConfig expected = paper;
+    expected.intruder.shape = c.config.intruder.shape;
+    EXPECT_EQ(bedKey(c.config, prepareCase(c.config).clump), bedKey(expected, prepareCase(expected).clump))
+        << "case " << c.name;
+    EXPECT_EQ(c.config.run.duration, paper.run.duration) << "case " << c.name;
+    ++compared;
+  }
+  EXPECT_GE(compared, 4);
 }
 
 TEST(BedMaker, TheT1000StudiesAreTheT100StudiesRunLonger) {
