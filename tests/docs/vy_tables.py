@@ -4,7 +4,8 @@
     vy_tables.py
 
 Fails (exit 1, one line per changed table line) when a table between `<!-- vy_tables: NAME -->`
-markers in docs/VALIDATION.md or docs/PERFORMANCE.md differs from what the script makes from
+markers in the documents of vy_tables.DOCUMENTS (docs/VALIDATION.md, docs/FINDINGS.md,
+docs/PERFORMANCE.md, README.md, results/*/README.md) differs from what the script makes from
 results/, when a marker names no declared table or a declared table has no markers. Fix: run
 `tools/study/vy_tables.py` and commit the documents. First it checks that the check can fail: a
 document with one digit of a table changed must be reported, and the phase profile's harmonics

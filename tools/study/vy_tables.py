@@ -901,6 +901,43 @@ TABLES += [
 ]
 
 
+# ---- the rise/sink boundaries found by `wiggle boundary` (boundary.json of each search)
+
+BOUNDARIES = [("results/boundary/small_pd_disk", "disk", "small preset"),
+              ("results/boundary/small_pd_triangle", "triangle", "small preset"),
+              ("results/boundary/depth_disk_A5", "disk", "paper-depth preset")]
+
+
+def boundary_table(spec):
+    """One row per search (preset, shape, amplitude): where V_y turns from sinking to rising, the
+    periods where it is indistinguishable from zero, and the runs it took."""
+    head = ["preset", "shape", "A", "sinking -> rising", "V_y indistinguishable from zero at T", "runs"]
+    lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
+    for folder, shape, preset in BOUNDARIES:
+        with open(os.path.join(ROOT, folder, "boundary.json")) as f:
+            study = json.load(f)
+        for search in study["searches"]:
+            amplitude = search.get("over")
+            if amplitude is None:   # a search without --over: the amplitude of its base config
+                amplitude = load(folder)[0].get("drive.amplitude")
+            crossing = "; ".join(f"between T = {c['below']:g} and {c['above']:g}" for c in search["crossings"]) or "none"
+            bands = ", ".join(f"{b['first']:g}" + (f"-{b['last']:g}" if b["last"] != b["first"] else "")
+                              for b in search["neutral_bands"]) or "none"
+            if not search.get("finished"):
+                crossing += " (search not finished)"
+            lines.append("| " + " | ".join([preset, shape, f"{amplitude:g}", crossing, bands,
+                                              str(search["cost"]["runs"])]) + " |")
+    rules = []
+    for folder, _, _ in BOUNDARIES:
+        with open(os.path.join(ROOT, folder, "boundary.json")) as f:
+            study = json.load(f)
+        rule = study["rule"] + (f" (one bed's scatter taken as {study['known_scatter']:g})" if study["known_scatter"] else "")
+        if rule not in rules:
+            rules.append(rule)
+    lines += ["", "(a period sinks or rises when, by each search's boundary.json: " + "; ".join(rules) + ")"]
+    return lines, [b[0] for b in BOUNDARIES]
+
+
 # ---- the answer first: docs/VALIDATION.md's opening page, "Does wiggle reproduce the paper?"
 #
 # Table 1 read by the findings' rule: a period's V_y is "rising" when it is at least RESOLVED
@@ -1003,8 +1040,8 @@ def answer_findings(spec):
             sig, comparisons, *note = by_scale.get(scale, (0.0, []))
             row.append(verdict_cell(sig, comparisons, note))
         lines.append("| " + " | ".join(row) + " |")
-    lines += ["", "(a comparison counts for or against the paper at >= 2 standard errors; every comparison: "
-              "\"The paper's findings\" below)"]
+    lines += ["", "(a comparison counts for or against the paper at >= 2 standard errors; the rule and every "
+              "comparison: docs/FINDINGS.md)"]
     return lines, spec["sources"]
 
 
@@ -1104,9 +1141,12 @@ TABLES += [
     {"name": "answer_differences", "kind": answer_differences, "sources": ANSWER_SOURCES},
     {"name": "answer_protocol", "kind": answer_protocol, "sources": PROTOCOL_FOLDERS},
     {"name": "readme_answer", "kind": readme_answer, "sources": CLOCK_A5, "bare": True},
+    {"name": "boundaries", "kind": boundary_table, "sources": [b[0] for b in BOUNDARIES]},
 ]
 
-DOCUMENTS = ["docs/VALIDATION.md", "docs/PERFORMANCE.md", "README.md"]
+DOCUMENTS = ["docs/VALIDATION.md", "docs/FINDINGS.md", "docs/PERFORMANCE.md", "README.md",
+             "results/paper_depth/box/README.md", "results/paper_depth/fig5/README.md",
+             "results/paper_depth/table1_t1000/README.md", "results/paper_depth/runlength_t300/README.md"]
 
 
 def render(spec):
