@@ -1058,14 +1058,15 @@ def answer_differences(spec):
     small = SMALL_TODAY
     lines = [
         f"- **The square starts rising below the paper's range** (T = {sq_lo:g}-{sq_hi:g} against 3-4): by the paper's clock "
-        f"it rises at T = 3, {cell(CLOCK_A5, intruder__shape='square', drive__period=3.0)}, on both beds. Cause not known. "
-        f"Ruled out at t = 100, one bed each: the paper's glued intruder (T = 3: "
-        f"{cell(glued, intruder__shape='square', drive__period=3.0)}, it still rises); by the paper's clock, the bed "
+        f"it rises at T = 3, {cell(CLOCK_A5, intruder__shape='square', drive__period=3.0)}, and not by one bed's accident "
         "(its two beds give " + ", ".join(f"{v:+.3f}" for v in Cell(CLOCK_A5, intruder__shape="square", drive__period=3.0).values())
-        + "). Not yet measured: the 60 d box against the paper's 300 d and the random pour at t = 1000 (issue 51, below).",
+        + "). Cause not known. Tried without a change of sign (t = 100, one bed): the paper's glued intruder (T = 3: "
+        f"{cell(glued, intruder__shape='square', drive__period=3.0)}). Not yet measured: the 60 d box against the paper's "
+        "300 d and the random pour at t = 1000 (issue 51, below).",
         f"- **The triangle does not rise** (the paper: from T = 4-5): by the paper's clock it sinks at every period run, "
         + ", ".join(f"{beds_text(vs)} at T = {t:g}" for t, vs in tri_cells)
-        + ". This is findings 1 and 7 not reproduced. Cause not known. Ruled out at t = 100, one bed each (T = 4; 6): "
+        + ". This is findings 1 and 7 not reproduced. Cause not known. Tried without a change of sign (t = 100, one bed "
+        "each, T = 4; 6): "
         f"the paper's glued intruder ({cell(tri, intruder__shape='triangle', intruder__surface='glued', drive__period=4.0)}; "
         f"{cell(tri, intruder__shape='triangle', intruder__surface='glued', drive__period=6.0)}) and a random pour "
         f"({cell(tri, intruder__shape='triangle', bed__pour='random', drive__period=4.0)}; "
