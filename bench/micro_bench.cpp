@@ -4,7 +4,7 @@
 //   BM_ContactKernelScalar  the same pairs one at a time through the composed law (the reference)
 //   BM_IntruderContacts addIntruderContactForces: the clump's contacts and force sum in the pile
 //   BM_LaneSqrt, BM_LaneDivide  throughput of the lanes' sqrt and division over varied operands,
-//                      the hardware figures behind docs/PERFORMANCE.md's limit estimate
+//                      the hardware figures behind bench/HISTORY.md's limit estimate
 //   BM_NeighbourBuild  NeighbourList::build on a settled pile, carrying history from the old list
 //   BM_WorldStep       one full World::step of the settled pile with a wiggling disk
 //   BM_FieldFrame      one FieldObserver frame (Phi, v, contact stress on the 61 x 61 grid)

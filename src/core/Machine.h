@@ -17,7 +17,7 @@ double loadAverage();
 // 1-minute load average, rounded), at least 1. OpenMP threads wait for each other at every step's
 // barriers by spinning, so on a core that another process also wants, a run's threads keep waiting
 // for a descheduled partner: measured 1,045 ns per particle-step for 2 threads beside two other
-// jobs on 2 cores, against 55 for 1 thread (docs/PERFORMANCE.md, "Threads on a busy machine").
+// jobs on 2 cores, against 55 for 1 thread (bench/HISTORY.md, "Threads on a busy machine").
 // The thread count never changes a result, only the speed.
 int idleCores();
 // The rule itself, for `cores` available cores and a load average `load`.

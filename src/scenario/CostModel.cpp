@@ -4,7 +4,11 @@
 #include <cmath>
 #include <filesystem>
 #include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
 
+#include "core/Error.h"
 #include "io/Config.h"
 #include "scenario/BedMaker.h"
 #include "scenario/Case.h"
@@ -12,16 +16,96 @@
 
 namespace wiggle {
 
+extern const char* const kCostTableCsv;  // the build's copy of bench/costs.csv (cmake/CostTable.cpp.in)
+
+namespace {
+
+// The fields of one CSV line: commas separate, double quotes enclose a field that holds commas.
+std::vector<std::string> csvFields(const std::string& line) {
+  std::vector<std::string> fields(1);
+  bool quoted = false;
+  for (const char ch : line) {
+    if (ch == '"')
+      quoted = !quoted;
+    else if (ch == ',' && !quoted)
+      fields.emplace_back();
+    else
+      fields.back() += ch;
+  }
+  return fields;
+}
+
+}  // namespace
+
+CostTable parseCostTable(const std::string& csv) {
+  std::istringstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  const std::vector<std::string> head = csvFields(line);
+  const auto column = [&head](const std::string& name) {
+    const auto it = std::find(head.begin(), head.end(), name);
+    if (it == head.end()) throw Error("cost table: no column " + name);
+    return static_cast<std::size_t>(it - head.begin());
+  };
+  const std::size_t particles = column("particles"), threads = column("threads"), code = column("code"),
+                    ns = column("ns_per_particle_step"), machine = column("machine"), source = column("source");
+  CostTable table;
+  for (int number = 2; std::getline(in, line); ++number) {
+    if (line.empty()) continue;
+    const std::vector<std::string> f = csvFields(line);
+    if (f.size() != head.size())
+      throw Error("cost table: line " + std::to_string(number) + " has " + std::to_string(f.size()) + " fields, not " +
+                  std::to_string(head.size()));
+    if (f[code] != "wiggle" || f[threads] != "1") continue;
+    CostTable::Row row;
+    try {
+      row.particles = std::stod(f[particles]);
+      row.nsPerParticleStep = std::stod(f[ns]);
+    } catch (const std::exception&) {
+      throw Error("cost table: line " + std::to_string(number) + ": particles or ns_per_particle_step is not a number");
+    }
+    if (!(row.particles > 0.0) || !(row.nsPerParticleStep > 0.0))
+      throw Error("cost table: line " + std::to_string(number) + ": particles and ns_per_particle_step must be > 0");
+    table.rows.push_back(row);
+    table.machine = f[machine];
+    table.source = f[source];
+  }
+  if (table.rows.empty()) throw Error("cost table: no row of wiggle at one thread");
+  std::sort(table.rows.begin(), table.rows.end(),
+            [](const CostTable::Row& a, const CostTable::Row& b) { return a.particles < b.particles; });
+  return table;
+}
+
+double CostTable::nsPerParticleStep(double particles) const {
+  if (particles <= rows.front().particles) return rows.front().nsPerParticleStep;
+  for (std::size_t i = 1; i < rows.size(); ++i)
+    if (particles <= rows[i].particles) {
+      const Row &a = rows[i - 1], &b = rows[i];
+      return a.nsPerParticleStep +
+             (b.nsPerParticleStep - a.nsPerParticleStep) * (particles - a.particles) / (b.particles - a.particles);
+    }
+  return rows.back().nsPerParticleStep;
+}
+
+const CostTable& committedCostTable() {
+  static const CostTable table = parseCostTable(kCostTableCsv);
+  return table;
+}
+
 SpeedBasis speedBasis(const RunConfig& config) {
   SpeedBasis basis;
-  if (const std::optional<MeasuredSpeed> m = measuredSpeed(config, estimatedParticles(config))) {
+  const double particles = estimatedParticles(config);
+  if (const std::optional<MeasuredSpeed> m = measuredSpeed(config, particles)) {
     basis.ns = m->nsPerParticleStep;
     basis.source = "the median of this machine's last " + std::to_string(m->runs) + " one-thread run" +
                    (m->runs == 1 ? "" : "s") + " of a " + m->buildKind + " build" +
                    (m->sameSize ? " on beds of this size" : " (none yet on a bed of this size)") + " (" + m->path + ")";
   } else {
+    const CostTable& table = committedCostTable();
+    basis.ns = table.nsPerParticleStep(particles);
     basis.source = "no one-thread run of a " + speedBuildKind() +
-                   " build recorded on this machine yet, so the reference machine's figure, docs/SWEEPS.md";
+                   " build recorded on this machine yet, so the committed cost table's figure for a bed of this "
+                   "size (bench/costs.csv: " + table.machine.substr(0, table.machine.find(',')) + "; docs/PERFORMANCE.md)";
   }
   return basis;
 }

@@ -3,18 +3,16 @@
 // a sweep's plan and dry run, its ETA before a case has finished, and `wiggle boundary --dry-run`
 // all ask here (docs/SWEEPS.md, "Cost estimate").
 #include <string>
+#include <vector>
 
 #include "io/RunConfig.h"
 #include "physics/Intruder.h"
 
 namespace wiggle {
 
-// One place for the numbers; docs/SWEEPS.md quotes them and says how they were measured.
+// One place for the numbers; docs/SWEEPS.md quotes them and says how they were measured. The speed
+// itself is not here: it is the committed cost table's (below) until this machine has its own.
 struct CostModel {
-  // Wall time per particle per step of one single-threaded case on this project's reference
-  // machine [ns]: 55 ns, bench/run_bench.sh on the configs/small.toml bed, 1 thread, median of
-  // 3 rounds on the AMD EPYC (Zen 3) machine (docs/PERFORMANCE.md, session 3, 2026-11-22).
-  static constexpr double nsPerParticleStep = 55.0;
   // Simulated time a bed spends per nominal batch (bed.batch_height of the final bed: falling and
   // settling) and on the final relaxation, in sqrt(d/g). Measured on a 60 x 195 d bed (default
   // bed keys, 2026-11-24): 14 poured batches for 10 nominal ones took t = 99, the relaxation to
@@ -29,12 +27,32 @@ struct CostModel {
   static constexpr double dampedRelaxTime = 6.0;
 };
 
+// The committed cost table, bench/costs.csv, as the build embedded it (CMakeLists.txt): the bench
+// script's medians per bed and thread count on one named machine (docs/PERFORMANCE.md). Only the
+// rows of wiggle at one thread are kept: the figure every estimate starts from (a sweep's divides it
+// by its threads).
+struct CostTable {
+  struct Row {
+    double particles = 0.0;
+    double nsPerParticleStep = 0.0;
+  };
+  std::vector<Row> rows;  // by particles, ascending
+  std::string machine;
+  std::string source;
+  // The figure for a bed of `particles`: linear between the table's beds, the smallest or the
+  // largest bed's figure beyond them (a particle-step costs more once the arrays outgrow the caches).
+  double nsPerParticleStep(double particles) const;
+};
+// Parses the table's CSV text (columns as bench/costs.csv); throws Error naming what is wrong.
+CostTable parseCostTable(const std::string& csv);
+const CostTable& committedCostTable();
+
 // The ns per particle-step the estimates use, and where it comes from: once this machine has
 // recorded one-thread runs on this CPU, the median of the last ones (scenario/SpeedRecord.h), of
-// beds of the config's size when there are any; else CostModel::nsPerParticleStep (the reference
-// machine's figure).
+// beds of the config's size when there are any; else the committed cost table's figure for the
+// config's bed size.
 struct SpeedBasis {
-  double ns = CostModel::nsPerParticleStep;
+  double ns = 0.0;
   std::string source;  // for people: "the median of this machine's last 9 one-thread runs (PATH)"
 };
 SpeedBasis speedBasis(const RunConfig& config);

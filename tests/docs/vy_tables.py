@@ -4,7 +4,8 @@
     vy_tables.py
 
 Fails (exit 1, one line per changed table line) when a table between `<!-- vy_tables: NAME -->`
-markers in docs/VALIDATION.md or docs/PERFORMANCE.md differs from what the script makes from
+markers in the documents of vy_tables.DOCUMENTS (docs/VALIDATION.md, docs/FINDINGS.md,
+docs/PERFORMANCE.md, README.md, results/*/README.md) differs from what the script makes from
 results/, when a marker names no declared table or a declared table has no markers. Fix: run
 `tools/study/vy_tables.py` and commit the documents. First it checks that the check can fail: a
 document with one digit of a table changed must be reported, and the phase profile's harmonics
@@ -28,7 +29,7 @@ def check_can_fail():
     digit = next(ch for ch in table[row] if ch.isdigit())
     changed = text.replace(table[row], table[row].replace(digit, str((int(digit) + 1) % 10), 1))
     tables = {spec["name"]: table}
-    again, problems = vy_tables.regenerate(changed, tables, "self-test")
+    again, problems = vy_tables.marked.regenerate(changed, tables, "self-test", "vy_tables")
     return [] if again == text and again != changed and not problems else ["self-test: a changed table went unnoticed"]
 
 

@@ -7,9 +7,11 @@
 #include <filesystem>
 #include <fstream>
 
+#include "core/Error.h"
 #include "io/AtomicFile.h"
 #include "io/Config.h"
 #include "physics/ForceKernels.h"
+#include "scenario/CostModel.h"
 #include "scenario/SpeedRecord.h"
 #include "sweep/SweepPlan.h"
 
@@ -30,12 +32,35 @@ class SpeedRecordTest : public ::testing::Test {
   RunConfig config_;
 };
 
-TEST_F(SpeedRecordTest, NoLogMeansTheReferenceFigure) {
+TEST_F(SpeedRecordTest, NoLogMeansTheCommittedTablesFigureForTheBedsSize) {
   EXPECT_FALSE(measuredSpeed(config_, 3000.0));
-  const SpeedBasis basis = speedBasis(config_);
-  EXPECT_EQ(basis.ns, CostModel::nsPerParticleStep);
-  EXPECT_NE(basis.source.find("no one-thread run of a " + speedBuildKind() + " build recorded"), std::string::npos)
-      << basis.source;
+  const SpeedBasis small = speedBasis(config_);
+  EXPECT_EQ(small.ns, committedCostTable().nsPerParticleStep(estimatedParticles(config_)));
+  EXPECT_NE(small.source.find("no one-thread run of a " + speedBuildKind() + " build recorded"), std::string::npos)
+      << small.source;
+  EXPECT_NE(small.source.find("bench/costs.csv"), std::string::npos) << small.source;
+  // The paper's box costs more per particle-step than the default bed (its arrays outgrow the caches).
+  const RunConfig paper = loadRunConfig(std::nullopt, {"bed.cache_dir=\"" + dir_ + "\"", "box.width=300", "box.bed_height=195"});
+  EXPECT_GT(speedBasis(paper).ns, small.ns);
+}
+
+TEST(CostTable, ParsesTheRowsOfWiggleAtOneThreadAndInterpolatesBetweenBeds) {
+  const CostTable t = parseCostTable(
+      "bed,particles,threads,code,ns_per_particle_step,min,max,rounds,machine,source\n"
+      "paper,60000,1,wiggle,40.0,39,41,3,\"CPU X, 2 vCPUs\",run A\n"
+      "small,3000,1,wiggle,20.0,19,21,3,\"CPU X, 2 vCPUs\",run A\n"
+      "small,3000,2,wiggle,12.0,11,13,3,\"CPU X, 2 vCPUs\",run A\n"
+      "small,3000,1,lammps,70.0,69,71,3,\"CPU X, 2 vCPUs\",run A\n");
+  ASSERT_EQ(t.rows.size(), 2u);
+  EXPECT_EQ(t.machine, "CPU X, 2 vCPUs");
+  EXPECT_DOUBLE_EQ(t.nsPerParticleStep(1000.0), 20.0);     // below the smallest bed: its figure
+  EXPECT_DOUBLE_EQ(t.nsPerParticleStep(31500.0), 30.0);    // half way
+  EXPECT_DOUBLE_EQ(t.nsPerParticleStep(100000.0), 40.0);   // above the largest
+  EXPECT_THROW(parseCostTable("bed,particles,threads,code\n"), Error);
+  EXPECT_THROW(parseCostTable("bed,particles,threads,code,ns_per_particle_step,machine,source\nsmall,x,1,wiggle,20,m,s\n"),
+               Error);
+  // The committed table has the three presets' beds
+  EXPECT_GE(committedCostTable().rows.size(), 3u);
 }
 
 TEST_F(SpeedRecordTest, TheMedianOfTheLastNineOneThreadRunsOnThisCpuByThisBuild) {

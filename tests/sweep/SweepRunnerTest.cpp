@@ -140,9 +140,9 @@ TEST(SweepPlan, CarvedBedsOfOneSeedCountTheirBasePourOnce) {
   const SweepPlan plan = makeSweepPlan(spec, cache + "/out");
   ASSERT_EQ(plan.beds.size(), 3u);
   const RunConfig& c = spec.cases[0].config;
-  // Each carved bed (the three beds are the same size): the cut's relaxation at the reference speed
+  // Each carved bed (the three beds are the same size): the cut's relaxation at the plan's speed
   // over the bed's particles; the first one also pours the base, (batches + 1) / 2 batch times.
-  const double secondsPerTime = 1e-9 * CostModel::nsPerParticleStep * (estimatedGrains(c) + c.box.width) / c.run.dt;
+  const double secondsPerTime = 1e-9 * plan.speed.ns * (estimatedGrains(c) + c.box.width) / c.run.dt;
   const double batches = std::ceil(c.box.bedHeight / c.bed.batchHeight);
   const double pour = 0.5 * (batches + 1.0) * CostModel::bedTimePerBatch;
   EXPECT_NEAR(plan.beds[0].estimatedSeconds, secondsPerTime * (CostModel::carvedRelaxTime + pour), 1e-9);
