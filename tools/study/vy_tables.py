@@ -1115,24 +1115,63 @@ def readme_answer(spec):
     return textwrap.wrap(text, 104, break_on_hyphens=False, break_long_words=False), spec["sources"]
 
 
-PROTOCOL_FOLDERS = ["results/paper_depth/factors_t1000", "results/paper_box/t1000"]
+# The paper's own protocol (issue 51): the preset's differences from the paper's stated protocol,
+# one at a time at t = 1000, for the two cells that disagree most with the paper (the square at T = 3
+# rises where the paper's sinks; the triangle at T = 5 sinks where the paper's rises), then all of
+# them together in the preset's 60 d box and in the paper's own 300 d box.
+PROTOCOL_FOLDERS = ["results/paper_depth/mass_t1000", "results/paper_depth/factors_t1000", "results/paper_box/t1000"]
+PRESET_PROTOCOL = {"intruder.surface": "smooth", "bed.pour": "lattice", "intruder.mass_rule": "disk_area"}
+PAPER_PROTOCOL = {"intruder.surface": "glued", "bed.pour": "random", "intruder.mass_rule": "glued_disk"}
+# (what changes from the preset; its cases: folders and the keys that differ; paired: run on the
+# baseline's own beds, so compared with the baseline's runs of the same seeds only)
+PROTOCOL_ROWS = [
+    ("none: the preset (baseline)", T1000_BEDS, {}, False),
+    ("the glued disk's mass, 9.88 (on the baseline's own bed)", ["results/paper_depth/mass_t1000"],
+     {"intruder.mass_rule": "glued_disk"}, True),
+    ("the glued 0.5 d surface (new pour)", ["results/paper_depth/factors_t1000"], {"intruder.surface": "glued"}, False),
+    ("the random pour (new pour)", ["results/paper_depth/factors_t1000"], {"bed.pour": "random"}, False),
+    ("all three: the paper's protocol in the 60 d box", ["results/paper_depth/factors_t1000"], PAPER_PROTOCOL, False),
+    ("the paper's protocol in its own 300 d box", ["results/paper_box/t1000"], PAPER_PROTOCOL, False),
+]
+PROTOCOL_CELLS = [("square", 3.0, -1), ("triangle", 5.0, +1)]   # shape, T, the paper's sign of V_y there
+
+
+def protocol_beds(folders, where):
+    """{seed: V_y} of a protocol row's cell (only the folders committed so far)."""
+    present = [f for f in folders if os.path.exists(os.path.join(ROOT, f, "results.csv"))]
+    return {c.get("box.seed"): float(c.get("vy")) for c in beds(select(present, where), f"{present} {where}")}
 
 
 def answer_protocol(spec):
-    """The paper's own protocol (issue 51): its finished cases, once there are any."""
-    done = []
-    for folder in PROTOCOL_FOLDERS:
-        if os.path.exists(os.path.join(ROOT, folder, "results.csv")):
-            done += [(folder, c) for c in load(folder)]
-    if not done:
-        return ["Runs in progress (issue 51): the preset's differences from the paper measured one at a time at "
-                "t = 1000 (`configs/sweeps/paper_depth_factors_t1000.toml`, results/paper_depth/factors_t1000/) and the "
-                "paper's own 300 d box by its protocol (`configs/sweeps/paper_box_t1000.toml`, results/paper_box/t1000/). "
-                "None has finished yet: no numbers here."], spec["sources"]
-    lines = ["| folder | case | shape | T | V_y, t = 100-1000 |", "|---|---|---|---|---|"]
-    lines += [f"| {folder} | {c.row['case']} | {c.get('intruder.shape')} | {c.get('drive.period'):g} | {float(c.get('vy')):+.3f} |"
-              for folder, c in done]
-    return lines, [f for f in PROTOCOL_FOLDERS if os.path.exists(os.path.join(ROOT, f))]
+    """The factor table: each row's V_y per cell, its change from the baseline in standard errors of
+    the paper's clock (one bed's sigma there), and whether it moves the cell toward the paper's sign."""
+    sig = sigma(cells_with_beds(CLOCK_A5))
+    head = "| what changes | " + " | ".join(f"{s}, A = 5, T = {t:g}: V_y; change (se)" for s, t, _ in PROTOCOL_CELLS) + " |"
+    lines = [head, "|---|" + "---|" * len(PROTOCOL_CELLS)]
+    for label, folders, keys, paired in PROTOCOL_ROWS:
+        cells = []
+        for shape, period, paper_sign in PROTOCOL_CELLS:
+            case = {"intruder.shape": shape, "drive.amplitude": 5.0, "drive.period": period}
+            row = protocol_beds(folders, dict(PRESET_PROTOCOL, **keys, **case))
+            baseline = protocol_beds(T1000_BEDS, dict(PRESET_PROTOCOL, **case))
+            values = list(row.values())
+            base = [v for seed, v in baseline.items() if seed in row] if paired else list(baseline.values())
+            if not values:
+                cells.append("not run yet")
+            elif not keys:
+                cells.append(cell_text(values))
+            else:
+                diff, z, _ = judged((label, values, base, paper_sign), sig)
+                toward = ("toward the paper" if z >= RESOLVED else "away from the paper" if z <= -RESOLVED
+                          else "within the scatter")
+                cells.append(f"{cell_text(values)}; {diff:+.3f} ({abs(z):.1f} se, {toward})")
+        lines.append(f"| {label} | " + " | ".join(cells) + " |")
+    lines += ["", f"(V_y over t = 100-1000 of runs to t = 1000, A = 5 d. The paper has the square sinking at T = 3 "
+              f"and the triangle rising at T = 5 (Table 1). A change is the row's mean minus the baseline's, in "
+              f"standard errors se = sigma sqrt(1/n_row + 1/n_baseline), sigma = {sig:.3f} one bed's standard "
+              f"deviation by the paper's clock; the mass's change is against the baseline's run on the same bed, "
+              f"with the same sigma, which its pairing is expected to make smaller (not measured); it moves the cell toward the paper's sign when >= {RESOLVED:g} se that way)"]
+    return lines, [f for f in PROTOCOL_FOLDERS + T1000_BEDS if os.path.exists(os.path.join(ROOT, f))]
 
 
 ANSWER_SOURCES = FINDING_SOURCES + ["results/paper_depth/glued", "results/paper_depth/triangle"]
@@ -1140,7 +1179,7 @@ TABLES += [
     {"name": "answer_table1", "kind": answer_table1, "sources": CLOCK_A5 + DEPTH_A5},
     {"name": "answer_findings", "kind": answer_findings, "sources": FINDING_SOURCES},
     {"name": "answer_differences", "kind": answer_differences, "sources": ANSWER_SOURCES},
-    {"name": "answer_protocol", "kind": answer_protocol, "sources": PROTOCOL_FOLDERS},
+    {"name": "answer_protocol", "kind": answer_protocol, "sources": PROTOCOL_FOLDERS + T1000_BEDS},
     {"name": "readme_answer", "kind": readme_answer, "sources": CLOCK_A5, "bare": True},
     {"name": "boundaries", "kind": boundary_table, "sources": [b[0] for b in BOUNDARIES]},
 ]
