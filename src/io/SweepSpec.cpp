@@ -3,12 +3,11 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
-#include <fstream>
 #include <map>
-#include <sstream>
 
 #include "core/Error.h"
 #include "core/Hash.h"
+#include "io/AtomicFile.h"
 #include "io/Config.h"
 
 namespace wiggle {
@@ -284,11 +283,7 @@ SweepSpec parseSweepSpec(const std::string& tomlText, const std::string& sourceN
 }
 
 SweepSpec loadSweepSpec(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error("cannot read sweep file '" + path + "'");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parseSweepSpec(text.str(), path);
+  return parseSweepSpec(readInputFile(path, "sweep file"), path);
 }
 
 }  // namespace wiggle
