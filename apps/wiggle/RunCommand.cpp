@@ -103,6 +103,11 @@ void addRunCommand(CLI::App& app) {
     if (!path && args->resume && std::filesystem::exists(saved)) path = saved;
     if (path) requireInputFile(*path, "config file");
     requireOutputDirectory("--out", args->out);
+    // A mistyped --out must not start hours of a run nobody asked for.
+    if (args->resume && !holdsRun(args->out))
+      throw Error("--resume: " + args->out +
+                  " holds no run to continue (no checkpoint, no finished run, no run started there); "
+                  "leave out --resume to start a new run there");
     const RunConfig config = loadRunConfig(path, args->sets);
     if (args->check) {
       requireWritableOutputDirectory("--out", args->out);
