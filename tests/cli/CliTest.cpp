@@ -491,6 +491,12 @@ TEST_F(Cli, InterruptedRunsAndSweepsExit128PlusTheSignal) {
   EXPECT_NE(s.err.find("rerun the same command to resume"), std::string::npos) << s.err;
 }
 
+std::size_t occurrences(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
 // Issue 53: a run stopped by Ctrl-C says where in its progress.json, and `wiggle status RUN_DIR`
 // reports a single run (stopped, killed without a word, done) as it does a sweep.
 TEST_F(Cli, StatusOfARunDirectorySaysWhereItStopped) {
@@ -543,6 +549,16 @@ TEST_F(Cli, ResumeWhereNoRunIsIsRefusedBeforeAnythingIsWritten) {
   ASSERT_EQ(wiggle("run " + quoted(tinyConfig()) + " --out done --threads 1").status, 0);
   const Result r = wiggle("run --out done --resume --threads 1");
   EXPECT_EQ(r.status, 0) << r.err;
+}
+
+// Issue 53: the sweep's final line is said once (it was printed as an event and again by the
+// command), for a whole sweep and for one case.
+TEST_F(Cli, SweepSaysItsSummaryOnce) {
+  for (const std::string& only : {std::string(), std::string(" --case 1")}) {
+    const Result r = wiggle("sweep " + quoted(quickSweep()) + " --out sweep --jobs 1 --threads 1" + only);
+    EXPECT_EQ(r.status, 1) << r.err;  // its case fails its geometry check
+    EXPECT_EQ(occurrences(r.out + r.err, "sweep sweep: "), 1u) << only << ": " << r.out << r.err;
+  }
 }
 
 }  // namespace
