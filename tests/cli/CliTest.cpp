@@ -561,6 +561,22 @@ TEST_F(Cli, SweepSaysItsSummaryOnce) {
   }
 }
 
+// Issue 53: a trajectory shorter than its config's run.duration (a LAMMPS run of the exported deck
+// for fewer steps, `lmp -var nsteps N`) is measured to its end, and said so; --to past it is refused.
+TEST_F(Cli, RateMeasuresAShorterTrajectoryToItsEnd) {
+  ASSERT_EQ(wiggle("run " + quoted(tinyConfig()) + " --set run.duration=0.2 --out run --threads 1").status, 0);
+  std::string config = slurp(work_ / "run" / "config.toml");
+  const std::size_t at = config.find("\nduration = 0.2 ");  // [run]'s (a comment follows the value)
+  ASSERT_NE(at, std::string::npos) << config;
+  config.replace(at, 15, "\nduration = 100 ");
+  std::ofstream(work_ / "run" / "config.toml") << config;
+  const Result r = wiggle("rate run");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("\nrun,1,0.02,0.2,"), std::string::npos) << r.out;  // t_i = 0.1 x 0.2, t_f = 0.2
+  EXPECT_NE(r.err.find("trajectory.csv ends at t = 0.2, before the config's run.duration"), std::string::npos)
+      << r.err;
+  expectOneLineError(wiggle("rate run --to 5"), {"--to 5", "past the end"}, "--to past the end");
+}
 }  // namespace
 
 namespace wiggle {
