@@ -26,8 +26,9 @@ void addStatusCommand(CLI::App& app) {
         return;
       }
       if (std::filesystem::is_directory(*dir))
-        throw Error(*dir + ": neither a sweep directory (no results.csv) nor a run directory (no progress.json, "
-                           "checkpoint or summary.json)");
+        throw Error(*dir +
+                    ": neither a sweep directory (no results.csv) nor a run directory (no progress.json, "
+                    "checkpoint or summary.json)");
     }
     std::fputs(formatSweepStatus(readSweepStatus(*dir)).c_str(), stdout);
   });

@@ -282,8 +282,6 @@ SweepSpec parseSweepSpec(const std::string& tomlText, const std::string& sourceN
   return spec;
 }
 
-SweepSpec loadSweepSpec(const std::string& path) {
-  return parseSweepSpec(readInputFile(path, "sweep file"), path);
-}
+SweepSpec loadSweepSpec(const std::string& path) { return parseSweepSpec(readInputFile(path, "sweep file"), path); }
 
 }  // namespace wiggle

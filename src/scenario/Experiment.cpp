@@ -130,7 +130,8 @@ std::optional<Checkpoint> newestGoodCheckpoint(const std::string& dir, const Run
   } else if (fs::exists(runProgressPath(dir))) {
     // A run stopped before its first checkpoint (progress.json is written only once a run has
     // begun): said on the console too, so that a resume that starts at t = 0 is never silent.
-    const std::string note = "no checkpoint in " + dir + " (its run stopped before the first): starting it from the bed at t = 0";
+    const std::string note =
+        "no checkpoint in " + dir + " (its run stopped before the first): starting it from the bed at t = 0";
     log.line(note);
     std::fprintf(stderr, "wiggle: %s\n", note.c_str());
   } else {

@@ -175,8 +175,9 @@ std::optional<RunStatus> readRunStatus(const std::string& dir) {
 std::string formatRunStatus(const RunStatus& r) {
   const RunProgress& p = r.progress;
   const auto startsWith = [&p](const char* prefix) { return p.stage.rfind(prefix, 0) == 0; };
-  const std::string ofDuration = " of " + formatNumber(p.duration) +
-                                 (p.fraction >= 0 ? " (" + formatNumber(100.0 * p.fraction, 3) + " % of its steps)" : "");
+  const std::string ofDuration =
+      " of " + formatNumber(p.duration) +
+      (p.fraction >= 0 ? " (" + formatNumber(100.0 * p.fraction, 3) + " % of its steps)" : "");
   const std::string resume = "; continue with: wiggle run --out " + r.dir + " --resume";
   std::ostringstream out;
   out << "run " << r.dir << ": ";

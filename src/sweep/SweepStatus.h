@@ -60,10 +60,10 @@ std::string sweepStatusJson(const SweepStatus& status);
 // lock), or stopped: interrupted at t (SIGINT/SIGTERM, or killed: no process holds it), failed at t.
 struct RunStatus {
   std::string dir;
-  std::string state;      // done | running | stopped
-  RunProgress progress;   // its progress.json (stage "finished" when a finished run has none)
+  std::string state;     // done | running | stopped
+  RunProgress progress;  // its progress.json (stage "finished" when a finished run has none)
   bool hasProgress = false;
-  double vy = 0.0;        // done: summary.json's V_y
+  double vy = 0.0;                    // done: summary.json's V_y
   std::vector<std::string> warnings;  // done: summary.json's; else warnings.txt so far
 };
 

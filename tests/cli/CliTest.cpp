@@ -514,7 +514,8 @@ TEST_F(Cli, StatusOfARunDirectorySaysWhereItStopped) {
   EXPECT_NE(r.out.find("continue with: wiggle run --out run --resume"), std::string::npos) << r.out;
 
   // Killed outright, a run cannot say so: its last stage stays, and no process holds its lock.
-  std::ofstream(out / "progress.json") << R"({"stage": "running", "fraction": 0.25, "t": 12.5, "duration": 50, "eta_s": 60})";
+  std::ofstream(out / "progress.json")
+      << R"({"stage": "running", "fraction": 0.25, "t": 12.5, "duration": 50, "eta_s": 60})";
   r = wiggle("status run");
   EXPECT_NE(r.out.find("run run: interrupted (its process ended without saying why: killed?) after t = 12.5 of 50 "
                        "(25 % of its steps)"),
@@ -522,7 +523,8 @@ TEST_F(Cli, StatusOfARunDirectorySaysWhereItStopped) {
       << r.out;
 
   // Finished; a fresh run shorter than 0.25 (0.1 t_total off the sample grid) is not "extended".
-  r = wiggle("run " + quoted(tinyConfig()) + " --set run.duration=0.12 --set run.sample_interval=0.04 --out done "
+  r = wiggle("run " + quoted(tinyConfig()) +
+             " --set run.duration=0.12 --set run.sample_interval=0.04 --out done "
              "--threads 1");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.err.find("extended"), std::string::npos) << r.err;
@@ -573,8 +575,7 @@ TEST_F(Cli, RateMeasuresAShorterTrajectoryToItsEnd) {
   const Result r = wiggle("rate run");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("\nrun,1,0.02,0.2,"), std::string::npos) << r.out;  // t_i = 0.1 x 0.2, t_f = 0.2
-  EXPECT_NE(r.err.find("trajectory.csv ends at t = 0.2, before the config's run.duration"), std::string::npos)
-      << r.err;
+  EXPECT_NE(r.err.find("trajectory.csv ends at t = 0.2, before the config's run.duration"), std::string::npos) << r.err;
   expectOneLineError(wiggle("rate run --to 5"), {"--to 5", "past the end"}, "--to past the end");
 }
 }  // namespace
