@@ -29,9 +29,10 @@ preset="${WIGGLE_PRESET:-release}"
 what="${1:-}"
 shift || true
 cmake --preset "$preset" > /dev/null
-# A newcomer's first run needs only the program: the tests and benchmarks are built by `test`.
+# A newcomer's first run needs only what a user runs (the command, `import wiggle`, the man page:
+# CMake's user_programs target); the tests and benchmarks are built by `test`.
 targets=()
-[ "$what" = run ] && targets=(--target wiggle)
+[ "$what" = run ] && targets=(--target user_programs)
 cmake --build --preset "$preset" -j "$(nproc)" "${targets[@]}"
 
 case "$what" in

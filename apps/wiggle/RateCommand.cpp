@@ -1,6 +1,7 @@
 // `wiggle rate DIR [--from T0] [--to T1] [--band D] [--write]`: V_y measured again, by both rules
 // (analysis/RiseRate.h), from the trajectory.csv of a finished run or of every finished case of a
-// sweep directory, over the run's own window or any other; a CSV table on stdout. --write records
+// sweep directory, over the run's own window or any other (a trajectory shorter than its run, as a
+// short LAMMPS run of an exported deck, to its end, said on stderr); a CSV table on stdout. --write records
 // the settle rule's result (vy_settled, t_settled) in summary.json files written before it existed,
 // and in the sweep's results.csv (scenario/Remeasure.h).
 #include <algorithm>
@@ -96,6 +97,13 @@ void addRateCommand(CLI::App& app) {
     for (std::size_t k = 0; k < dirs.size(); ++k)
       table += row(isSweep ? fs::path(dirs[k]).filename().string() : dirs[k], measured[k]);
     std::fputs(table.c_str(), stdout);
+    for (std::size_t k = 0; k < dirs.size(); ++k)
+      if (measured[k].cutShortAt > 0)
+        std::fprintf(stderr,
+                     "wiggle rate: %s: trajectory.csv ends at t = %s, before the config's run.duration (a shorter "
+                     "run): measured what there is, t = %s to %s\n",
+                     dirs[k].c_str(), formatNumber(measured[k].cutShortAt).c_str(),
+                     formatNumber(measured[k].rate.tInitial).c_str(), formatNumber(measured[k].rate.tFinal).c_str());
     if (pending)
       std::fprintf(stderr, "wiggle rate: %d case%s without trajectory.csv (not finished) left out\n", pending,
                    pending == 1 ? "" : "s");

@@ -70,7 +70,8 @@ void printCheck(const RunConfig& c, const std::string& out, bool resume) {
               finished  ? (resume ? "holds a finished run: --resume would only rewrite its results"
                                   : "holds a finished run: wiggle run would refuse it without --resume")
               : started ? (resume ? "holds a checkpoint: --resume continues it" : "holds a checkpoint: add --resume")
-                        : "new");
+              : holdsRun(out) ? "holds a run stopped before its first checkpoint: it would start again from its bed"
+                              : "new");
 }
 
 }  // namespace
@@ -84,7 +85,9 @@ void addRunCommand(CLI::App& app) {
   cmd->add_option("--threads", args->threads,
                   "OpenMP threads (default: the cores other work leaves idle, by the 1-minute load average; at least 1)")
       ->check(CLI::Range(1, 1024));
-  cmd->add_flag("--resume", args->resume, "Continue from the newest good checkpoint in --out");
+  cmd->add_flag("--resume", args->resume,
+                "Continue the run in --out from its newest good checkpoint (a finished run: extended or rewritten); "
+                "refused when --out holds no run");
   cmd->add_flag("--no-plot", args->noPlot, "Do not draw the figures at the end");
   cmd->add_flag("--check", args->check,
                 "Check the config and print what the run would be (grains, steps, bed cached or not, "
@@ -103,6 +106,11 @@ void addRunCommand(CLI::App& app) {
     if (!path && args->resume && std::filesystem::exists(saved)) path = saved;
     if (path) requireInputFile(*path, "config file");
     requireOutputDirectory("--out", args->out);
+    // A mistyped --out must not start hours of a run nobody asked for.
+    if (args->resume && !holdsRun(args->out))
+      throw Error("--resume: " + args->out +
+                  " holds no run to continue (no checkpoint, no finished run, no run started there); "
+                  "leave out --resume to start a new run there");
     const RunConfig config = loadRunConfig(path, args->sets);
     if (args->check) {
       requireWritableOutputDirectory("--out", args->out);

@@ -79,6 +79,7 @@ void addSweepCommand(CLI::App& app) {
     options.dryRun = args->dryRun;
     options.allowMpi = !args->local;
     options.onlyCase = args->onlyCase;
+    options.summaryAsEvent = false;  // printed below, once
     const SweepOutcome outcome = runSweep(args->file, options);
     if (outcome.worker || args->dryRun) return;
     if (outcome.interrupted) throw Interrupted(outcome.stopSignal, outcome.summary);

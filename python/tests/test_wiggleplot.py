@@ -8,6 +8,7 @@ import os
 import shutil
 import tempfile
 import unittest
+from unittest import mock
 
 import numpy as np
 
@@ -215,6 +216,64 @@ class SweepDataTest(DataDirs):
                             f"{box.x0:.0f}-{box.x1:.0f} x {box.y0:.0f}-{box.y1:.0f}")
         from matplotlib import pyplot
         pyplot.close(fig)
+
+    def test_table1_texts_stay_on_one_line(self):
+        # Issue 53: notes wrapped at 34 characters broke "rises already at the smallest T = 2" in two.
+        nan = float("nan")
+        rows = [{"shape": "disk", "A": 3.0, "mu": "", "l": 3.5, "T_rise_model": 2.8, "T_rising_observed": nan,
+                 "T_below": nan, "T_above": 2.0, "note": "rises already at the smallest T = 2"},
+                {"shape": "square", "A": 3.0, "mu": "", "l": 6.5, "T_rise_model": 3.7, "T_rising_observed": 2.6,
+                 "T_below": 2.5, "T_above": 3.0, "note": "V_y > 0 also at T = 0.5, 1, 1.5, 2, 2.5"}]
+        fig = sweepplots.table1_figure(rows)
+        texts = [cell.get_text().get_text() for cell in fig.axes[0].tables[0].get_celld().values()]
+        from matplotlib import pyplot
+        pyplot.close(fig)
+        self.assertEqual([t for t in texts if "\n" in t], [])
+
+    def test_figure_5_keeps_every_curve_inside_its_axes(self):
+        # Issue 53: the cavity model's V_y is ten times the measured one and drops to 0 at T_max: on
+        # the data's scale it ran off the top and came down as vertical dashed lines. The committed
+        # paper-depth sweep has both.
+        sweep_dir = os.path.join(os.path.dirname(__file__), "..", "..", "results", "paper_depth", "fig5")
+        figures = {}
+
+        def keep(fig, out_dir, name, formats):
+            figures[name] = fig
+            return []
+
+        with mock.patch.object(sweepplots.style, "save", keep):
+            sweepplots.plot_rate_vs_period(sweepplots.Sweep(sweep_dir, quiet_report()), self.tmp, ("png",))
+        fig = figures["rate_vs_period"]
+        models = 0
+        for ax in fig.axes:
+            if not ax.get_visible():
+                continue
+            x_lo, x_hi = ax.get_xlim()
+            y_lo, y_hi = ax.get_ylim()
+            for line in ax.get_lines():
+                if line.get_transform() != ax.transData:  # the zero line, in axes coordinates along x
+                    continue
+                x, y = np.asarray(line.get_xdata(), float), np.asarray(line.get_ydata(), float)
+                drawn = np.isfinite(x) & np.isfinite(y)
+                what = f"{line.get_label()!r} in {ax.get_title() or 'a model axis'}"
+                self.assertTrue(np.all((x[drawn] >= x_lo) & (x[drawn] <= x_hi)), f"{what} leaves the axes in x")
+                self.assertTrue(np.all((y[drawn] >= y_lo) & (y[drawn] <= y_hi)), f"{what} leaves the axes in y")
+                if line.get_linestyle() == "--":  # the model: no step of a third of the axis between neighbours
+                    models += 1
+                    steps = np.abs(np.diff(y)) / (y_hi - y_lo)
+                    self.assertTrue(np.all(steps[np.isfinite(steps)] < 1 / 3), f"{what} has a vertical drop")
+        self.assertEqual(models, 5)  # one per shape
+        from matplotlib import pyplot
+        pyplot.close(fig)
+
+    def test_series_colours_are_readable_on_white(self):
+        # Issue 53: the last period's line, the colour maps' yellow end, was hard to see on white.
+        from wiggleplot import style
+        for cmap in ("viridis", "plasma"):
+            for n in range(1, 11):
+                for colour in style.series_colours(n, cmap):
+                    self.assertGreaterEqual(style.contrast_on_white(colour), style.MIN_CONTRAST_ON_WHITE,
+                                            f"{cmap}, {n} series: {colour}")
 
     def test_a_case_with_a_torn_summary_is_not_done(self):
         # results.csv says ok, but the case's summary.json is garbage: the sweep would run it again

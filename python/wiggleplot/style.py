@@ -24,6 +24,7 @@ GRAIN_COLOURS = ("#d9c9a3", "#b8a57a")  # alternating bands of grains (by initia
 BASE_COLOUR = "#2b4c9b"                 # the frozen base row (blue, as in the paper's fig. 1)
 INTRUDER_COLOUR = "#c8102e"             # intruder atoms
 MODEL_COLOUR = "black"
+MODEL_AXIS_COLOUR = "0.35"  # the cavity model's own V_y axis (fig. 5's right-hand axis)
 
 RC = {
     "font.size": 9,
@@ -50,11 +51,26 @@ def apply():
     plt.rcParams.update(RC)
 
 
+# How far along a colour map a series may go: the maps' light ends (viridis's yellow-green, plasma's
+# yellow) are hard to see on white; up to 0.72 every colour has a contrast ratio of at least 2.2
+# against the white page (WCAG's formula; viridis at 0.9 has 1.5).
+SERIES_MAP_END = 0.72
+MIN_CONTRAST_ON_WHITE = 2.2
+
+
+def contrast_on_white(colour):
+    """WCAG contrast ratio of an RGB(A) colour against white (1: invisible, 21: black)."""
+    def linear(c):
+        return c / 12.92 if c <= 0.03928 else ((c + 0.055) / 1.055) ** 2.4
+    r, g, b = (linear(c) for c in colour[:3])
+    return 1.05 / (0.2126 * r + 0.7152 * g + 0.0722 * b + 0.05)
+
+
 def series_colours(n, cmap="viridis"):
     """n colours along a perceptually uniform map, dark to light but never the pale end."""
     if n <= 1:
         return [plt.get_cmap(cmap)(0.25)]
-    return [plt.get_cmap(cmap)(0.9 * i / (n - 1)) for i in range(n)]
+    return [plt.get_cmap(cmap)(SERIES_MAP_END * i / (n - 1)) for i in range(n)]
 
 
 def save(fig, out_dir, name, formats):

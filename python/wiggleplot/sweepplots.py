@@ -78,14 +78,41 @@ def _panel_grid(n, width=style.FULL_WIDTH, height=2.2):
 
 
 def _draw_model(ax, model, label=True):
+    """The cavity model's V_y(T) over the panel's periods, on an axis of its own (right) with its
+    zero level with the data's: the model's rates reach ten times the measured ones, and on the
+    data's scale the curve ran off the axes. A jump in the curve (it drops to 0 at T_max, where the
+    cavity no longer closes) is left as a gap, not drawn as a vertical line. Call it once the
+    panel's limits are set; returns the line (for the legend) or None."""
     if model is None or len(model["curve"]) < 2:
-        return False
+        return None
     curve = model["curve"][np.argsort(model["curve"][:, 0])]
+    x_lo, x_hi = ax.get_xlim()
+    curve = curve[(curve[:, 0] >= x_lo) & (curve[:, 0] <= x_hi)]
+    if len(curve) < 2:
+        return None
+    T, vy = curve[:, 0].copy(), curve[:, 1].copy()
     amplitude = model.get("amplitude")
-    text = "cavity model" + (f" ($A$ = {amplitude:g})" if isinstance(amplitude, (int, float)) else "")
-    ax.plot(curve[:, 0], curve[:, 1], "--", color=style.MODEL_COLOUR, lw=1.0,
-            label=text if label else None)
-    return True
+    about = [f"$A$ = {amplitude:g}"] if isinstance(amplitude, (int, float)) else []
+    lo, hi = min(vy.min(), 0.0), max(vy.max(), 0.0)
+    y_lo, y_hi = ax.get_ylim()
+    zero = -y_lo / (y_hi - y_lo)  # where the data's 0 sits, as a fraction of the panel's height
+    if hi - lo == 0.0 or not 0.0 < zero < 1.0:  # zero over the whole panel: on the data's axis
+        text = "cavity model" + (f" ({about[0]})" if about else "")
+        (line,) = ax.plot(T, vy, "--", color=style.MODEL_COLOUR, lw=1.0, label=text if label else None)
+        return line
+    text = "cavity model (" + ", ".join(about + ["right axis"]) + ")"
+    # A step between neighbours larger than a third of the curve's range is a jump: break the line.
+    jumps = np.nonzero(np.abs(np.diff(vy)) > (hi - lo) / 3.0)[0]
+    T, vy = np.insert(T, jumps + 1, np.nan), np.insert(vy, jumps + 1, np.nan)
+    model_ax = ax.twinx()
+    (line,) = model_ax.plot(T, vy, "--", color=style.MODEL_COLOUR, lw=1.0, label=text if label else None)
+    # The model's zero at the height of the data's zero.
+    top = 1.15 * max(hi, -lo * (1.0 - zero) / zero)
+    model_ax.set_ylim(-top * zero / (1.0 - zero), top)
+    model_ax.grid(False)
+    model_ax.tick_params(axis="y", colors=style.MODEL_AXIS_COLOUR, labelsize=7)
+    model_ax.set_ylabel("cavity model", color=style.MODEL_AXIS_COLOUR, fontsize=7.5, labelpad=2)
+    return line
 
 
 def _limit_to_data(ax, xs, ys):
@@ -117,6 +144,14 @@ def _plot_rate_curves(sweep, curves, line_key, line_label, name, title_extra, fo
     fig, axes = _panel_grid(len(curves))
     values = sorted({k for c in curves.values() for k in c})
     colours = dict(zip(values, style.series_colours(len(values))))
+    handles, labels = [], []
+
+    def add_to_legend(items):
+        for h, lab in zip(*items):
+            if lab not in labels:
+                handles.append(h)
+                labels.append(lab)
+
     for ax, (panel, lines) in zip(axes, curves.items()):
         xs, ys = [], []
         for value, (T, vy, std, n) in lines.items():
@@ -124,18 +159,15 @@ def _plot_rate_curves(sweep, curves, line_key, line_label, name, title_extra, fo
                         color=colours[value], label=f"{line_label} = {style.fmt_value(value)}")
             xs.append(T)
             ys.extend([vy - std, vy + std])
-        _draw_model(ax, sweep.model(panel))
         _limit_to_data(ax, xs, ys)
         ax.axhline(0.0, color="0.4", lw=0.6)
         ax.set_title(panel + title_extra)
         ax.set_xlabel(style.PERIOD_LABEL)
         ax.set_ylabel(style.VY_LABEL)
-    handles, labels = axes[0].get_legend_handles_labels()
-    for ax in axes[1:]:
-        for h, lab in zip(*ax.get_legend_handles_labels()):
-            if lab not in labels:
-                handles.append(h)
-                labels.append(lab)
+        add_to_legend(ax.get_legend_handles_labels())
+        model = _draw_model(ax, sweep.model(panel))
+        if model is not None:
+            add_to_legend(([model], [model.get_label()]))
     fig.legend(handles, labels, loc="lower center", ncol=min(len(labels), 6),
                bbox_to_anchor=(0.5, 1.0))
     fig.tight_layout()
@@ -309,8 +341,9 @@ def table1_figure(rows):
     cells = [[r["shape"] if same_a else f"{r['shape']} ($A$ = {r['A']:g})", _cell(r["l"]) or "-", _cell(r["T_rise_model"]) or "-",
               _cell(r["T_rising_observed"]) or "-",
               _bracket(r["T_below"], r["T_above"]), r["note"]] for r in rows]
-    # Long notes wrap onto more lines, so that every text fits its cell (fit_table).
-    cells = [[textwrap.fill(c, 34) for c in row] for row in cells]
+    # Every text on one line (fit_table sizes the columns to them and shrinks the font when the
+    # table would be wider than the page); only a note too long for any page wraps.
+    cells = [[textwrap.fill(c, 60) for c in row] for row in cells]
     lines = max(1, max(c.count("\n") + 1 for row in cells for c in row))
     fig, ax = plt.subplots(figsize=(style.FULL_WIDTH, 0.6 + 0.22 * (len(rows) * lines + 1)))
     ax.axis("off")

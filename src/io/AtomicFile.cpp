@@ -6,8 +6,6 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "core/Error.h"
 
@@ -79,13 +77,37 @@ void removeLeftoverTemporaries(const std::string& dir) {
   }
 }
 
-std::string readFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error("cannot read " + path + ": " + systemError());
-  std::ostringstream content;
-  content << in.rdbuf();
-  if (in.bad()) throw Error("cannot read " + path);
-  return content.str();
+namespace {
+
+// open(2) and read(2) rather than a stream: a stream opens a directory without complaint and reads
+// it as empty, and says nothing of why a read failed; read(2) sets errno (EISDIR, EACCES, EIO).
+std::string readWholeFile(const std::string& path, const std::string& name) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) throw Error("cannot read " + name + ": " + systemError());
+  std::string content;
+  char buffer[1 << 16];
+  for (;;) {
+    const ssize_t n = ::read(fd, buffer, sizeof buffer);
+    if (n > 0) {
+      content.append(buffer, static_cast<std::size_t>(n));
+    } else if (n == 0) {
+      break;
+    } else if (errno != EINTR) {
+      const std::string why = systemError();
+      ::close(fd);
+      throw Error("cannot read " + name + ": " + why);
+    }
+  }
+  ::close(fd);
+  return content;
+}
+
+}  // namespace
+
+std::string readFile(const std::string& path) { return readWholeFile(path, path); }
+
+std::string readInputFile(const std::string& path, const std::string& what) {
+  return readWholeFile(path, what + " '" + path + "'");
 }
 
 }  // namespace wiggle

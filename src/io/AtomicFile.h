@@ -17,7 +17,11 @@ void appendToFile(const std::string& path, const std::string& content);
 // process is writing to (a run directory being resumed), never for a shared one like the bed cache.
 void removeLeftoverTemporaries(const std::string& dir);
 
-// Whole file as bytes; throws wiggle::Error naming the file when it cannot be read.
+// Whole file as bytes; throws wiggle::Error naming the file and why it cannot be read (it does not
+// exist, permission denied, it is a directory): "cannot read PATH: Permission denied".
 std::string readFile(const std::string& path);
+// The same for a file the user named, called `what` in the message: "cannot read config file 'X':
+// Is a directory".
+std::string readInputFile(const std::string& path, const std::string& what);
 
 }  // namespace wiggle

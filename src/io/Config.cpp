@@ -4,10 +4,9 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
-#include <fstream>
-#include <sstream>
 
 #include "core/Error.h"
+#include "io/AtomicFile.h"
 #include "io/ConfigKeys.h"
 
 namespace wiggle {
@@ -358,11 +357,7 @@ RunConfig loadRunConfig(const std::optional<std::string>& path,
                         const std::vector<std::string>& overrides) {
   RunConfig config;
   if (path) {
-    std::ifstream in(*path, std::ios::binary);
-    if (!in) throw Error("cannot read config file '" + *path + "'");
-    std::ostringstream text;
-    text << in.rdbuf();
-    const toml::table table = parseTomlText(text.str(), *path);
+    const toml::table table = parseTomlText(readInputFile(*path, "config file"), *path);
     applyConfigTable(config, table, *path);
   }
   for (const std::string& o : overrides) applyOverride(config, o);

@@ -3,12 +3,11 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
-#include <fstream>
 #include <map>
-#include <sstream>
 
 #include "core/Error.h"
 #include "core/Hash.h"
+#include "io/AtomicFile.h"
 #include "io/Config.h"
 
 namespace wiggle {
@@ -283,12 +282,6 @@ SweepSpec parseSweepSpec(const std::string& tomlText, const std::string& sourceN
   return spec;
 }
 
-SweepSpec loadSweepSpec(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error("cannot read sweep file '" + path + "'");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parseSweepSpec(text.str(), path);
-}
+SweepSpec loadSweepSpec(const std::string& path) { return parseSweepSpec(readInputFile(path, "sweep file"), path); }
 
 }  // namespace wiggle

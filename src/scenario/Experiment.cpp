@@ -122,13 +122,21 @@ std::optional<Checkpoint> newestGoodCheckpoint(const std::string& dir, const Run
       refused += std::string(refused.empty() ? "" : "; ") + e.what();
     }
   }
-  if (!refused.empty())
+  if (!refused.empty()) {
     addRunWarning(dir,
                   "no checkpoint could be read (" + refused +
                       "): the run restarted from the bed at t = 0 and the time spent on it before was lost",
                   log);
-  else
+  } else if (fs::exists(runProgressPath(dir))) {
+    // A run stopped before its first checkpoint (progress.json is written only once a run has
+    // begun): said on the console too, so that a resume that starts at t = 0 is never silent.
+    const std::string note =
+        "no checkpoint in " + dir + " (its run stopped before the first): starting it from the bed at t = 0";
+    log.line(note);
+    std::fprintf(stderr, "wiggle: %s\n", note.c_str());
+  } else {
     log.line("no checkpoint: starting from the bed");
+  }
   return std::nullopt;
 }
 
@@ -140,6 +148,15 @@ class ProgressFile {
   void stage(const std::string& what, double fraction = -1.0, double t = 0.0) {
     writeRunProgress(dir_, {what, fraction, t, duration_, -1.0});
     last_ = Clock::now();
+  }
+  // Why the run stopped, as it stops (SIGINT or SIGTERM, after its checkpoint; an error), so that
+  // `wiggle status` does not show a run that is not running. Best effort: the error that stopped
+  // the run (a full disk, say) is what the user must see, not a failure to write this file.
+  void stopped(const std::string& why, double fraction, double t) noexcept {
+    try {
+      stage(why, fraction, t);
+    } catch (...) {
+    }
   }
   void running(double fraction, double t, double etaSeconds) {
     if (secondsSince(last_) < 10.0) return;
@@ -185,7 +202,10 @@ World startFromBed(const Case& run, RunState& state, LogFile& log, ProgressLine&
 }
 
 // What makes the result less than it seems, in sentences (summary.json's warnings).
-std::vector<std::string> runWarnings(const RiseRate& rate, double averagedFrom, const RunConfig& config) {
+// `extended`: the phase bins began at another step than this run's own 0.1 t_total, so the run was
+// resumed with a longer run.duration (a run made in one go averages from its first measured step,
+// whatever its V_y window's first sample is).
+std::vector<std::string> runWarnings(const RiseRate& rate, double averagedFrom, bool extended) {
   std::vector<std::string> warnings;
   if (rate.windowTooShort())
     warnings.push_back("V_y is measured over " + formatNumber(rate.windowPeriods) + " drive periods (t = " +
@@ -198,7 +218,7 @@ std::vector<std::string> runWarnings(const RiseRate& rate, double averagedFrom, 
                        formatNumber(RiseRate::kStartupTime) +
                        " time units, where the whole bed is set moving): it is not a steady rise or sink; run longer "
                        "(run.duration; the presets run to t = 100)");
-  if (std::fabs(averagedFrom - rate.tInitial) > 0.5 * config.run.sampleInterval)
+  if (extended)
     warnings.push_back("phase_rates.csv and fields.csv average from t = " + formatNumber(averagedFrom) +
                        ", V_y from t = " + formatNumber(rate.tInitial) +
                        ": the run was extended (resumed with a longer run.duration); the "
@@ -208,7 +228,7 @@ std::vector<std::string> runWarnings(const RiseRate& rate, double averagedFrom, 
 
 RunSummary summarise(const Case& run, const std::string& dir, const World& world, const RunState& state,
                      const FieldObserver& fields, const RiseRate& rate, const SettledRate& settled,
-                     const SettleRule& rule, double averagedFrom) {
+                     const SettleRule& rule, double averagedFrom, bool extended) {
   const RunConfig& config = run.config;
   RunSummary summary;
   summary.vy = rate.vy;
@@ -228,7 +248,7 @@ RunSummary summarise(const Case& run, const std::string& dir, const World& world
   summary.settleBand = rule.band;
   summary.averagedFromT = averagedFrom;
   summary.warnings = readRunWarnings(dir);
-  for (std::string& w : runWarnings(rate, averagedFrom, config)) summary.warnings.push_back(std::move(w));
+  for (std::string& w : runWarnings(rate, averagedFrom, extended)) summary.warnings.push_back(std::move(w));
   summary.overlapMargin = world.healthMargins().overlap;
   summary.speedMargin = world.healthMargins().speed;
   summary.status = "ok";
@@ -341,8 +361,10 @@ RunOutcome writeRunOutputs(const Case& run, const std::string& dir, const World&
   // began follows from the count of accumulated steps.
   std::uint64_t accumulated = 0;
   for (const std::uint64_t n : state.phaseCount) accumulated += n;
-  const double averagedFrom = static_cast<double>(world.stepCount() - accumulated) * config.run.dt;
-  const RunSummary summary = summarise(run, dir, world, state, fields, rate, settled, rule, averagedFrom);
+  const std::uint64_t firstAveraged = world.stepCount() - accumulated;
+  const double averagedFrom = static_cast<double>(firstAveraged) * config.run.dt;
+  const bool extended = firstAveraged != run.steps.firstMeasured;
+  const RunSummary summary = summarise(run, dir, world, state, fields, rate, settled, rule, averagedFrom, extended);
   writeFileAtomically(dir + "/summary.json", toJson(summary).dump(2) + "\n");
   // For the cost estimates (scenario/SpeedRecord.h); stretches under 10^4 steps say more about
   // start-up than about the step.
@@ -383,6 +405,11 @@ std::string RunOutcome::resultLine() const {
 }
 
 std::string runLockPath(const std::string& dir) { return dir + "/.running.lock"; }
+
+bool holdsRun(const std::string& dir) {
+  return fs::exists(checkpointPath(dir)) || fs::exists(previousCheckpointPath(dir)) ||
+         fs::exists(dir + "/summary.json") || fs::exists(runProgressPath(dir));
+}
 
 FileLock prepareRunDirectory(const std::string& dir, const RunConfig& config, const std::string& configToml,
                              bool resume) {
@@ -428,15 +455,16 @@ RunOutcome runExperiment(const Case& run, const RunOptions& options) {
   RunState state;
   FieldObserver fields(config.fields, config.box.width);
   ProgressFile progressFile(dir, config.run.duration);
+  auto fractionDone = [&run](const World& w) {
+    return static_cast<double>(w.stepCount()) / static_cast<double>(run.steps.total);
+  };
   std::optional<World> loaded;
   if (options.resume) {
     if (std::optional<Checkpoint> checkpoint = newestGoodCheckpoint(dir, config, configToml, log)) {
       loaded.emplace(std::move(checkpoint->world));
       state = std::move(checkpoint->state);
       fields = std::move(checkpoint->fields);
-      progressFile.stage("resumed from its checkpoint",
-                         static_cast<double>(loaded->stepCount()) / static_cast<double>(run.steps.total),
-                         loaded->time());
+      progressFile.stage("resumed from its checkpoint", fractionDone(*loaded), loaded->time());
     }
   }
 
@@ -449,7 +477,15 @@ RunOutcome runExperiment(const Case& run, const RunOptions& options) {
   stopOnSignal.emplace();
   if (!loaded) {
     progressFile.stage("making or loading its bed");
-    loaded.emplace(startFromBed(run, state, log, progress));
+    try {
+      loaded.emplace(startFromBed(run, state, log, progress));
+    } catch (const Interrupted&) {
+      progressFile.stopped(kInterruptedMakingBedStage, -1.0, 0.0);
+      throw;
+    } catch (const Error& e) {
+      progressFile.stopped(std::string("failed while making or loading its bed: ") + e.what(), -1.0, 0.0);
+      throw;
+    }
     progressFile.stage(state.bedFromCache ? "bed loaded from the cache, run started" : "bed made, run started");
     // A run without dumps leaves no dump file (not an empty one); one with dumps starts it afresh.
     std::error_code ec;
@@ -482,6 +518,14 @@ RunOutcome runExperiment(const Case& run, const RunOptions& options) {
   const std::uint64_t stepAtStart = world.stepCount();
   try {
     finished = stepToTheEnd(run, options, configToml, world, state, fields, observers, progress, progressFile, log);
+  } catch (const Interrupted&) {
+    progress.clear();
+    progressFile.stopped(interruptedStage(world.time()), fractionDone(world), world.time());
+    throw;
+  } catch (const Error& e) {
+    progress.clear();
+    progressFile.stopped(failedStage(world.time(), e.what()), fractionDone(world), world.time());
+    throw;
   } catch (...) {
     progress.clear();
     throw;

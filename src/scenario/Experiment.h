@@ -58,6 +58,13 @@ CachedBed startRun(const Case& run, const BedProgress& progress = {});
 [[nodiscard]] FileLock prepareRunDirectory(const std::string& dir, const RunConfig& config,
                                            const std::string& configToml, bool resume);
 
+// Whether `runDir` holds a run for `wiggle run --resume` to continue: a checkpoint (an interrupted
+// run, or a finished one, which is then extended or rewritten), a summary.json (a finished run), or
+// the progress.json of a run stopped before its first checkpoint (continued from its bed: the bed
+// cache keeps a bed in the making). A directory with none of these never held a run (a mistyped
+// --out): `wiggle run --resume` refuses it rather than start a new run there.
+bool holdsRun(const std::string& runDir);
+
 // The lock a run holds on its directory while it writes there: a second run given the same
 // directory stops instead of writing beside it, and `wiggle status` sees which cases of a sweep
 // are running whichever process runs them (array tasks leave no trace in results.csv until done).

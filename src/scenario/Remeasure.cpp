@@ -31,10 +31,15 @@ Remeasured remeasureRun(const std::string& runDir, const RemeasureRequest& reque
   Remeasured r;
   r.period = run.config.drive.period;
   const double end = samples.back().t;
+  const double tolerance = 1e-9 * std::max(1.0, end);
   RateWindow window;
   window.to = request.to.value_or(run.config.run.duration);
+  if (!request.to && window.to > end + tolerance) {
+    window.to = end;
+    r.cutShortAt = end;
+  }
   window.from = request.from.value_or(paperWindow(window.to).from);
-  if (window.to > end + 1e-9 * std::max(1.0, end))
+  if (window.to > end + tolerance)
     throw Error("--to " + formatNumber(window.to) + " is past the end of " + trajectoryPath +
                 " (t = " + formatNumber(end) + ")");
   if (window.from < samples.front().t)

@@ -32,10 +32,13 @@ struct Remeasured {
   double period = 0.0;
   RiseRate rate;  // its tInitial and tFinal are the window measured
   SettledRate settled;
+  // Without --to, a trajectory.csv that ends before run.duration (a LAMMPS run of the exported deck
+  // for fewer steps, `lmp -var nsteps N`) is measured to its end, at this time; 0 otherwise.
+  double cutShortAt = 0.0;
 };
 
 // Reads runDir/config.toml and runDir/trajectory.csv. Throws wiggle::Error naming the file or the
-// option at fault (a window outside the run, a band that is not positive).
+// option at fault (a window outside the data, a band that is not positive).
 Remeasured remeasureRun(const std::string& runDir, const RemeasureRequest& request);
 
 // Sets vy_settled, t_settled, settled and settle_band in runDir/summary.json (atomically; every

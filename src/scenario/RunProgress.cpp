@@ -4,9 +4,14 @@
 #include <nlohmann/json.hpp>
 
 #include "core/Error.h"
+#include "core/Format.h"
 #include "io/AtomicFile.h"
 
 namespace wiggle {
+
+std::string interruptedStage(double t) { return "interrupted at t = " + formatNumber(t); }
+
+std::string failedStage(double t, const std::string& why) { return "failed at t = " + formatNumber(t) + ": " + why; }
 
 std::string runProgressPath(const std::string& runDir) { return runDir + "/progress.json"; }
 

@@ -17,6 +17,16 @@ struct RunProgress {
   double etaSeconds = -1.0;  // wall seconds left, estimated; -1 when not known yet
 };
 
+// The stage of a run stopped by SIGINT or SIGTERM, which checkpointed first ("interrupted at t =
+// 12.5"), and of one stopped while its bed was made (the bed cache kept the bed so far). A run
+// killed outright (SIGKILL, a crash) cannot say so: its file keeps the last stage it wrote, and
+// `wiggle status` finds it interrupted because no process holds its directory's lock.
+std::string interruptedStage(double t);
+inline constexpr const char* kInterruptedMakingBedStage = "interrupted while making its bed";
+// The stage of a run stopped by an error (a blow-up, a full disk): "failed at t = 12.5: why" (one
+// stopped by an error while its bed was made or loaded: "failed while making or loading its bed: why").
+std::string failedStage(double t, const std::string& why);
+
 std::string runProgressPath(const std::string& runDir);
 void writeRunProgress(const std::string& runDir, const RunProgress& progress);
 // The run's progress, or nothing when it has none (not started, or run by a wiggle that did not

@@ -54,6 +54,12 @@ class Monitor {
     if (status_.onTerminal() || echo_) std::fprintf(stderr, "%s\n", text.c_str());
   }
 
+  // A line for sweep.log alone: the caller says it to the user.
+  void record(const std::string& text) {
+    log_.line(text);
+    status_.clear();
+  }
+
   void status(const std::string& text, bool force = false) { status_.update(text, force); }
   void clear() { status_.clear(); }
 
@@ -263,7 +269,10 @@ class Coordinator {
     if (warned)
       out.summary += "; " + std::to_string(warned) + (warned > 1 ? " cases have" : " case has") +
                      " warnings (warnings column of results.csv, wiggle status)";
-    monitor_.event(out.summary);
+    if (options_.summaryAsEvent)
+      monitor_.event(out.summary);
+    else
+      monitor_.record(out.summary);
     return out;
   }
 

@@ -38,6 +38,9 @@ struct SweepOptions {
   MpiQueue* mpi = nullptr;
   bool progress = true;      // live status line on stderr when it is a terminal
   bool logToStderr = true;   // event lines on stderr when it is not a terminal (always in sweep.log)
+  // The final summary line (SweepOutcome::summary) among those event lines; `wiggle sweep` turns it
+  // off and prints the line itself, so that it is said once.
+  bool summaryAsEvent = true;
   bool handleSignals = true; // SIGINT/SIGTERM: stop children at a checkpoint, write results, stop
   std::ostream* listing = nullptr;  // where --dry-run prints (nullptr = stdout)
   // Test hook: called on the coordinator when it starts a local child.

@@ -148,6 +148,60 @@ std::string formatSweepStatus(const SweepStatus& s) {
   return out.str();
 }
 
+std::optional<RunStatus> readRunStatus(const std::string& dir) {
+  if (!fs::is_directory(dir) || !holdsRun(dir)) return std::nullopt;
+  RunStatus r;
+  r.dir = dir;
+  const std::optional<RunProgress> progress = readRunProgress(dir);
+  r.hasProgress = progress.has_value();
+  r.progress = progress.value_or(RunProgress{"finished"});
+  if (FileLock::holders(runLockPath(dir)) != FileLock::Holders::None) {
+    r.state = "running";
+  } else if (caseFinished(dir) && r.progress.stage == "finished") {
+    // progress.json says "finished" only once summary.json is written; any other stage beside a
+    // summary.json is a later resume (an extension) that stopped.
+    r.state = "done";
+    const CaseResult summary = readCaseSummary(dir);
+    r.vy = summary.vy;
+    r.warnings = summary.warnings;
+    return r;
+  } else {
+    r.state = "stopped";
+  }
+  r.warnings = readRunWarnings(dir);
+  return r;
+}
+
+std::string formatRunStatus(const RunStatus& r) {
+  const RunProgress& p = r.progress;
+  const auto startsWith = [&p](const char* prefix) { return p.stage.rfind(prefix, 0) == 0; };
+  const std::string ofDuration =
+      " of " + formatNumber(p.duration) +
+      (p.fraction >= 0 ? " (" + formatNumber(100.0 * p.fraction, 3) + " % of its steps)" : "");
+  const std::string resume = "; continue with: wiggle run --out " + r.dir + " --resume";
+  std::ostringstream out;
+  out << "run " << r.dir << ": ";
+  if (r.state == "done")
+    out << "done" << (r.hasProgress ? " (t = " + formatNumber(p.t) + ")" : "") << ": V_y = " << formatNumber(r.vy)
+        << ", summary in " << r.dir << "/summary.json";
+  else if (r.state == "running")
+    out << "running, " << (p.fraction >= 0 ? "t = " + formatNumber(p.t) + ofDuration : p.stage)
+        << (p.etaSeconds >= 0 ? ", about " + formatDuration(p.etaSeconds) + " to go" : "");
+  else if (startsWith("failed"))
+    out << p.stage;
+  else if (startsWith("interrupted at"))
+    out << p.stage << ofDuration << resume;
+  else if (startsWith("interrupted"))
+    out << p.stage << resume;
+  else  // its process ended without a word (SIGKILL, a crash, a power cut): the last stage it wrote
+    out << "interrupted (its process ended without saying why: killed?) "
+        << (p.fraction >= 0 ? "after t = " + formatNumber(p.t) + ofDuration : "while " + p.stage) << resume
+        << " (from its last checkpoint, or from its bed if it wrote none)";
+  out << "\n";
+  for (const std::string& w : r.warnings) out << "  warning: " << w << "\n";
+  return out.str();
+}
+
 std::string sweepStatusJson(const SweepStatus& s) {
   using nlohmann::json;
   json cases = json::array();

@@ -2,10 +2,12 @@
 // `wiggle status DIR`: a sweep directory at a glance, from what the sweep leaves on disk (results.csv,
 // each case's progress.json, the directory's lock and each run's), without touching it: per case
 // done, running (with how far it got), failed (with its error) or pending, and an estimated time to go.
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "io/FileLock.h"
+#include "scenario/RunProgress.h"
 
 namespace wiggle {
 
@@ -52,5 +54,22 @@ std::string formatSweepStatus(const SweepStatus& status);
 // "cases": [{"name", "status", "error", "vy", "wall_s", "fraction", "interrupted", "warnings"}]} (vy and wall_s null unless ok,
 // fraction null unless a running case's progress.json says how far it got).
 std::string sweepStatusJson(const SweepStatus& status);
+
+// `wiggle status RUN_DIR` for one run directory (`wiggle run --out DIR`), from its files alone:
+// done (its summary.json says ok and no later run of it is under way), running (a process holds its
+// lock), or stopped: interrupted at t (SIGINT/SIGTERM, or killed: no process holds it), failed at t.
+struct RunStatus {
+  std::string dir;
+  std::string state;     // done | running | stopped
+  RunProgress progress;  // its progress.json (stage "finished" when a finished run has none)
+  bool hasProgress = false;
+  double vy = 0.0;                    // done: summary.json's V_y
+  std::vector<std::string> warnings;  // done: summary.json's; else warnings.txt so far
+};
+
+// Nothing when `dir` holds no run (scenario/Experiment.h holdsRun).
+std::optional<RunStatus> readRunStatus(const std::string& dir);
+
+std::string formatRunStatus(const RunStatus& status);
 
 }  // namespace wiggle

@@ -490,6 +490,94 @@ TEST_F(Cli, InterruptedRunsAndSweepsExit128PlusTheSignal) {
   EXPECT_EQ(s.status, 143) << s.err;
   EXPECT_NE(s.err.find("rerun the same command to resume"), std::string::npos) << s.err;
 }
+
+std::size_t occurrences(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+// Issue 53: a run stopped by Ctrl-C says where in its progress.json, and `wiggle status RUN_DIR`
+// reports a single run (stopped, killed without a word, done) as it does a sweep.
+TEST_F(Cli, StatusOfARunDirectorySaysWhereItStopped) {
+  const fs::path out = work_ / "run";
+  const Stopped s = startAndSignal({WIGGLE_BINARY, "run", tinyConfig(), "--set", "run.duration=50", "--set",
+                                    "run.checkpoint_interval=0.2", "--out", out.string(), "--threads", "1"},
+                                   out / "checkpoint.bin", SIGINT, logs_ / "err", root_ / "cache");
+  ASSERT_EQ(s.status, 130) << s.err;
+  const std::string progress = slurp(out / "progress.json");
+  EXPECT_NE(progress.find("\"stage\": \"interrupted at t = "), std::string::npos) << progress;
+  Result r = wiggle("status run");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("run run: interrupted at t = ", 0), 0u) << r.out;
+  EXPECT_NE(r.out.find(" of 50 ("), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("continue with: wiggle run --out run --resume"), std::string::npos) << r.out;
+
+  // Killed outright, a run cannot say so: its last stage stays, and no process holds its lock.
+  std::ofstream(out / "progress.json")
+      << R"({"stage": "running", "fraction": 0.25, "t": 12.5, "duration": 50, "eta_s": 60})";
+  r = wiggle("status run");
+  EXPECT_NE(r.out.find("run run: interrupted (its process ended without saying why: killed?) after t = 12.5 of 50 "
+                       "(25 % of its steps)"),
+            std::string::npos)
+      << r.out;
+
+  // Finished; a fresh run shorter than 0.25 (0.1 t_total off the sample grid) is not "extended".
+  r = wiggle("run " + quoted(tinyConfig()) +
+             " --set run.duration=0.12 --set run.sample_interval=0.04 --out done "
+             "--threads 1");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err.find("extended"), std::string::npos) << r.err;
+  EXPECT_EQ(slurp(work_ / "done" / "summary.json").find("extended"), std::string::npos);
+  r = wiggle("status done");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("run done: done (t = 0.12): V_y = ", 0), 0u) << r.out;
+}
+
+// Issue 53: `--resume` on a directory that holds no run (a mistyped --out) is refused in one line
+// before anything is written, instead of starting a new run there; a finished run is still rewritten.
+TEST_F(Cli, ResumeWhereNoRunIsIsRefusedBeforeAnythingIsWritten) {
+  expectOneLineError(wiggle("run " + quoted(tinyConfig()) + " --out nothere --resume --threads 1"),
+                     {"--resume", "nothere", "holds no run"}, "resume of a missing directory");
+  expectOneLineError(wiggle("run --out nothere --resume --check"), {"--resume", "nothere", "holds no run"},
+                     "resume --check of a missing directory");
+  EXPECT_TRUE(workIsEmpty());
+  fs::create_directories(work_ / "empty");
+  expectOneLineError(wiggle("run --out empty --resume --set run.duration=1"), {"--resume", "empty", "holds no run"},
+                     "resume of an empty directory");
+  EXPECT_TRUE(fs::is_empty(work_ / "empty"));
+  EXPECT_FALSE(fs::exists(root_ / "cache"));
+
+  ASSERT_EQ(wiggle("run " + quoted(tinyConfig()) + " --out done --threads 1").status, 0);
+  const Result r = wiggle("run --out done --resume --threads 1");
+  EXPECT_EQ(r.status, 0) << r.err;
+}
+
+// Issue 53: the sweep's final line is said once (it was printed as an event and again by the
+// command), for a whole sweep and for one case.
+TEST_F(Cli, SweepSaysItsSummaryOnce) {
+  for (const std::string& only : {std::string(), std::string(" --case 1")}) {
+    const Result r = wiggle("sweep " + quoted(quickSweep()) + " --out sweep --jobs 1 --threads 1" + only);
+    EXPECT_EQ(r.status, 1) << r.err;  // its case fails its geometry check
+    EXPECT_EQ(occurrences(r.out + r.err, "sweep sweep: "), 1u) << only << ": " << r.out << r.err;
+  }
+}
+
+// Issue 53: a trajectory shorter than its config's run.duration (a LAMMPS run of the exported deck
+// for fewer steps, `lmp -var nsteps N`) is measured to its end, and said so; --to past it is refused.
+TEST_F(Cli, RateMeasuresAShorterTrajectoryToItsEnd) {
+  ASSERT_EQ(wiggle("run " + quoted(tinyConfig()) + " --set run.duration=0.2 --out run --threads 1").status, 0);
+  std::string config = slurp(work_ / "run" / "config.toml");
+  const std::size_t at = config.find("\nduration = 0.2 ");  // [run]'s (a comment follows the value)
+  ASSERT_NE(at, std::string::npos) << config;
+  config.replace(at, 15, "\nduration = 100 ");
+  std::ofstream(work_ / "run" / "config.toml") << config;
+  const Result r = wiggle("rate run");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("\nrun,1,0.02,0.2,"), std::string::npos) << r.out;  // t_i = 0.1 x 0.2, t_f = 0.2
+  EXPECT_NE(r.err.find("trajectory.csv ends at t = 0.2, before the config's run.duration"), std::string::npos) << r.err;
+  expectOneLineError(wiggle("rate run --to 5"), {"--to 5", "past the end"}, "--to past the end");
+}
 }  // namespace
 
 namespace wiggle {
@@ -524,8 +612,9 @@ TEST_F(Cli, StatusSummarisesASweepDirectory) {
   // 600 s per case x (0.75 + 1) cases left / 2 jobs = 525 s.
   EXPECT_NE(r.out.find("about 8m45s"), std::string::npos) << r.out;
 
-  expectOneLineError(wiggle("status " + quoted(root_.string())), {"results.csv", "not a sweep directory"},
-                     "status of a non-sweep directory");
+  expectOneLineError(wiggle("status " + quoted(root_.string())),
+                     {"neither a sweep directory (no results.csv) nor a run directory"},
+                     "status of a directory that is neither a sweep's nor a run's");
   expectOneLineError(wiggle("status " + quoted((root_ / "nowhere").string())), {"nowhere", "not a directory"},
                      "status of a missing directory");
 }

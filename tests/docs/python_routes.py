@@ -2,7 +2,7 @@
 """The documented Python routes, run exactly as the documents write them, in a fresh copy of the
 source tree (its tracked files, no build, nothing set in the environment but PATH and HOME).
 
-    python_routes.py SOURCE_DIR BUILD_DIR
+    python_routes.py SOURCE_DIR BUILD_DIR [--after-set-up]
 
 1. The notebook's own command, `jupyter nbconvert --to notebook --execute examples/figures.ipynb`,
    typed at the root of the copy with nothing built: it must redraw figures 5 and 14 from the
@@ -17,8 +17,15 @@ source tree (its tracked files, no build, nothing set in the environment but PAT
 4. The notebook as `cmake --install` puts it (share/wiggle/examples), run where it was installed,
    and `import wiggle` from where the install puts the module (PYTHONPATH=PREFIX/share/wiggle/python).
 Every command is taken from the documents' text (a test of the text, not of a variant of it).
-Exits 1 with a line per failure. The bed of route 2 goes to $WIGGLE_CACHE when set.
+The notebooks run with TMPDIR set to a directory of the test's own, which must be left empty (a
+notebook cleans up what it writes there). Exits 1 with a line per failure. The bed of route 2 goes
+to $WIGGLE_CACHE when set.
+
+--after-set-up: BUILD_DIR is what the README's set-up commands left (CI runs this right after
+`tools/bootstrap.sh run`), so every route must work there: the Python module missing from it is a
+failure, not a route skipped.
 """
+import glob
 import json
 import os
 import re
@@ -64,6 +71,14 @@ def shell(command, cwd, home, extra=None):
                           timeout=1200)
 
 
+def notebook_left_nothing(tmp, what):
+    """The notebook left nothing in its TMPDIR (issue 53: figures.ipynb left /tmp/wiggle-figures-*)."""
+    left = sorted(os.listdir(tmp))
+    check(not left, f"{what}: the notebook left {left} in its temporary directory")
+    for name in left:
+        shutil.rmtree(os.path.join(tmp, name), ignore_errors=True)
+
+
 def executed_notebook_ok(path, what, figures=3, what_figures="figures 5, 14 and a trajectory"):
     """Whether the executed notebook at `path` holds its figures and no error."""
     if not check(os.path.exists(path), f"{what}: no executed notebook {path}"):
@@ -79,10 +94,13 @@ def executed_notebook_ok(path, what, figures=3, what_figures="figures 5, 14 and 
 
 def main():
     source, build = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
+    after_set_up = "--after-set-up" in sys.argv[3:]
     work = tempfile.mkdtemp(prefix="wiggle-python-routes-")
     try:
         home = os.path.join(work, "home")
         os.makedirs(home)
+        tmp = {"TMPDIR": os.path.join(work, "tmp")}  # the notebooks' temporary files
+        os.makedirs(tmp["TMPDIR"])
         tree = os.path.join(work, "clone")
         fresh_copy(source, tree)
 
@@ -91,9 +109,10 @@ def main():
               "python/README.md no longer gives the notebook's command")
         check(documented(os.path.join(tree, "examples", "figures.ipynb"), NOTEBOOK_COMMAND),
               "the notebook no longer gives its command")
-        done = shell(NOTEBOOK_COMMAND, tree, home)
+        done = shell(NOTEBOOK_COMMAND, tree, home, tmp)
         if check(done.returncode == 0, f"`{NOTEBOOK_COMMAND}` at the root: exit {done.returncode}: {done.stderr[-1500:]}"):
             executed_notebook_ok(os.path.join(tree, "examples", "figures.nbconvert.ipynb"), "notebook at the root")
+        notebook_left_nothing(tmp["TMPDIR"], "notebook at the root")
 
         # 2. python/README.md's wp.run line, from the root with PYTHONPATH=python.
         with open(os.path.join(tree, "python", "README.md"), encoding="utf-8") as f:
@@ -113,8 +132,12 @@ def main():
                 check(re.search(r"^vy [-+0-9.e]+$", built.stdout, re.M) is not None, f"wp.run printed {built.stdout!r}")
                 check(os.path.exists(os.path.join(tree, "t5", "summary.json")), "wp.run wrote no t5/summary.json")
 
-        # 3. docs/PYTHON.md's `import wiggle` line in the built copy (when the module was built).
-        if os.path.isdir(os.path.join(build, "python")):
+        # 3. docs/PYTHON.md's `import wiggle` line in the built copy (when the module was built; after
+        # the README's set-up it must have been).
+        module_built = bool(glob.glob(os.path.join(build, "python", "wiggle.*.so")))
+        check(module_built or not after_set_up,
+              f"the README's set-up left no Python module in {build}/python (docs/PYTHON.md: import wiggle)")
+        if module_built or after_set_up:
             with open(os.path.join(tree, "docs", "PYTHON.md"), encoding="utf-8") as f:
                 engine_line = next((l.strip() for l in f if l.startswith("PYTHONPATH=build/release/python ")), None)
             if check(engine_line is not None, "docs/PYTHON.md has no `PYTHONPATH=build/release/python ...` line"):
@@ -127,10 +150,11 @@ def main():
                 for where in (os.path.join("docs", "PYTHON.md"), os.path.join("examples", "engine.ipynb")):
                     check(documented(os.path.join(tree, where), ENGINE_NOTEBOOK_COMMAND),
                           f"{where} no longer gives the engine notebook's command")
-                done = shell(ENGINE_NOTEBOOK_COMMAND, tree, home, cache)
+                done = shell(ENGINE_NOTEBOOK_COMMAND, tree, home, {**cache, **tmp})
                 if check(done.returncode == 0, f"`{ENGINE_NOTEBOOK_COMMAND}`: exit {done.returncode}: {done.stderr[-1500:]}"):
                     executed_notebook_ok(os.path.join(tree, "examples", "engine.nbconvert.ipynb"), "engine notebook",
                                          figures=2, what_figures="the grains with the path, and y(t) with the counts")
+                notebook_left_nothing(tmp["TMPDIR"], "engine notebook")
                 # and its ```python examples, each as written (the module and the plotting package on
                 # PYTHONPATH, as the page says).
                 with open(os.path.join(tree, "docs", "PYTHON.md"), encoding="utf-8") as f:
@@ -149,10 +173,11 @@ def main():
         installed = subprocess.run(["cmake", "--install", build, "--prefix", prefix], capture_output=True, text=True)
         if check(installed.returncode == 0, f"cmake --install: {installed.stderr[-500:]}"):
             examples = os.path.join(prefix, "share", "wiggle", "examples")
-            done = shell("jupyter nbconvert --to notebook --execute figures.ipynb", examples, home)
+            done = shell("jupyter nbconvert --to notebook --execute figures.ipynb", examples, home, tmp)
             if check(done.returncode == 0, f"installed notebook: exit {done.returncode}: {done.stderr[-1500:]}"):
                 executed_notebook_ok(os.path.join(examples, "figures.nbconvert.ipynb"), "installed notebook")
-            if os.path.isdir(os.path.join(build, "python")):
+            notebook_left_nothing(tmp["TMPDIR"], "installed notebook")
+            if module_built:
                 package = os.path.join(prefix, "share", "wiggle", "python")
                 done = shell("/usr/bin/python3 -c 'import wiggle; print(wiggle.__version__)'", work, home,
                              {"PYTHONPATH": package})

@@ -215,9 +215,11 @@ TEST(SweepSpec, StructuralErrorsNameTheFileAndKey) {
   EXPECT_NE(sweepError("case = 3\n").find("'case' must be a list of tables"), std::string::npos);
 }
 
-TEST(SweepSpec, MissingFileIsAnError) {
-  EXPECT_NE(errorOf([] { loadSweepSpec("/nonexistent/sweep.toml"); }).find("cannot read sweep file"),
-            std::string::npos);
+TEST(SweepSpec, UnreadableFileSaysWhy) {
+  EXPECT_EQ(errorOf([] { loadSweepSpec("/nonexistent/sweep.toml"); }),
+            "cannot read sweep file '/nonexistent/sweep.toml': No such file or directory");
+  const std::string dir = std::string(WIGGLE_SOURCE_DIR) + "/configs/sweeps";
+  EXPECT_EQ(errorOf([&] { loadSweepSpec(dir); }), "cannot read sweep file '" + dir + "': Is a directory");
 }
 
 TEST(SweepSpec, ShippedSweepFilesExpand) {
