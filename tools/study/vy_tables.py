@@ -1171,7 +1171,7 @@ def answer_protocol(spec):
               f"standard errors se = sigma sqrt(1/n_row + 1/n_baseline), sigma = {sig:.3f} one bed's standard "
               f"deviation by the paper's clock; the mass's change is against the baseline's run on the same bed, "
               f"with the same sigma, which its pairing is expected to make smaller (not measured); it moves the cell toward the paper's sign when >= {RESOLVED:g} se that way)"]
-    return lines, [f for f in PROTOCOL_FOLDERS + T1000_BEDS if os.path.exists(os.path.join(ROOT, f))]
+    return lines, [f for f in PROTOCOL_FOLDERS + T1000_BEDS if os.path.exists(os.path.join(ROOT, f, "results.csv"))]
 
 
 ANSWER_SOURCES = FINDING_SOURCES + ["results/paper_depth/glued", "results/paper_depth/triangle"]
