@@ -231,7 +231,7 @@ RunSummary summarise(const Case& run, const std::string& dir, const World& world
   for (std::string& w : runWarnings(rate, averagedFrom, config)) summary.warnings.push_back(std::move(w));
   summary.overlapMargin = world.healthMargins().overlap;
   summary.speedMargin = world.healthMargins().speed;
-  summary.status = "ok";
+  summary.status = RunStatus::Ok;
   summary.grains = world.grainCount();
   summary.particles = world.particles().size();
   summary.steps = world.stepCount();
@@ -356,7 +356,7 @@ RunOutcome writeRunOutputs(const Case& run, const std::string& dir, const World&
            formatNumber(summary.nsPerParticleStep) + " ns/particle-step, state " + world.stateHash());
   for (const std::string& w : summary.warnings) log.line("warning: " + w);
   RunOutcome outcome;
-  outcome.status = "ok";
+  outcome.status = RunStatus::Ok;
   outcome.vy = rate.vy;
   outcome.vySlope = rate.slope;
   outcome.vySettled = settled.vy;
@@ -491,7 +491,7 @@ RunOutcome runExperiment(const Case& run, const RunOptions& options) {
   stepping.steps = world.stepCount() - stepAtStart;
   if (!finished) {
     RunOutcome stopped;
-    stopped.status = "stopped";
+    stopped.status = RunStatus::Stopped;
     return stopped;
   }
   writeCheckpoint(dir, configToml, world, state, fields);

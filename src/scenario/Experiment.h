@@ -13,6 +13,7 @@
 #include "physics/World.h"
 #include "scenario/BedMaker.h"
 #include "scenario/Case.h"
+#include "scenario/RunSummary.h"  // RunStatus
 
 namespace wiggle {
 
@@ -27,7 +28,7 @@ struct RunOptions {
 };
 
 struct RunOutcome {
-  std::string status;   // "ok" | "stopped"
+  RunStatus status = RunStatus::Ok;
   double vy = 0.0, vySlope = 0.0;
   double vySettled = 0.0, tSettled = 0.0;  // the paper's t_f rule (analysis/RiseRate.h)
   bool settled = false;

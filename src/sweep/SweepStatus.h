@@ -6,15 +6,17 @@
 #include <vector>
 
 #include "io/FileLock.h"
+#include "sweep/ResultsTable.h"  // CaseStatus
 
 namespace wiggle {
 
-struct CaseStatus {
+// One case's line of the glance.
+struct CaseAtAGlance {
   std::string name;
-  // ok | failed | running | pending, as results.csv says, except that a case is ok only when its
-  // summary.json says so (caseFinished, sweep/ResultsTable.h): else it is pending, as the sweep
-  // would rerun it, and `error` says why.
-  std::string status;
+  // As results.csv says, except that a case is ok only when its summary.json says so
+  // (caseFinished, sweep/ResultsTable.h): else it is pending, as the sweep would rerun it, and
+  // `error` says why.
+  CaseStatus status = CaseStatus::Pending;
   std::string error;    // failed: the recorded error
   double vy = 0.0;      // ok: the rise rate
   double wallSeconds = 0.0;  // ok: the case's wall time
@@ -29,7 +31,7 @@ struct CaseStatus {
 struct SweepStatus {
   std::string dir;
   std::string name;  // the sweep's name, from sweep.json (empty when unknown)
-  std::vector<CaseStatus> cases;
+  std::vector<CaseAtAGlance> cases;
   // Who holds the directory's lock now: a whole sweep (exclusive), one-case tasks (`--case`, shared)
   // or nobody.
   FileLock::Holders sweepLock = FileLock::Holders::None;
