@@ -25,6 +25,7 @@
 #include "physics/PairKernel.h"
 #include "physics/World.h"
 #include "scenario/BedMaker.h"
+#include "scenario/EngineSettings.h"
 #include "scenario/Shape.h"
 
 namespace wiggle {

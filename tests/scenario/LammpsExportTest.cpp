@@ -18,7 +18,9 @@
 #include "io/AtomicFile.h"
 #include "io/Config.h"
 #include "scenario/BedMaker.h"
+#include "scenario/EngineSettings.h"
 #include "scenario/Experiment.h"
+#include "scenario/LammpsBed.h"
 #include "scenario/Shape.h"
 #include "support/TestSupport.h"
 
