@@ -17,7 +17,7 @@
 #include "core/Error.h"
 #include "io/AtomicFile.h"
 #include "model/CavityModel.h"
-#include "scenario/Shape.h"
+#include "scenario/geometry/Shape.h"
 
 namespace wiggle::cli {
 

@@ -2,7 +2,7 @@
 // (analysis/RiseRate.h), from the trajectory.csv of a finished run or of every finished case of a
 // sweep directory, over the run's own window or any other; a CSV table on stdout. --write records
 // the settle rule's result (vy_settled, t_settled) in summary.json files written before it existed,
-// and in the sweep's results.csv (scenario/Remeasure.h).
+// and in the sweep's results.csv (scenario/run/Remeasure.h).
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -14,7 +14,7 @@
 #include "Commands.h"
 #include "core/Error.h"
 #include "core/Format.h"
-#include "scenario/Remeasure.h"
+#include "scenario/run/Remeasure.h"
 #include "sweep/ResultsTable.h"
 
 namespace wiggle::cli {

@@ -16,7 +16,7 @@
 #include "core/StopSignal.h"
 #include "io/AtomicFile.h"
 #include "io/FileLock.h"
-#include "scenario/RunProgress.h"
+#include "scenario/run/RunProgress.h"
 #include "sweep/ResultsTable.h"
 #include "sweep/SweepStart.h"
 #include "sweep/TaskRunner.h"

@@ -9,7 +9,7 @@
 #include "core/Median.h"
 #include "io/AtomicFile.h"
 #include "io/Config.h"
-#include "scenario/RunSummary.h"
+#include "scenario/run/RunSummary.h"
 
 namespace wiggle {
 

@@ -12,8 +12,8 @@
 #include "core/Median.h"
 #include "io/AtomicFile.h"
 #include "io/FileLock.h"
-#include "scenario/Experiment.h"
-#include "scenario/RunProgress.h"
+#include "scenario/run/Experiment.h"
+#include "scenario/run/RunProgress.h"
 #include "sweep/ResultsTable.h"
 #include "sweep/SweepStart.h"
 

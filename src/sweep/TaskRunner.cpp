@@ -22,9 +22,9 @@
 #include "core/StopSignal.h"
 #include "io/AtomicFile.h"
 #include "io/Config.h"
-#include "scenario/BedMaker.h"
-#include "scenario/Case.h"
-#include "scenario/Experiment.h"
+#include "scenario/bed/BedMaker.h"
+#include "scenario/case/Case.h"
+#include "scenario/run/Experiment.h"
 
 
 namespace wiggle {

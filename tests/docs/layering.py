@@ -18,6 +18,10 @@ import tempfile
 FLOORS = [["core"], ["physics"], ["io"], ["analysis", "model"], ["scenario"], ["sweep"]]
 FLOOR = {folder: level for level, folders in enumerate(FLOORS) for folder in folders}
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([a-z]+)/', re.M)
+# Rooms inside a folder, lowest first, on the same rule: a file of one room includes its own room
+# and the rooms below it. Every file of such a folder stands in one of its rooms.
+ROOMS = {"scenario": [["geometry", "bed"], ["case"], ["cost", "lammps"], ["run"]]}
+ROOM_INCLUDE = re.compile(r'^\s*#\s*include\s+"([a-z]+)/([a-z]+)/', re.M)
 # Any include of a file of the library: "folder/Name.h" or "folder/sub/Name.h".
 UNIT_INCLUDE = re.compile(r'^\s*#\s*include\s+"([a-z]+(?:/[A-Za-z]+)*/[A-Za-z0-9_]+)\.h"', re.M)
 
@@ -45,6 +49,26 @@ def floor_problems(src):
                 continue
             if FLOOR[target] >= FLOOR[folder]:
                 found.append(f"src/{rel} includes {target}/: floor {FLOOR[target]} from floor {FLOOR[folder]}")
+        found += room_problems(rel, text)
+    return found
+
+
+def room_problems(rel, text):
+    """The rooms' rule for one file (src/FOLDER/ROOM/NAME)."""
+    parts = rel.split("/")
+    if parts[0] not in ROOMS:
+        return []
+    level = {room: i for i, rooms in enumerate(ROOMS[parts[0]]) for room in rooms}
+    if len(parts) != 3 or parts[1] not in level:
+        return [f"src/{rel}: not in one of src/{parts[0]}'s rooms (tests/docs/layering.py names them)"]
+    found = []
+    for folder, target in ROOM_INCLUDE.findall(text):
+        if folder != parts[0] or target == parts[1]:
+            continue
+        if target not in level:
+            found.append(f"src/{rel} includes {folder}/{target}/: a room tests/docs/layering.py does not name")
+        elif level[target] >= level[parts[1]]:
+            found.append(f"src/{rel} includes {folder}/{target}/: room floor {level[target]} from {level[parts[1]]}")
     return found
 
 
@@ -104,24 +128,31 @@ def problems(root):
 
 
 def self_test():
-    """A planted circle inside one folder (a.cpp includes b.h, b.cpp includes a.h) must be found,
-    and the same tree without it must pass."""
+    """A planted circle inside one folder (A.cpp includes B.h, B.cpp includes A.h) must be found,
+    the same tree without it must pass, and a planted include up the scenario rooms must be found."""
     with tempfile.TemporaryDirectory() as root:
-        folder = os.path.join(root, "src", "scenario")
+        folder = os.path.join(root, "src", "sweep")
         os.makedirs(folder)
-        files = {"A.h": "", "B.h": "", "C.h": '#include "scenario/A.h"\n',
-                 "A.cpp": '#include "scenario/A.h"\n#include "scenario/B.h"\n',
-                 "B.cpp": '#include "scenario/B.h"\n#include "scenario/A.h"\n'}
+        files = {"A.h": "", "B.h": "", "C.h": '#include "sweep/A.h"\n',
+                 "A.cpp": '#include "sweep/A.h"\n#include "sweep/B.h"\n',
+                 "B.cpp": '#include "sweep/B.h"\n#include "sweep/A.h"\n'}
         for name, text in files.items():
             with open(os.path.join(folder, name), "w", encoding="utf-8") as f:
                 f.write(text)
         caught = problems(root)
-        if caught != ["units that include each other in a circle: src/scenario/A <-> src/scenario/B"]:
-            return [f"self-test: a planted circle between scenario/A and scenario/B was not reported as one: {caught}"]
+        if caught != ["units that include each other in a circle: src/sweep/A <-> src/sweep/B"]:
+            return [f"self-test: a planted circle between sweep/A and sweep/B was not reported as one: {caught}"]
         with open(os.path.join(folder, "B.cpp"), "w", encoding="utf-8") as f:
-            f.write('#include "scenario/B.h"\n')
+            f.write('#include "sweep/B.h"\n')
         if problems(root):
             return [f"self-test: the tree without its circle was not clean: {problems(root)}"]
+        # A room that includes one above it (geometry -> run) is named too.
+        for room, name, text in (("geometry", "G.h", '#include "scenario/run/R.h"\n'), ("run", "R.h", "")):
+            os.makedirs(os.path.join(root, "src", "scenario", room), exist_ok=True)
+            with open(os.path.join(root, "src", "scenario", room, name), "w", encoding="utf-8") as f:
+                f.write(text)
+        if problems(root) != ["src/scenario/geometry/G.h includes scenario/run/: room floor 3 from 0"]:
+            return [f"self-test: a planted include up the scenario rooms was not reported as one: {problems(root)}"]
     return []
 
 

@@ -14,7 +14,7 @@
 #include <string>
 
 #include "core/Error.h"
-#include "scenario/Shape.h"
+#include "scenario/geometry/Shape.h"
 
 namespace wiggle {
 namespace {

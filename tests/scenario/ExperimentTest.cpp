@@ -19,13 +19,13 @@
 #include "io/Config.h"
 #include "io/FileLock.h"
 #include "io/StateFile.h"
-#include "scenario/BedMaker.h"
-#include "scenario/Checkpoint.h"
-#include "scenario/Experiment.h"
-#include "scenario/LammpsExport.h"
-#include "scenario/Remeasure.h"
-#include "scenario/RunProgress.h"
-#include "scenario/RunSummary.h"
+#include "scenario/bed/BedMaker.h"
+#include "scenario/run/Checkpoint.h"
+#include "scenario/run/Experiment.h"
+#include "scenario/lammps/LammpsExport.h"
+#include "scenario/run/Remeasure.h"
+#include "scenario/run/RunProgress.h"
+#include "scenario/run/RunSummary.h"
 #include "support/TestSupport.h"
 
 namespace wiggle {
@@ -168,7 +168,7 @@ TEST(Experiment, ThreadCountDoesNotChangeTheResult) {
   EXPECT_EQ(readFile(one.outDir + "/fields.csv"), readFile(three.outDir + "/fields.csv"));
 }
 
-// A run of 10^4 steps or more leaves its speed for the cost estimates (scenario/SpeedRecord.h): one
+// A run of 10^4 steps or more leaves its speed for the cost estimates (scenario/cost/SpeedRecord.h): one
 // line in its bed cache's speed.log with the wall figure of its summary, its CPU figure, which is
 // what the estimates take, and its particle count, by which they pick runs of beds of their size.
 // One thread's CPU time cannot exceed its wall time.

@@ -1,9 +1,9 @@
-// summary.json's one table (scenario/RunSummary.h): it writes and reads the file, and it is the
+// summary.json's one table (scenario/run/RunSummary.h): it writes and reads the file, and it is the
 // schema the documents and the Python package use.
 #include <gtest/gtest.h>
 
 #include "core/Error.h"
-#include "scenario/RunSummary.h"
+#include "scenario/run/RunSummary.h"
 #include "support/TestSupport.h"
 
 namespace wiggle {

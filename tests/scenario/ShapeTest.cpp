@@ -1,7 +1,7 @@
 // Intruder shapes and their atom clumps: outline dimensions from the paper's table, the two-sided
 // envelope tolerance (checked here with the test's own geometry, not measureClump's), the no-lodge
 // argument, interior coverage, polygon validation and the mass rule.
-#include "scenario/Shape.h"
+#include "scenario/geometry/Shape.h"
 
 #include <gtest/gtest.h>
 
@@ -44,7 +44,7 @@ ClumpDef clumpFor(ShapeName shape, double angle = 0.0) {
   return makeClump(def, MassModel::Sphere, 1.0);
 }
 
-// The test's own point-to-outline geometry (independent of scenario/Polygon.cpp).
+// The test's own point-to-outline geometry (independent of scenario/geometry/Polygon.cpp).
 double segDist(OutlinePoint a, OutlinePoint b, OutlinePoint p) {
   const double ex = b[0] - a[0], ey = b[1] - a[1];
   double t = ((p[0] - a[0]) * ex + (p[1] - a[1]) * ey) / (ex * ex + ey * ey);

@@ -15,7 +15,7 @@
 
 #include "io/AtomicFile.h"
 #include "io/SweepSpec.h"
-#include "scenario/RunSummary.h"
+#include "scenario/run/RunSummary.h"
 #include "sweep/Coordinator.h"
 #include "sweep/ResultsTable.h"
 #include "support/TestSupport.h"

@@ -9,9 +9,9 @@
 
 #include "io/AtomicFile.h"
 #include "io/FileLock.h"
-#include "scenario/Experiment.h"
-#include "scenario/RunProgress.h"
-#include "scenario/RunSummary.h"
+#include "scenario/run/Experiment.h"
+#include "scenario/run/RunProgress.h"
+#include "scenario/run/RunSummary.h"
 #include "support/TestSupport.h"
 #include "sweep/SweepStart.h"
 #include "sweep/SweepStatus.h"

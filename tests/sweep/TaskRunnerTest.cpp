@@ -16,7 +16,7 @@
 #include "core/Error.h"
 #include "io/AtomicFile.h"
 #include "io/SweepSpec.h"
-#include "scenario/RunSummary.h"
+#include "scenario/run/RunSummary.h"
 #include "sweep/TaskRunner.h"
 
 namespace wiggle {

@@ -1,5 +1,5 @@
 #pragma once
-// A LAMMPS data file read as a bed (bed.file): an exported bed (scenario/LammpsExport.h), or one
+// A LAMMPS data file read as a bed (bed.file): an exported bed (scenario/lammps/LammpsExport.h), or one
 // that LAMMPS made (tools/validation/lammps_fix_pour.py), run by wiggle. Its own unit, below both
 // bed making (which reads it) and the export (which obtains its bed from bed making), so that
 // neither includes the other's reader or writer.
@@ -23,7 +23,7 @@ namespace wiggle {
 World readLammpsBed(const std::string& text, const std::string& name, const RunConfig& config, const ClumpDef& clump);
 
 // x wrapped into [0, W) as World::rebuildNeighbours wraps it: what a data file holds, so that a bed
-// read back and withoutContactHistory (scenario/LammpsExport.h) hold the very same bits.
+// read back and withoutContactHistory (scenario/lammps/LammpsExport.h) hold the very same bits.
 double wrappedX(double x, double width);
 
 }  // namespace wiggle

@@ -1,4 +1,4 @@
-#include "scenario/Shape.h"
+#include "scenario/geometry/Shape.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "scenario/LammpsExport.h"
+#include "scenario/lammps/LammpsExport.h"
 
 #include <algorithm>
 #include <array>
@@ -13,10 +13,10 @@
 #include "core/StopSignal.h"
 #include "io/AtomicFile.h"
 #include "io/Config.h"
-#include "scenario/BedMaker.h"
-#include "scenario/Case.h"
-#include "scenario/LammpsBed.h"  // wrappedX: the data file holds x as a bed read back keeps it
-#include "scenario/Shape.h"
+#include "scenario/bed/BedMaker.h"
+#include "scenario/case/Case.h"
+#include "scenario/bed/LammpsBed.h"  // wrappedX: the data file holds x as a bed read back keeps it
+#include "scenario/geometry/Shape.h"
 
 namespace wiggle {
 

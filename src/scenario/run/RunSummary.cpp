@@ -1,4 +1,4 @@
-#include "scenario/RunSummary.h"
+#include "scenario/run/RunSummary.h"
 
 #include <optional>
 

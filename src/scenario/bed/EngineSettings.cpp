@@ -1,4 +1,4 @@
-#include "scenario/EngineSettings.h"
+#include "scenario/bed/EngineSettings.h"
 
 #include <cmath>
 

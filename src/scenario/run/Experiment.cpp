@@ -1,4 +1,4 @@
-#include "scenario/Experiment.h"
+#include "scenario/run/Experiment.h"
 
 #include <omp.h>
 
@@ -23,13 +23,13 @@
 #include "io/AtomicFile.h"
 #include "io/Config.h"
 #include "model/CavityModel.h"
-#include "scenario/BedMaker.h"
-#include "scenario/Checkpoint.h"
-#include "scenario/Remeasure.h"
-#include "scenario/RunObservers.h"
-#include "scenario/RunProgress.h"
-#include "scenario/RunSummary.h"
-#include "scenario/SpeedRecord.h"
+#include "scenario/bed/BedMaker.h"
+#include "scenario/run/Checkpoint.h"
+#include "scenario/run/Remeasure.h"
+#include "scenario/run/RunObservers.h"
+#include "scenario/run/RunProgress.h"
+#include "scenario/run/RunSummary.h"
+#include "scenario/cost/SpeedRecord.h"
 
 namespace wiggle {
 
@@ -132,7 +132,7 @@ std::optional<Checkpoint> newestGoodCheckpoint(const std::string& dir, const Run
   return std::nullopt;
 }
 
-// progress.json (scenario/RunProgress.h): each stage as it begins, and the run's progress at most
+// progress.json (scenario/run/RunProgress.h): each stage as it begins, and the run's progress at most
 // every 10 wall seconds (the step loop reports it every 200 steps).
 class ProgressFile {
  public:
@@ -344,7 +344,7 @@ RunOutcome writeRunOutputs(const Case& run, const std::string& dir, const World&
   const double averagedFrom = static_cast<double>(world.stepCount() - accumulated) * config.run.dt;
   const RunSummary summary = summarise(run, dir, world, state, fields, rate, settled, rule, averagedFrom);
   writeFileAtomically(dir + "/summary.json", toJson(summary).dump(2) + "\n");
-  // For the cost estimates (scenario/SpeedRecord.h); stretches under 10^4 steps say more about
+  // For the cost estimates (scenario/cost/SpeedRecord.h); stretches under 10^4 steps say more about
   // start-up than about the step.
   if (stepping.steps >= 10000)
     recordRunSpeed(

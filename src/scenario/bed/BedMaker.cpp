@@ -1,4 +1,4 @@
-#include "scenario/BedMaker.h"
+#include "scenario/bed/BedMaker.h"
 
 #include <algorithm>
 #include <chrono>
@@ -15,8 +15,8 @@
 #include "io/AtomicFile.h"
 #include "io/FileLock.h"
 #include "io/StateFile.h"
-#include "scenario/EngineSettings.h"
-#include "scenario/LammpsBed.h"
+#include "scenario/bed/EngineSettings.h"
+#include "scenario/bed/LammpsBed.h"
 
 namespace wiggle {
 

@@ -1,4 +1,4 @@
-#include "scenario/LammpsBed.h"
+#include "scenario/bed/LammpsBed.h"
 
 #include <algorithm>
 #include <charconv>
@@ -9,7 +9,7 @@
 #include "core/Error.h"
 #include "core/Format.h"
 #include "io/Config.h"
-#include "scenario/EngineSettings.h"
+#include "scenario/bed/EngineSettings.h"
 
 namespace wiggle {
 

@@ -13,7 +13,7 @@
 
 #include "io/RunConfig.h"
 #include "physics/World.h"
-#include "scenario/RandomPour.h"
+#include "scenario/bed/RandomPour.h"
 
 namespace wiggle {
 

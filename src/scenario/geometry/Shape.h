@@ -15,7 +15,7 @@
 #include "io/RunConfig.h"
 #include "physics/Intruder.h"
 #include "physics/ParticleStore.h"
-#include "scenario/Polygon.h"
+#include "scenario/geometry/Polygon.h"
 
 namespace wiggle {
 

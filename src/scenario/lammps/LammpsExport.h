@@ -9,7 +9,7 @@
 // y to be integrated, and `fix setforce` gives every atom the force F_contact,y - M g so all atoms
 // accelerate together with the clump's acceleration.
 //
-// The same data files are read back as beds by scenario/LammpsBed.h (bed.file).
+// The same data files are read back as beds by scenario/bed/LammpsBed.h (bed.file).
 //
 // What cannot be carried: the tangential contact history. A data file has no section for it, and
 // LAMMPS restores it only from its own binary restart files. The deck therefore starts every
@@ -20,7 +20,7 @@
 
 #include "io/RunConfig.h"
 #include "physics/World.h"
-#include "scenario/Case.h"
+#include "scenario/case/Case.h"
 
 namespace wiggle {
 
