@@ -33,8 +33,8 @@
 #include "physics/ForceKernels.h"
 #include "physics/PairKernel.h"
 #include "physics/World.h"
-#include "scenario/BedMaker.h"
-#include "scenario/Case.h"
+#include "scenario/bed/BedMaker.h"
+#include "scenario/case/Case.h"
 
 namespace wiggle {
 namespace {

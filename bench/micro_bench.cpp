@@ -24,8 +24,9 @@
 #include "physics/ContactLaw.h"
 #include "physics/PairKernel.h"
 #include "physics/World.h"
-#include "scenario/BedMaker.h"
-#include "scenario/Shape.h"
+#include "scenario/bed/BedMaker.h"
+#include "scenario/bed/EngineSettings.h"
+#include "scenario/geometry/Shape.h"
 
 namespace wiggle {
 namespace {

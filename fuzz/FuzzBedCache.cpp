@@ -8,7 +8,7 @@
 #include "core/Error.h"
 #include "core/BinaryStream.h"
 #include "io/StateFile.h"
-#include "scenario/BedMaker.h"
+#include "scenario/bed/BedMaker.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string file = wiggle::fuzz::withValidChecksum(data, size);

@@ -10,7 +10,7 @@
 #include "core/BinaryStream.h"
 #include "io/Config.h"
 #include "io/StateFile.h"
-#include "scenario/Checkpoint.h"
+#include "scenario/run/Checkpoint.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string file = wiggle::fuzz::withValidChecksum(data, size);

@@ -7,7 +7,7 @@
 
 #include "core/Error.h"
 #include "io/Config.h"
-#include "scenario/Experiment.h"
+#include "scenario/run/Experiment.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);

@@ -1,5 +1,5 @@
 // `import wiggle`: the engine as a Python module (docs/PYTHON.md). A Case is the same case
-// `wiggle run` makes from the same config (scenario/Case.h, scenario/Experiment.h startRun): the
+// `wiggle run` makes from the same config (scenario/case/Case.h, scenario/run/Experiment.h startRun): the
 // same bed from the same cache, the same start, the same steps, so the same state hash after the
 // same number of steps, however they are split between step() calls.
 //
@@ -26,11 +26,11 @@
 #include "io/AtomicFile.h"
 #include "io/Config.h"
 #include "physics/World.h"
-#include "scenario/Case.h"
-#include "scenario/Checkpoint.h"
-#include "scenario/Experiment.h"
-#include "scenario/Remeasure.h"
-#include "scenario/RunObservers.h"
+#include "scenario/case/Case.h"
+#include "scenario/run/Checkpoint.h"
+#include "scenario/run/Experiment.h"
+#include "scenario/run/Remeasure.h"
+#include "scenario/run/RunObservers.h"
 
 namespace py = pybind11;
 

@@ -12,8 +12,8 @@
 #include "physics/ForceKernels.h"
 #include "core/Machine.h"
 #include "io/Config.h"
-#include "scenario/Case.h"
-#include "scenario/LammpsExport.h"
+#include "scenario/case/Case.h"
+#include "scenario/lammps/LammpsExport.h"
 
 namespace wiggle::cli {
 

@@ -7,6 +7,7 @@
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -16,7 +17,7 @@
 #include "core/Error.h"
 #include "io/AtomicFile.h"
 #include "model/CavityModel.h"
-#include "scenario/Shape.h"
+#include "scenario/geometry/Shape.h"
 
 namespace wiggle::cli {
 
@@ -94,9 +95,9 @@ struct Row {
 
 std::vector<Row> rowsFor(const Shape& shape) {
   const CavityGeometry g = cavityGeometry(shape.outline);
-  if (!g.sidesDiffer()) return {Row{shape.name, shape.name, true, g, g.left}};
-  return {Row{shape.name + ":left", shape.name, false, g, g.left},
-          Row{shape.name + ":right", shape.name, false, g, g.right}};
+  const std::string name(choiceName(shape.kind));
+  if (!g.sidesDiffer()) return {Row{name, name, true, g, g.left}};
+  return {Row{name + ":left", name, false, g, g.left}, Row{name + ":right", name, false, g, g.right}};
 }
 
 std::string formatted(const char* format, double value) {
@@ -172,7 +173,7 @@ void printClumpTable(const std::vector<Shape>& shapes, const ModelOptions& opt) 
     const ClumpQuality q = measureClump(shape, atoms, clumpOptionsOf(opt));
     std::printf(csv ? "%s,%zu,%zu,%zu,%.4f,%.4f,%.4f,%.4f,%.4f,%.1f\n"
                     : "%-12s %6zu %8zu %6zu %9.4f %9.4f %9.4f %8.4f %8.4f %8.1f\n",
-                shape.name.c_str(), q.surfaceAtoms + q.guardAtoms, q.surfaceAtoms, q.guardAtoms,
+                std::string(choiceName(shape.kind)).c_str(), q.surfaceAtoms + q.guardAtoms, q.surfaceAtoms, q.guardAtoms,
                 std::max(0.0, q.maxOvershoot), q.maxOutlineGap, q.maxEnvelopeDepth,
                 q.maxSurfaceSpacing, q.maxLodgeDepth, q.minInteriorAngle);
   }
@@ -186,7 +187,7 @@ void writeGeometryJson(const Shape& shape, const ModelOptions& opt) {
   const ClumpAtoms atoms = buildClumpAtoms(shape, clumpOptionsOf(opt));
   const CavityGeometry g = cavityGeometry(shape.outline);
   nlohmann::json j;
-  j["shape"] = shape.name;
+  j["shape"] = choiceName(shape.kind);
   j["surface"] = choiceName(opt.surface);
   j["outline"] = shape.outline;
   std::vector<OutlinePoint> all = atoms.surface;
@@ -210,20 +211,28 @@ void runModel(const ModelOptions& opt) {
   if (!std::isfinite(opt.angle)) throw Error("--angle: not a finite number");
   if (!std::isfinite(opt.amplitude) || opt.amplitude < 0.0)
     throw Error("--amplitude: must be a finite number >= 0");
+  // --shape's word, parsed here by the one table of shape names.
+  std::optional<ShapeName> chosen;
+  if (!opt.shape.empty()) {
+    chosen = choiceNamed<ShapeName>(opt.shape);
+    if (!chosen)
+      throw Error("--shape: unknown shape '" + opt.shape + "' (expected one of " +
+                  joinedNames(choiceNameList<ShapeName>()) + ")");
+  }
   std::vector<Shape> shapes;
   if (!opt.vertices.empty()) {
-    if (!opt.shape.empty() && opt.shape != "polygon")
+    if (chosen && *chosen != ShapeName::Polygon)
       throw Error("--vertices: only with --shape polygon (or no --shape), not '" + opt.shape + "'");
     const Outline vertices = parseVertices(opt.vertices);
     requireValidPolygon(vertices, "--vertices");  // the same check as makeShape, named for the CLI
-    shapes.push_back(makeShape("polygon", vertices, opt.angle));
-  } else if (!opt.shape.empty()) {
-    if (opt.shape == "polygon") throw Error("--shape polygon: needs --vertices \"x1,y1;x2,y2;...\"");
-    shapes.push_back(makeShape(opt.shape, {}, opt.angle));
+    shapes.push_back(makeShape(ShapeName::Polygon, vertices, opt.angle));
+  } else if (chosen) {
+    if (*chosen == ShapeName::Polygon) throw Error("--shape polygon: needs --vertices \"x1,y1;x2,y2;...\"");
+    shapes.push_back(makeShape(*chosen, {}, opt.angle));
   } else {
     if (!opt.geometryPath.empty())
       throw Error("--geometry: choose one shape with --shape or --vertices");
-    for (const std::string& name : paperShapeNames()) shapes.push_back(makeShape(name, {}, opt.angle));
+    for (const ShapeName kind : paperShapes()) shapes.push_back(makeShape(kind, {}, opt.angle));
   }
   std::vector<double> periods;
   if (!opt.periods.empty()) periods = parsePeriods(opt.periods);

@@ -3,7 +3,7 @@
 // sweep directory, over the run's own window or any other (a trajectory shorter than its run, as a
 // short LAMMPS run of an exported deck, to its end, said on stderr); a CSV table on stdout. --write records
 // the settle rule's result (vy_settled, t_settled) in summary.json files written before it existed,
-// and in the sweep's results.csv (scenario/Remeasure.h).
+// and in the sweep's results.csv (scenario/run/Remeasure.h).
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -15,7 +15,7 @@
 #include "Commands.h"
 #include "core/Error.h"
 #include "core/Format.h"
-#include "scenario/Remeasure.h"
+#include "scenario/run/Remeasure.h"
 #include "sweep/ResultsTable.h"
 
 namespace wiggle::cli {

@@ -12,10 +12,10 @@
 #include "io/AtomicFile.h"
 #include "io/Config.h"
 #include "physics/ForceKernels.h"
-#include "scenario/BedMaker.h"
-#include "scenario/Checkpoint.h"
-#include "scenario/CostModel.h"
-#include "scenario/Experiment.h"
+#include "scenario/bed/BedMaker.h"
+#include "scenario/run/Checkpoint.h"
+#include "scenario/cost/CostModel.h"
+#include "scenario/run/Experiment.h"
 
 namespace wiggle::cli {
 

@@ -21,8 +21,8 @@ void addStatusCommand(CLI::App& app) {
   cmd->callback([dir] {
     // A sweep directory has results.csv; a run directory what scenario/Experiment.h's holdsRun names.
     if (!std::filesystem::exists(*dir + "/results.csv")) {
-      if (const std::optional<RunStatus> run = readRunStatus(*dir)) {
-        std::fputs(formatRunStatus(*run).c_str(), stdout);
+      if (const std::optional<RunDirStatus> run = readRunDirStatus(*dir)) {
+        std::fputs(formatRunDirStatus(*run).c_str(), stdout);
         return;
       }
       if (std::filesystem::is_directory(*dir))

@@ -56,7 +56,7 @@ std::map<int, LammpsRole> lammpsTypeRoles(const std::string& text);
 
 // The number of run.dt steps in `interval`, or 0 when it is not a whole number of them (to 1e-9
 // relative): the one rule for every interval that must fall on a step (drive.period,
-// run.sample_interval, run.dump_interval, run.duration's counts in scenario/Case).
+// run.sample_interval, run.dump_interval, run.duration's counts in scenario/case/Case).
 std::uint64_t wholeStepsIn(double interval, double dt);
 
 // The resolved config as TOML: every key, each with a comment giving its meaning and unit.
@@ -74,7 +74,7 @@ std::vector<std::string> configKeys();
 std::vector<std::string> configKeyChoices(std::string_view key);
 
 // Whether the bed a config makes depends on the key: declared beside the key in the key table, and
-// exactly the keys scenario/BedMaker's bed key hashes (BedMakerTest perturbs every key to check it).
+// exactly the keys scenario/bed/BedMaker's bed key hashes (BedMakerTest perturbs every key to check it).
 bool keyShapesBed(std::string_view key);
 
 // A key's current value as short display text: numbers in shortest round-trip form ("5", "0.25",

@@ -52,7 +52,7 @@ KeyInfo pointList(std::string_view name, Points& (*f)(RunConfig&), std::string_v
   return k;
 }
 
-// A key the bed depends on: a new value makes a new bed (scenario/BedMaker's bed key hashes every
+// A key the bed depends on: a new value makes a new bed (scenario/bed/BedMaker's bed key hashes every
 // such key, and no other: BedMakerTest checks the two against each other).
 KeyInfo shapesBed(KeyInfo k) {
   k.bed = BedRole::Shapes;

@@ -72,7 +72,7 @@ void checkKeyRanges(const RunConfig& c) {
 
 std::string num(double v) { return roundTripText(v, false); }
 
-// The rules between the box, the grains and the intruder that need no outline (scenario/Case
+// The rules between the box, the grains and the intruder that need no outline (scenario/case/Case
 // checks those that do).
 void checkShapeKeys(const RunConfig& c) {
   if (c.box.width != std::floor(c.box.width)) {

@@ -86,10 +86,10 @@ struct BedDef {
   double relaxDamping = 0.0;   // bed.relax_damping: viscous damping rate of the grains while relaxing; 0 = none [sqrt(g/d)]
   double maxTime = 2000.0;     // bed.max_time: give up making the bed after this simulated time
   // bed.mu: the friction coefficient the bed is poured with, when it is not the run's contact.mu
-  // (a friction study on one bed per seed); -1 = contact.mu (scenario/BedMaker.h bedMakingConfig).
+  // (a friction study on one bed per seed); -1 = contact.mu (scenario/bed/BedMaker.h bedMakingConfig).
   double mu = -1.0;
   // bed.intruder_mass: the intruder mass the bed is poured around, when it is not the run's (a mass
-  // study on one bed per seed and shape); 0 = the run's (scenario/BedMaker.h bedMakingConfig).
+  // study on one bed per seed and shape); 0 = the run's (scenario/bed/BedMaker.h bedMakingConfig).
   double intruderMass = 0.0;
   std::string cacheDir;        // bed.cache_dir: where beds are cached ("" = $WIGGLE_CACHE or ~/.cache/wiggle)
   std::string file;            // bed.file: run on the bed in this file instead of the config's own ("" = own)

@@ -1,7 +1,7 @@
 // World::save and World::load: the whole dynamic state, field by field, so that a loaded world
 // continues bit for bit. Kept apart from the step (World.cpp) because it changes for a different
 // reason: the state file's layout (docs/RELIABILITY.md; the checkpoint and bed formats in
-// scenario/Checkpoint and scenario/BedMaker frame it with io/StateFile's magic, version and checksum).
+// scenario/run/Checkpoint and scenario/bed/BedMaker frame it with io/StateFile's magic, version and checksum).
 // A field added to World is added here too, and the state format version is raised.
 #include <cmath>
 #include <cstdint>

@@ -129,7 +129,7 @@ std::vector<BoundaryCaseOutcome> SweepBoundaryRunner::run(const BoundarySpec& sp
       o.wallSeconds = r.wallSeconds;
     } else {
       if (!status) status = readSweepStatus(dir);
-      for (const CaseStatus& c : status->cases)
+      for (const CaseAtAGlance& c : status->cases)
         if (c.name == sweep.cases[i].name) o.error = c.error;
       if (o.error.empty()) o.error = "the case did not finish";
     }

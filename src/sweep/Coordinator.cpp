@@ -16,7 +16,7 @@
 #include "core/StopSignal.h"
 #include "io/AtomicFile.h"
 #include "io/FileLock.h"
-#include "scenario/RunProgress.h"
+#include "scenario/run/RunProgress.h"
 #include "sweep/ResultsTable.h"
 #include "sweep/SweepStart.h"
 #include "sweep/TaskRunner.h"
@@ -134,7 +134,7 @@ class Coordinator {
           results_[c] = CaseResult{};  // unreadable after all: run it again
         }
       } else if (p.state == CaseState::Failed) {
-        results_[c].status = "failed";
+        results_[c].status = CaseStatus::Failed;
         results_[c].error = p.error;
         started_[c] = true;
       }
@@ -155,12 +155,12 @@ class Coordinator {
           mpi_ ? std::to_string(mpi_->size() - 1) + " MPI worker ranks x " + std::to_string(settings_.jobs) + " jobs"
                : std::to_string(settings_.jobs) + " jobs";
       monitor_.event("wiggle sweep " + plan_.spec.settings.name + ": " + std::to_string(plan_.cases.size()) +
-                     " cases, " + std::to_string(countStatus("ok")) + " done before, " +
+                     " cases, " + std::to_string(countStatus(CaseStatus::Ok)) + " done before, " +
                      std::to_string(plan_.beds.size()) + " beds to make; " + layout + " x " +
                      std::to_string(settings_.threads) + " threads; host " + hostName() + " pid " + pid);
     }
     for (std::size_t c = 0; c < plan_.cases.size(); ++c)
-      if (counts(c) && results_[c].status == "failed")
+      if (counts(c) && results_[c].status == CaseStatus::Failed)
         monitor_.event("failed " + plan_.spec.cases[c].name + ": " + results_[c].error);
   }
 
@@ -183,7 +183,7 @@ class Coordinator {
           TaskOutcome o;
           o.task = *task;
           o.error = e.what();
-          o.result.status = "failed";
+          o.result.status = CaseStatus::Failed;
           o.result.error = e.what();
           handle(o, "");
         }
@@ -247,8 +247,8 @@ class Coordinator {
     SweepOutcome out;
     out.outDir = plan_.outDir;
     out.cases = only_ ? 1 : plan_.cases.size();
-    out.ok = countStatus("ok");
-    out.failed = countStatus("failed");
+    out.ok = countStatus(CaseStatus::Ok);
+    out.failed = countStatus(CaseStatus::Failed);
     out.pending = out.cases - out.ok - out.failed;
     out.interrupted = stopping_;
     out.stopSignal = stopSignal_;
@@ -279,7 +279,7 @@ class Coordinator {
   // Whether case c is this run's to count: every case, or with --case the one.
   bool counts(std::size_t c) const { return !only_ || c == *only_; }
 
-  std::size_t countStatus(const std::string& s) const {
+  std::size_t countStatus(CaseStatus s) const {
     std::size_t k = 0;
     for (std::size_t c = 0; c < results_.size(); ++c) k += counts(c) && results_[c].status == s;
     return k;
@@ -330,7 +330,7 @@ class Coordinator {
     } else {
       started_[t.caseIndex] = true;
       results_[t.caseIndex] = CaseResult{};
-      results_[t.caseIndex].status = "running";
+      results_[t.caseIndex].status = CaseStatus::Running;
     }
   }
 
@@ -354,7 +354,7 @@ class Coordinator {
       for (std::size_t c = 0; c < plan_.cases.size(); ++c) {
         if (plan_.cases[c].bedTask != b || started_[c]) continue;
         started_[c] = true;
-        results_[c].status = "failed";
+        results_[c].status = CaseStatus::Failed;
         results_[c].error = "making its bed failed: " + o.error;
       }
       return;
@@ -363,7 +363,7 @@ class Coordinator {
     const std::string& name = plan_.spec.cases[c].name;
     if (o.ok) {
       results_[c] = o.result;
-      results_[c].status = "ok";
+      results_[c].status = CaseStatus::Ok;
       monitor_.event("ok " + name + where + ": vy = " + formatNumber(o.result.vy, 4) + ", " + formatDuration(o.wallSeconds) + ", " +
                      formatNumber(o.result.nsPerParticleStep, 3) + " ns/particle-step");
       for (const std::string& w : o.result.warnings) monitor_.event("warning " + name + ": " + w);
@@ -371,11 +371,11 @@ class Coordinator {
     }
     results_[c] = CaseResult{};
     if (stopping_) {
-      results_[c].status = "pending";
+      results_[c].status = CaseStatus::Pending;
       results_[c].error = "interrupted: " + o.error;
       monitor_.event("stopped " + name + where + ": " + o.error);
     } else {
-      results_[c].status = "failed";
+      results_[c].status = CaseStatus::Failed;
       results_[c].error = o.error;
       monitor_.event("failed " + name + where + ": " + o.error);
     }
@@ -428,7 +428,7 @@ class Coordinator {
       if (!started_[c]) {
         ++left;
         remaining += estimatedRunSeconds(config, ns);
-      } else if (results_[c].status == "running") {
+      } else if (results_[c].status == CaseStatus::Running) {
         ++running;
         remaining += runningCaseSecondsLeft(c, ns);
       }
@@ -438,12 +438,12 @@ class Coordinator {
         remaining += plan_.beds[b].estimatedSeconds * ns / plan_.speed.ns;  // planned at that speed
       }
     }
-    std::string line = "[sweep] " + std::to_string(countStatus("ok")) + " done, " + std::to_string(running) +
-                       " running, " + std::to_string(countStatus("failed")) + " failed, " + std::to_string(left) + " left";
+    std::string line = "[sweep] " + std::to_string(countStatus(CaseStatus::Ok)) + " done, " + std::to_string(running) +
+                       " running, " + std::to_string(countStatus(CaseStatus::Failed)) + " failed, " + std::to_string(left) + " left";
     if (!plan_.beds.empty())
       line += ", beds " + std::to_string(bedsMade_) + "/" + std::to_string(plan_.beds.size());
     line += "  ETA " + formatDuration(remaining / concurrency_) + " (" + formatNumber(ns, 3) + " ns/particle-step" +
-            (countStatus("ok") == 0 ? ", estimated)" : ")");
+            (countStatus(CaseStatus::Ok) == 0 ? ", estimated)" : ")");
     return line;
   }
 
@@ -497,7 +497,7 @@ SweepOutcome workerLoop(const SweepPlan& plan, const SweepRunSettings& settings,
           TaskOutcome o;
           o.task = task;
           o.error = e.what();
-          o.result.status = "failed";
+          o.result.status = CaseStatus::Failed;
           o.result.error = e.what();
           mpi.send(0, MpiTag::Result, o.toJson());
         }

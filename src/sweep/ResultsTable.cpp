@@ -9,7 +9,7 @@
 #include "core/Median.h"
 #include "io/AtomicFile.h"
 #include "io/Config.h"
-#include "scenario/RunSummary.h"
+#include "scenario/run/RunSummary.h"
 
 namespace wiggle {
 
@@ -53,9 +53,14 @@ std::string csvCell(const std::string& text) {
   return out + '"';
 }
 
+CaseStatus caseStatusNamed(std::string_view word, const std::string& where) {
+  if (const std::optional<CaseStatus> status = choiceNamed<CaseStatus>(word)) return *status;
+  throw Error(where + ": status '" + std::string(word) + "' is none of " + joinedNames(choiceNameList<CaseStatus>()));
+}
+
 bool caseFinished(const std::string& runDir) {
   try {
-    return readCaseSummary(runDir).status == "ok";
+    return readCaseSummary(runDir).status == CaseStatus::Ok;
   } catch (const Error&) {
     return false;
   }
@@ -70,7 +75,7 @@ std::string joinedWarnings(const std::vector<std::string>& warnings) {
 double sweepNsPerParticleStep(const std::vector<CaseResult>& results, double fallback) {
   std::vector<double> each;
   for (const CaseResult& r : results)
-    if (r.status == "ok" && r.particleSteps > 0.0) each.push_back(1e9 * r.runWallSeconds / r.particleSteps);
+    if (r.status == CaseStatus::Ok && r.particleSteps > 0.0) each.push_back(1e9 * r.runWallSeconds / r.particleSteps);
   return each.empty() ? fallback : median(std::move(each));
 }
 
@@ -85,12 +90,12 @@ CaseResult readCaseSummary(const std::string& runDir) {
     throw Error(path + ": " + e.what());
   }
   CaseResult r;
-  if (summary.status != "ok") {
-    r.status = "failed";
-    r.error = path + " has status '" + summary.status + "'";
+  if (summary.status != RunStatus::Ok) {
+    r.status = CaseStatus::Failed;
+    r.error = path + " has status '" + std::string(choiceName(summary.status)) + "'";
     return r;
   }
-  r.status = "ok";
+  r.status = CaseStatus::Ok;
   r.vy = summary.vy;
   r.vySlope = summary.vySlope;
   r.vySettled = summary.vySettled;
@@ -111,20 +116,21 @@ namespace {
 
 // A case's number: empty unless the case is ok.
 std::string okNumber(const ResultRow& row, double value) {
-  return row.result.status == "ok" ? formatNumber(value, 10) : std::string();
+  return row.result.status == CaseStatus::Ok ? formatNumber(value, 10) : std::string();
 }
 std::string okText(const ResultRow& row, const std::string& text) {
-  return row.result.status == "ok" ? text : std::string();
+  return row.result.status == CaseStatus::Ok ? text : std::string();
 }
 
 }  // namespace
 
 const std::vector<ResultColumn>& resultColumnsBeforeParameters() {
+  static const std::string statusWords = joinedNames(choiceNameList<CaseStatus>(), " | ");  // the schema's meaning
   static const std::vector<ResultColumn> columns = {
       {"case", "", "the case's name (its run directory's)", [](const ResultRow& r) { return r.sweepCase.name; }},
       {"run_dir", "", "the case's run directory, relative to the sweep directory",
        [](const ResultRow& r) { return r.runDir; }},
-      {"status", "", "ok | failed | running | pending", [](const ResultRow& r) { return r.result.status; }},
+      {"status", "", statusWords.c_str(), [](const ResultRow& r) { return std::string(choiceName(r.result.status)); }},
       {"vy", "sqrt(g d)", "the rise rate by the run's rule (summary.json's vy)",
        [](const ResultRow& r) { return okNumber(r, r.result.vy); }},
       {"vy_slope", "sqrt(g d)", "the least-squares slope of y(t) over the same window",
@@ -269,7 +275,7 @@ void refreshSettledColumns(const std::string& sweepDir) {
     if (row.size() != header.size())
       throw Error(path + ": row " + std::to_string(r + 1) + " has " + std::to_string(row.size()) +
                   " cells, the header " + std::to_string(header.size()));
-    if (row[status] == "ok") {
+    if (caseStatusNamed(row[status], path + ": row " + std::to_string(r + 1)) == CaseStatus::Ok) {
       const CaseResult result = readCaseSummary(sweepDir + "/" + row[runDir]);
       row[vySettled] = formatNumber(result.vySettled, 10);
       row[tSettled] = formatNumber(result.tSettled, 10);

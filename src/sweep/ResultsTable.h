@@ -11,17 +11,37 @@
 // status: ok | failed | running | pending (not run yet, or interrupted: it resumes on a rerun).
 // Numbers of a case that is not ok are empty cells. Cells holding a comma, quote or newline are
 // quoted as RFC 4180 says.
+#include <array>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <string_view>
 #include <vector>
 
+#include "core/Choice.h"
 #include "io/SweepSpec.h"
 
 namespace wiggle {
 
+// Where a case of a sweep stands. Its word (ChoiceNames below) is what results.csv, `wiggle status
+// --json` and the task protocol carry; code compares the enum, never the word.
+enum class CaseStatus {
+  Ok,       // its summary.json is written: its numbers are in the table
+  Failed,   // it cannot run, or its run failed (error says why)
+  Running,  // a process runs it now
+  Pending,  // not run yet, or interrupted: it resumes on a rerun
+};
+template <>
+struct ChoiceNames<CaseStatus> {
+  static constexpr std::array<std::string_view, 4> names{"ok", "failed", "running", "pending"};
+};
+
+// A status word read from a file or a child's message; throws wiggle::Error naming `where` and the
+// words it may be when it is none of them (a hand-edited or foreign file).
+CaseStatus caseStatusNamed(std::string_view word, const std::string& where);
+
 // What a case's run left, read from its summary.json (numbers) or its failure (error).
 struct CaseResult {
-  std::string status = "pending";  // ok | failed | running | pending
+  CaseStatus status = CaseStatus::Pending;
   double vy = 0.0, vySlope = 0.0, wallSeconds = 0.0;
   double vySettled = 0.0, tSettled = 0.0;  // the paper's t_f rule (summary.json)
   double nsPerParticleStep = 0.0;
@@ -39,7 +59,7 @@ struct CaseResult {
 // it holds, whatever a stale results.csv says.
 bool caseFinished(const std::string& runDir);
 
-// Reads <runDir>/summary.json into a CaseResult with status "ok" when the file says so. Throws
+// Reads <runDir>/summary.json into a CaseResult, Ok when the file says "ok". Throws
 // wiggle::Error when the file is missing or unreadable.
 CaseResult readCaseSummary(const std::string& runDir);
 

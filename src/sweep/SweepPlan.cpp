@@ -14,10 +14,10 @@
 #include "core/Format.h"
 #include "io/AtomicFile.h"
 #include "io/Config.h"
-#include "scenario/BedMaker.h"
-#include "scenario/Checkpoint.h"
-#include "scenario/Experiment.h"
-#include "scenario/Shape.h"
+#include "scenario/bed/BedMaker.h"
+#include "scenario/run/Checkpoint.h"
+#include "scenario/run/Experiment.h"
+#include "scenario/geometry/Shape.h"
 #include "sweep/ResultsTable.h"
 
 namespace wiggle {

@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "io/SweepSpec.h"
-#include "scenario/Case.h"       // estimatedGrains
-#include "scenario/CostModel.h"  // SpeedBasis; the estimates the plan prints
+#include "scenario/case/Case.h"       // estimatedGrains
+#include "scenario/cost/CostModel.h"  // SpeedBasis; the estimates the plan prints
 
 namespace wiggle {
 

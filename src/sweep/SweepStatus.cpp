@@ -12,8 +12,8 @@
 #include "core/Median.h"
 #include "io/AtomicFile.h"
 #include "io/FileLock.h"
-#include "scenario/Experiment.h"
-#include "scenario/RunProgress.h"
+#include "scenario/run/Experiment.h"
+#include "scenario/run/RunProgress.h"
 #include "sweep/ResultsTable.h"
 #include "sweep/SweepStart.h"
 
@@ -62,13 +62,13 @@ SweepStatus readSweepStatus(const std::string& dir) {
   for (std::size_t r = 1; r < rows.size(); ++r) {
     const auto& row = rows[r];
     if (row.size() < header.size()) throw Error(resultsPath + ": row " + std::to_string(r + 1) + " is short");
-    CaseStatus c;
+    CaseAtAGlance c;
     c.name = row[nameAt];
-    c.status = row[statusAt];
+    c.status = caseStatusNamed(row[statusAt], resultsPath + ": row " + std::to_string(r + 1));
     c.error = row[errorAt];
     const std::string caseDir = dir + "/" + row[dirAt];
-    if (c.status == "ok" && !caseFinished(caseDir)) {  // the sweep would run it again
-      c.status = "pending";
+    if (c.status == CaseStatus::Ok && !caseFinished(caseDir)) {  // the sweep would run it again
+      c.status = CaseStatus::Pending;
       try {
         c.error = "results.csv says ok, but " + readCaseSummary(caseDir).error;
       } catch (const Error& e) {
@@ -78,17 +78,17 @@ SweepStatus readSweepStatus(const std::string& dir) {
     // A case whose run holds its directory runs now, whatever results.csv says (a one-case task
     // writes the table only when its case ends).
     const bool runHeld = FileLock::holders(runLockPath(caseDir)) != FileLock::Holders::None;
-    if (runHeld && c.status != "ok") {
-      c.status = "running";
+    if (runHeld && c.status != CaseStatus::Ok) {
+      c.status = CaseStatus::Running;
       c.error.clear();
     }
-    if (c.status == "ok") {
+    if (c.status == CaseStatus::Ok) {
       if (warningsIt != header.end() && !row[warningsIt - header.begin()].empty())
         c.warnings = readCaseSummary(caseDir).warnings;
       c.vy = number(row[vyAt]);
       c.wallSeconds = number(row[wallAt]);
       finishedWall.push_back(c.wallSeconds);
-    } else if (c.status == "running") {
+    } else if (c.status == CaseStatus::Running) {
       // How far it is: its progress.json, which the run rewrites at each stage and every few seconds.
       const RunProgress progress = readRunProgress(caseDir).value_or(RunProgress{"starting"});
       c.fraction = progress.fraction;
@@ -97,7 +97,7 @@ SweepStatus readSweepStatus(const std::string& dir) {
       c.interrupted = !runHeld && s.sweepLock != FileLock::Holders::Exclusive;
       running += !c.interrupted;
       casesLeft += 1.0 - std::max(0.0, c.fraction);
-    } else if (c.status == "pending") {
+    } else if (c.status == CaseStatus::Pending) {
       casesLeft += 1.0;
     }
     s.cases.push_back(std::move(c));
@@ -109,11 +109,11 @@ SweepStatus readSweepStatus(const std::string& dir) {
 
 std::string formatSweepStatus(const SweepStatus& s) {
   int ok = 0, failed = 0, running = 0, pending = 0;
-  for (const CaseStatus& c : s.cases) {
-    ok += c.status == "ok";
-    failed += c.status == "failed";
-    running += c.status == "running";
-    pending += c.status == "pending";
+  for (const CaseAtAGlance& c : s.cases) {
+    ok += c.status == CaseStatus::Ok;
+    failed += c.status == CaseStatus::Failed;
+    running += c.status == CaseStatus::Running;
+    pending += c.status == CaseStatus::Pending;
   }
   std::ostringstream out;
   out << "sweep " << s.dir << ": " << s.cases.size() << " cases: " << ok << " done, " << running << " running, "
@@ -123,14 +123,14 @@ std::string formatSweepStatus(const SweepStatus& s) {
                                                       : "no wiggle sweep is running in it (run the same `wiggle sweep` "
                                                        "or `wiggle boundary` command to continue)")
       << "\n";
-  for (const CaseStatus& c : s.cases) {
-    if (c.status == "running")
+  for (const CaseAtAGlance& c : s.cases) {
+    if (c.status == CaseStatus::Running)
       out << "  running  " << c.name
           << (c.fraction >= 0 ? " (" + formatNumber(100.0 * c.fraction, 3) + " % of its run)" : " (" + c.stage + ")")
           << (c.interrupted ? "  [stale: interrupted]" : "") << "\n";
-    else if (c.status == "failed")
+    else if (c.status == CaseStatus::Failed)
       out << "  failed   " << c.name << ": " << c.error << "\n";
-    else if (c.status == "pending" && c.error.rfind("results.csv says ok", 0) == 0)
+    else if (c.status == CaseStatus::Pending && c.error.rfind("results.csv says ok", 0) == 0)
       out << "  pending  " << c.name << ": " << c.error << "\n";
     for (const std::string& w : c.warnings) out << "  warning  " << c.name << ": " << w << "\n";
   }
@@ -148,31 +148,31 @@ std::string formatSweepStatus(const SweepStatus& s) {
   return out.str();
 }
 
-std::optional<RunStatus> readRunStatus(const std::string& dir) {
+std::optional<RunDirStatus> readRunDirStatus(const std::string& dir) {
   if (!fs::is_directory(dir) || !holdsRun(dir)) return std::nullopt;
-  RunStatus r;
+  RunDirStatus r;
   r.dir = dir;
   const std::optional<RunProgress> progress = readRunProgress(dir);
   r.hasProgress = progress.has_value();
   r.progress = progress.value_or(RunProgress{"finished"});
   if (FileLock::holders(runLockPath(dir)) != FileLock::Holders::None) {
-    r.state = "running";
+    r.state = RunDirState::Running;
   } else if (caseFinished(dir) && r.progress.stage == "finished") {
     // progress.json says "finished" only once summary.json is written; any other stage beside a
     // summary.json is a later resume (an extension) that stopped.
-    r.state = "done";
+    r.state = RunDirState::Done;
     const CaseResult summary = readCaseSummary(dir);
     r.vy = summary.vy;
     r.warnings = summary.warnings;
     return r;
   } else {
-    r.state = "stopped";
+    r.state = RunDirState::Stopped;
   }
   r.warnings = readRunWarnings(dir);
   return r;
 }
 
-std::string formatRunStatus(const RunStatus& r) {
+std::string formatRunDirStatus(const RunDirStatus& r) {
   const RunProgress& p = r.progress;
   const auto startsWith = [&p](const char* prefix) { return p.stage.rfind(prefix, 0) == 0; };
   const std::string ofDuration =
@@ -181,10 +181,10 @@ std::string formatRunStatus(const RunStatus& r) {
   const std::string resume = "; continue with: wiggle run --out " + r.dir + " --resume";
   std::ostringstream out;
   out << "run " << r.dir << ": ";
-  if (r.state == "done")
+  if (r.state == RunDirState::Done)
     out << "done" << (r.hasProgress ? " (t = " + formatNumber(p.t) + ")" : "") << ": V_y = " << formatNumber(r.vy)
         << ", summary in " << r.dir << "/summary.json";
-  else if (r.state == "running")
+  else if (r.state == RunDirState::Running)
     out << "running, " << (p.fraction >= 0 ? "t = " + formatNumber(p.t) + ofDuration : p.stage)
         << (p.etaSeconds >= 0 ? ", about " + formatDuration(p.etaSeconds) + " to go" : "");
   else if (startsWith("failed"))
@@ -205,10 +205,10 @@ std::string formatRunStatus(const RunStatus& r) {
 std::string sweepStatusJson(const SweepStatus& s) {
   using nlohmann::json;
   json cases = json::array();
-  for (const CaseStatus& c : s.cases) {
-    const bool ok = c.status == "ok";
+  for (const CaseAtAGlance& c : s.cases) {
+    const bool ok = c.status == CaseStatus::Ok;
     cases.push_back({{"name", c.name},
-                     {"status", c.status},
+                     {"status", choiceName(c.status)},
                      {"error", c.error},
                      {"vy", ok ? json(c.vy) : json(nullptr)},
                      {"wall_s", ok ? json(c.wallSeconds) : json(nullptr)},

@@ -7,16 +7,18 @@
 #include <vector>
 
 #include "io/FileLock.h"
-#include "scenario/RunProgress.h"
+#include "scenario/run/RunProgress.h"
+#include "sweep/ResultsTable.h"  // CaseStatus
 
 namespace wiggle {
 
-struct CaseStatus {
+// One case's line of the glance.
+struct CaseAtAGlance {
   std::string name;
-  // ok | failed | running | pending, as results.csv says, except that a case is ok only when its
-  // summary.json says so (caseFinished, sweep/ResultsTable.h): else it is pending, as the sweep
-  // would rerun it, and `error` says why.
-  std::string status;
+  // As results.csv says, except that a case is ok only when its summary.json says so
+  // (caseFinished, sweep/ResultsTable.h): else it is pending, as the sweep would rerun it, and
+  // `error` says why.
+  CaseStatus status = CaseStatus::Pending;
   std::string error;    // failed: the recorded error
   double vy = 0.0;      // ok: the rise rate
   double wallSeconds = 0.0;  // ok: the case's wall time
@@ -31,7 +33,7 @@ struct CaseStatus {
 struct SweepStatus {
   std::string dir;
   std::string name;  // the sweep's name, from sweep.json (empty when unknown)
-  std::vector<CaseStatus> cases;
+  std::vector<CaseAtAGlance> cases;
   // Who holds the directory's lock now: a whole sweep (exclusive), one-case tasks (`--case`, shared)
   // or nobody.
   FileLock::Holders sweepLock = FileLock::Holders::None;
@@ -58,9 +60,11 @@ std::string sweepStatusJson(const SweepStatus& status);
 // `wiggle status RUN_DIR` for one run directory (`wiggle run --out DIR`), from its files alone:
 // done (its summary.json says ok and no later run of it is under way), running (a process holds its
 // lock), or stopped: interrupted at t (SIGINT/SIGTERM, or killed: no process holds it), failed at t.
-struct RunStatus {
+enum class RunDirState { Done, Running, Stopped };
+
+struct RunDirStatus {
   std::string dir;
-  std::string state;     // done | running | stopped
+  RunDirState state = RunDirState::Stopped;
   RunProgress progress;  // its progress.json (stage "finished" when a finished run has none)
   bool hasProgress = false;
   double vy = 0.0;                    // done: summary.json's V_y
@@ -68,8 +72,8 @@ struct RunStatus {
 };
 
 // Nothing when `dir` holds no run (scenario/Experiment.h holdsRun).
-std::optional<RunStatus> readRunStatus(const std::string& dir);
+std::optional<RunDirStatus> readRunDirStatus(const std::string& dir);
 
-std::string formatRunStatus(const RunStatus& status);
+std::string formatRunDirStatus(const RunDirStatus& status);
 
 }  // namespace wiggle

@@ -22,9 +22,9 @@
 #include "core/StopSignal.h"
 #include "io/AtomicFile.h"
 #include "io/Config.h"
-#include "scenario/BedMaker.h"
-#include "scenario/Case.h"
-#include "scenario/Experiment.h"
+#include "scenario/bed/BedMaker.h"
+#include "scenario/case/Case.h"
+#include "scenario/run/Experiment.h"
 
 
 namespace wiggle {
@@ -54,7 +54,7 @@ std::string TaskOutcome::toJson() const {
   j["error"] = error;
   j["task_wall_s"] = wallSeconds;
   j["pid"] = pid;
-  j["status"] = result.status;
+  j["status"] = choiceName(result.status);
   j["vy"] = result.vy;
   j["vy_slope"] = result.vySlope;
   j["vy_settled"] = result.vySettled;
@@ -79,7 +79,7 @@ TaskOutcome TaskOutcome::fromJson(const std::string& text) {
   o.error = j.at("error").get<std::string>();
   o.wallSeconds = j.at("task_wall_s").get<double>();
   o.pid = j.at("pid").get<int>();
-  o.result.status = j.at("status").get<std::string>();
+  o.result.status = caseStatusNamed(j.at("status").get<std::string>(), "a task's outcome");
   o.result.vy = j.at("vy").get<double>();
   o.result.vySlope = j.at("vy_slope").get<double>();
   o.result.vySettled = j.at("vy_settled").get<double>();
@@ -220,7 +220,7 @@ TaskOutcome TaskRunner::finish(const Child& child, int waitStatus) {
       const std::string dir = outDir_ + "/cases/" + spec_.cases[child.task.caseIndex].name;
       try {
         out.result = readCaseSummary(dir);
-        if (out.result.status != "ok") {
+        if (out.result.status != CaseStatus::Ok) {
           out.ok = false;
           out.error = out.result.error;
         }
@@ -249,7 +249,7 @@ TaskOutcome TaskRunner::finish(const Child& child, int waitStatus) {
   if (!out.ok) {
     for (char& ch : out.error)
       if (ch == '\n' || ch == '\r') ch = ' ';
-    out.result.status = "failed";
+    out.result.status = CaseStatus::Failed;
     out.result.error = out.error;
   }
   return out;

@@ -13,7 +13,7 @@
 #include "io/AtomicFile.h"
 #include "io/Config.h"
 #include "io/SweepSpec.h"
-#include "scenario/Experiment.h"
+#include "scenario/run/Experiment.h"
 
 namespace wiggle {
 namespace {

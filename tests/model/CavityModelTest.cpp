@@ -14,7 +14,7 @@
 #include <string>
 
 #include "core/Error.h"
-#include "scenario/Shape.h"
+#include "scenario/geometry/Shape.h"
 
 namespace wiggle {
 namespace {
@@ -25,25 +25,25 @@ constexpr double kPi = std::numbers::pi;
 TEST(CavityModel, ReproducesPaperTable1FromGeometry) {
   // The paper's Table 1 (l, T_rise), printed truncated to two decimals.
   struct Expected {
-    const char* shape;
+    ShapeName shape;
     double l, tRise;
   };
-  const Expected table[] = {{"disk", 3.50, 2.82},        {"square", 6.50, 3.74},
-                            {"rect_narrow", 9.50, 4.47}, {"rect_wide", 4.50, 3.16},
-                            {"triangle", 8.22, 4.17}};
+  const Expected table[] = {{ShapeName::Disk, 3.50, 2.82},        {ShapeName::Square, 6.50, 3.74},
+                            {ShapeName::RectNarrow, 9.50, 4.47}, {ShapeName::RectWide, 4.50, 3.16},
+                            {ShapeName::Triangle, 8.22, 4.17}};
   for (const Expected& e : table) {
     const CavityGeometry g = cavityGeometry(makeShape(e.shape).outline);
-    EXPECT_FALSE(g.sidesDiffer()) << e.shape;
-    EXPECT_NEAR(g.left.l, e.l, 0.01) << e.shape;
-    EXPECT_NEAR(g.left.tRise, e.tRise, 0.01) << e.shape;
+    EXPECT_FALSE(g.sidesDiffer()) << choiceName(e.shape);
+    EXPECT_NEAR(g.left.l, e.l, 0.01) << choiceName(e.shape);
+    EXPECT_NEAR(g.left.tRise, e.tRise, 0.01) << choiceName(e.shape);
     // Truncation, not rounding: the computed value is at or above the printed one.
-    EXPECT_GE(g.left.tRise, e.tRise) << e.shape;
-    EXPECT_LT(g.left.tRise - e.tRise, 0.01) << e.shape;
+    EXPECT_GE(g.left.tRise, e.tRise) << choiceName(e.shape);
+    EXPECT_LT(g.left.tRise - e.tRise, 0.01) << choiceName(e.shape);
   }
 }
 
 TEST(CavityModel, PaperShapesExactValues) {
-  const CavityGeometry disk = cavityGeometry(makeShape("disk").outline);
+  const CavityGeometry disk = cavityGeometry(makeShape(ShapeName::Disk).outline);
   EXPECT_DOUBLE_EQ(disk.y0, 3.5);
   EXPECT_DOUBLE_EQ(disk.left.yNoReturn, 0.0);  // the equator
   EXPECT_DOUBLE_EQ(disk.h, 7.0);
@@ -51,7 +51,7 @@ TEST(CavityModel, PaperShapesExactValues) {
   EXPECT_DOUBLE_EQ(disk.tMax, std::sqrt(56.0));
 
   const double height = 9.5 * std::sqrt(3.0) / 2.0;
-  const CavityGeometry tri = cavityGeometry(makeShape("triangle").outline);
+  const CavityGeometry tri = cavityGeometry(makeShape(ShapeName::Triangle).outline);
   EXPECT_NEAR(tri.left.l, height, 1e-12);  // apex to base corners
   EXPECT_NEAR(tri.right.l, height, 1e-12);
   EXPECT_NEAR(tri.y0, 2.0 * height / 3.0, 1e-12);  // centroid convention
@@ -93,7 +93,7 @@ TEST(CavityModel, LShapeHasOneValuePerSide) {
   EXPECT_TRUE(g.sidesDiffer());
   // Recentred and reordered (clockwise) through makeShape: the same lengths.
   const Pts clockwise(gamma.rbegin(), gamma.rend());
-  const CavityGeometry g2 = cavityGeometry(makeShape("polygon", clockwise).outline);
+  const CavityGeometry g2 = cavityGeometry(makeShape(ShapeName::Polygon, clockwise).outline);
   EXPECT_NEAR(g2.left.l, 3.0, 1e-12);
   EXPECT_NEAR(g2.right.l, 1.0, 1e-12);
 }
@@ -102,7 +102,7 @@ TEST(CavityModel, DiamondUsesItsSideCorners) {
   // The square rotated by 45 deg: a diamond with half-diagonal 6.5 / sqrt(2); the side corners are
   // at the centre's height.
   const double half = 6.5 / std::sqrt(2.0);
-  const CavityGeometry g = cavityGeometry(makeShape("square", {}, 45.0).outline);
+  const CavityGeometry g = cavityGeometry(makeShape(ShapeName::Square, {}, 45.0).outline);
   EXPECT_NEAR(g.y0, half, 1e-12);
   EXPECT_NEAR(g.left.yNoReturn, 0.0, 1e-12);
   EXPECT_NEAR(g.right.yNoReturn, 0.0, 1e-12);
@@ -127,7 +127,7 @@ TEST(CavityModel, RightTriangleWithVerticalSide) {
 }
 
 TEST(CavityModel, RotatedTriangleSidesDiffer) {
-  const CavityGeometry g = cavityGeometry(makeShape("triangle", {}, 10.0).outline);
+  const CavityGeometry g = cavityGeometry(makeShape(ShapeName::Triangle, {}, 10.0).outline);
   EXPECT_TRUE(g.sidesDiffer());
   // Rotating CCW lowers the left base corner (it becomes the lowest point: l_left = h) and raises
   // the right one.
@@ -149,8 +149,9 @@ double riseRateByQuadrature(double lPrime, double period, double g = 1.0) {
 }
 
 TEST(CavityModel, RiseRateMatchesTheIntegral) {
-  for (const char* name : {"disk", "square", "rect_narrow", "rect_wide", "triangle"}) {
-    const CavityGeometry g = cavityGeometry(makeShape(name).outline);
+  for (const ShapeName kind : paperShapes()) {
+    const std::string_view name = choiceName(kind);
+    const CavityGeometry g = cavityGeometry(makeShape(kind).outline);
     for (double t = g.left.tRise + 0.05; t < g.tMax; t += 0.37)
       EXPECT_NEAR(cavityRiseRate(g, g.left, t, 5.0), riseRateByQuadrature(g.left.lPrime, t), 1e-9)
           << name << " T=" << t;
@@ -158,7 +159,7 @@ TEST(CavityModel, RiseRateMatchesTheIntegral) {
 }
 
 TEST(CavityModel, RiseRateRegimes) {
-  const CavityGeometry g = cavityGeometry(makeShape("disk").outline);
+  const CavityGeometry g = cavityGeometry(makeShape(ShapeName::Disk).outline);
   const double tRise = std::sqrt(8.0);
   EXPECT_EQ(cavityRiseRate(g, g.left, 1.0, 5.0), 0.0);     // below T_rise: no rise
   EXPECT_EQ(cavityRiseRate(g, g.left, tRise, 5.0), 0.0);   // at T_rise
@@ -179,7 +180,7 @@ TEST(CavityModel, RiseRateRegimes) {
 TEST(CavityModel, RejectsBadInput) {
   EXPECT_THROW(cavityGeometry(Pts{{0, 0}, {1, 1}}), Error);
   EXPECT_THROW(cavityGeometry(Pts{{0, 0}, {1, NAN}, {0, 1}}), Error);
-  const CavityGeometry g = cavityGeometry(makeShape("disk").outline);
+  const CavityGeometry g = cavityGeometry(makeShape(ShapeName::Disk).outline);
   EXPECT_THROW(cavityRiseRate(g, g.left, 0.0, 5.0), Error);
 }
 

@@ -1,4 +1,4 @@
-// Beds (scenario/BedMaker.h): the bed keys of both pours and the keys a bed depends on, a tiny
+// Beds (scenario/bed/BedMaker.h): the bed keys of both pours and the keys a bed depends on, a tiny
 // random-poured bed made to rest (and continued to the same bits after a stop), the damped
 // relaxation, carved beds, and the presets' beds.
 #include <gtest/gtest.h>
@@ -22,8 +22,8 @@
 #include "io/AtomicFile.h"
 #include "io/Config.h"
 #include "io/SweepSpec.h"
-#include "scenario/BedMaker.h"
-#include "scenario/Experiment.h"
+#include "scenario/bed/BedMaker.h"
+#include "scenario/run/Experiment.h"
 #include "support/TestSupport.h"
 
 namespace wiggle {

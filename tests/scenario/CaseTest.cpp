@@ -1,4 +1,4 @@
-// The checked case (scenario/Case.h): every number a run derives from its config, worked out once,
+// The checked case (scenario/case/Case.h): every number a run derives from its config, worked out once,
 // and the drive's one formula.
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 
 #include "core/Error.h"
 #include "io/Config.h"
-#include "scenario/Case.h"
+#include "scenario/case/Case.h"
 
 namespace wiggle {
 namespace {

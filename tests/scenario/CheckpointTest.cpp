@@ -8,7 +8,7 @@
 
 #include "core/Error.h"
 #include "io/Config.h"
-#include "scenario/Checkpoint.h"
+#include "scenario/run/Checkpoint.h"
 
 namespace wiggle {
 namespace {

@@ -19,13 +19,13 @@
 #include "io/Config.h"
 #include "io/FileLock.h"
 #include "io/StateFile.h"
-#include "scenario/BedMaker.h"
-#include "scenario/Checkpoint.h"
-#include "scenario/Experiment.h"
-#include "scenario/LammpsExport.h"
-#include "scenario/Remeasure.h"
-#include "scenario/RunProgress.h"
-#include "scenario/RunSummary.h"
+#include "scenario/bed/BedMaker.h"
+#include "scenario/run/Checkpoint.h"
+#include "scenario/run/Experiment.h"
+#include "scenario/lammps/LammpsExport.h"
+#include "scenario/run/Remeasure.h"
+#include "scenario/run/RunProgress.h"
+#include "scenario/run/RunSummary.h"
 #include "support/TestSupport.h"
 
 namespace wiggle {
@@ -70,7 +70,7 @@ TEST(Experiment, ResumedRunIsBitwiseIdenticalToAnUninterruptedOne) {
   fs::remove_all(config.bed.cacheDir);
   const std::string straight = scratch("straight"), interrupted = scratch("interrupted");
   const RunOutcome reference = runExperiment(prepareCase(config), quiet(straight));
-  ASSERT_EQ(reference.status, "ok");
+  ASSERT_EQ(reference.status, RunStatus::Ok);
   ASSERT_NE(readFile(straight + "/log.txt").find("bed made"), std::string::npos);
   const std::optional<RunProgress> done = readRunProgress(straight);  // what `wiggle status` reads
   ASSERT_TRUE(done.has_value());
@@ -81,7 +81,7 @@ TEST(Experiment, ResumedRunIsBitwiseIdenticalToAnUninterruptedOne) {
   RunOptions stop = quiet(interrupted);
   stop.stopAfterSteps = 1700;  // mid-period, between samples and dump frames
   stop.checkpointAtStop = true;
-  ASSERT_EQ(runExperiment(prepareCase(config), stop).status, "stopped");
+  ASSERT_EQ(runExperiment(prepareCase(config), stop).status, RunStatus::Stopped);
   // Work done after the checkpoint and lost in a crash: the resumed run must not depend on it.
   RunOptions resume = quiet(interrupted);
   resume.resume = true;
@@ -125,7 +125,7 @@ TEST(Experiment, FinishedRunExtendedIsTheLongerRunFromTheStart) {
   longer.run.duration = 0.8;
   const std::string straight = scratch("long-straight"), extended = scratch("extended");
   const RunOutcome reference = runExperiment(prepareCase(longer), quiet(straight));
-  ASSERT_EQ(runExperiment(prepareCase(shorter), quiet(extended)).status, "ok");
+  ASSERT_EQ(runExperiment(prepareCase(shorter), quiet(extended)).status, RunStatus::Ok);
   RunOptions resume = quiet(extended);
   resume.resume = true;
   const RunOutcome grown = runExperiment(prepareCase(longer), resume);
@@ -168,7 +168,7 @@ TEST(Experiment, ThreadCountDoesNotChangeTheResult) {
   EXPECT_EQ(readFile(one.outDir + "/fields.csv"), readFile(three.outDir + "/fields.csv"));
 }
 
-// A run of 10^4 steps or more leaves its speed for the cost estimates (scenario/SpeedRecord.h): one
+// A run of 10^4 steps or more leaves its speed for the cost estimates (scenario/cost/SpeedRecord.h): one
 // line in its bed cache's speed.log with the wall figure of its summary, its CPU figure, which is
 // what the estimates take, and its particle count, by which they pick runs of beds of their size.
 // One thread's CPU time cannot exceed its wall time.
@@ -179,7 +179,7 @@ TEST(Experiment, ARunRecordsItsWallAndCpuSpeedForTheEstimates) {
   config.run.duration = 1.2;  // 12,000 steps
   RunOptions options = quiet(root + "/run");
   options.threads = 1;
-  ASSERT_EQ(runExperiment(prepareCase(config), options).status, "ok");
+  ASSERT_EQ(runExperiment(prepareCase(config), options).status, RunStatus::Ok);
   const nlohmann::json summary = nlohmann::json::parse(readFile(options.outDir + "/summary.json"));
   std::ifstream log(config.bed.cacheDir + "/speed.log");
   std::vector<std::vector<std::string>> lines;
@@ -228,7 +228,7 @@ TEST(Experiment, ARunningRunsDirectoryIsRefusedToAnother) {
     EXPECT_NE(refused.find("another wiggle process is running the case in " + dir), std::string::npos) << refused;
     EXPECT_FALSE(fs::exists(dir + "/config.toml"));
   }
-  EXPECT_EQ(runExperiment(prepareCase(config), resume).status, "ok");       // released: it runs
+  EXPECT_EQ(runExperiment(prepareCase(config), resume).status, RunStatus::Ok);       // released: it runs
   EXPECT_EQ(FileLock::holders(runLockPath(dir)), FileLock::Holders::None);  // and lets go when it ends
 }
 
@@ -282,11 +282,11 @@ TEST(Experiment, ResumingAFinishedRunRewritesTheSameSummary) {
   const RunConfig config = tinyConfig(scratch(""));
   const std::string dir = scratch("finished-resumed");
   fs::remove_all(dir);
-  ASSERT_EQ(runExperiment(prepareCase(config), quiet(dir)).status, "ok");
+  ASSERT_EQ(runExperiment(prepareCase(config), quiet(dir)).status, RunStatus::Ok);
   const auto before = nlohmann::json::parse(readFile(dir + "/summary.json"));
   RunOptions resume = quiet(dir);
   resume.resume = true;
-  ASSERT_EQ(runExperiment(prepareCase(config), resume).status, "ok");
+  ASSERT_EQ(runExperiment(prepareCase(config), resume).status, RunStatus::Ok);
   const auto after = nlohmann::json::parse(readFile(dir + "/summary.json"));
   EXPECT_GT(before["contacts"].get<int>(), 0);
   for (const char* key : {"contacts", "neighbour_pairs", "intruder_pairs", "state_hash", "vy", "warnings"})
@@ -298,7 +298,7 @@ TEST(Experiment, NoDumpsLeaveNoDumpFile) {
   config.run.dumpInterval = 0;
   const std::string dir = scratch("no-dumps");
   fs::remove_all(dir);
-  ASSERT_EQ(runExperiment(prepareCase(config), quiet(dir)).status, "ok");
+  ASSERT_EQ(runExperiment(prepareCase(config), quiet(dir)).status, RunStatus::Ok);
   EXPECT_FALSE(fs::exists(dir + "/dumps/dump.lammpstrj"));
   EXPECT_FALSE(fs::exists(dir + "/dumps"));
 }
@@ -561,7 +561,7 @@ TEST(Experiment, ExportedBedReadBackRunsAsTheBedWithoutHistory) {
   RunConfig own = tinyConfig(scratch(""));  // the bed shared with the other tests
   own.run.keepBedHistory = false;
   const RunOutcome reference = runExperiment(prepareCase(own), quiet(root + "/own"));
-  ASSERT_EQ(reference.status, "ok");
+  ASSERT_EQ(reference.status, RunStatus::Ok);
   exportLammps(prepareCase(own), root + "/deck", false);
   // The case beside the deck, so that `wiggle rate` reads the LAMMPS run's trajectory (here the
   // wiggle run's own stands in for it) by wiggle's rules.

@@ -1,6 +1,6 @@
 // export-lammps: the data file carries wiggle's state to the bit, the deck holds the case's
 // parameters, and LAMMPS running the deck follows wiggle's intruder over a short window.
-#include "scenario/LammpsExport.h"
+#include "scenario/lammps/LammpsExport.h"
 
 #include <gtest/gtest.h>
 
@@ -17,9 +17,11 @@
 #include "core/Error.h"
 #include "io/AtomicFile.h"
 #include "io/Config.h"
-#include "scenario/BedMaker.h"
-#include "scenario/Experiment.h"
-#include "scenario/Shape.h"
+#include "scenario/bed/BedMaker.h"
+#include "scenario/bed/EngineSettings.h"
+#include "scenario/run/Experiment.h"
+#include "scenario/bed/LammpsBed.h"
+#include "scenario/geometry/Shape.h"
 #include "support/TestSupport.h"
 
 namespace wiggle {

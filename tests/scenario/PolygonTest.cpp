@@ -1,11 +1,11 @@
-// Plane-polygon geometry on its own (scenario/Polygon.h), against results worked out by hand.
+// Plane-polygon geometry on its own (scenario/geometry/Polygon.h), against results worked out by hand.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 
 #include "core/Error.h"
-#include "scenario/Polygon.h"
+#include "scenario/geometry/Polygon.h"
 
 namespace wiggle {
 namespace {

@@ -1,6 +1,6 @@
-// The random pour's batches (scenario/RandomPour.h, bed.pour = "random", docs/PHYSICS.md §8): one
+// The random pour's batches (scenario/bed/RandomPour.h, bed.pour = "random", docs/PHYSICS.md §8): one
 // batch's geometry and area fraction, what it does when the room runs out, and its determinism.
-#include "scenario/RandomPour.h"
+#include "scenario/bed/RandomPour.h"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "io/Config.h"
-#include "scenario/Case.h"
+#include "scenario/case/Case.h"
 
 namespace wiggle {
 namespace {

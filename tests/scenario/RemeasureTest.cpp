@@ -1,4 +1,4 @@
-// V_y after the fact (scenario/Remeasure.h, sweep/ResultsTable.h's refreshSettledColumns): a run
+// V_y after the fact (scenario/run/Remeasure.h, sweep/ResultsTable.h's refreshSettledColumns): a run
 // directory as a finished run leaves it, with a synthetic trajectory whose settling is known.
 #include <gtest/gtest.h>
 #include <stdlib.h>
@@ -13,7 +13,7 @@
 #include "core/Format.h"
 #include "io/AtomicFile.h"
 #include "io/Config.h"
-#include "scenario/Remeasure.h"
+#include "scenario/run/Remeasure.h"
 #include "sweep/ResultsTable.h"
 
 namespace wiggle {

@@ -1,9 +1,9 @@
-// summary.json's one table (scenario/RunSummary.h): it writes and reads the file, and it is the
+// summary.json's one table (scenario/run/RunSummary.h): it writes and reads the file, and it is the
 // schema the documents and the Python package use.
 #include <gtest/gtest.h>
 
 #include "core/Error.h"
-#include "scenario/RunSummary.h"
+#include "scenario/run/RunSummary.h"
 #include "support/TestSupport.h"
 
 namespace wiggle {
@@ -22,13 +22,14 @@ TEST(RunSummary, ReadsBackWhatItWrites) {
   const nlohmann::json j = toJson(s);
   EXPECT_EQ(j["vy"], 0.0886);
   EXPECT_EQ(j["state_hash"], "6308a1dc6fb47752");
+  EXPECT_EQ(j["status"], "ok");  // the word from the choice table, not the enum's number
   EXPECT_EQ(toJson(summaryFromJson(j)), j);
 }
 
 TEST(RunSummary, MissingKeysKeepTheirDefaultsAndWrongTypesAreNamed) {
   const RunSummary old = summaryFromJson(nlohmann::json{{"vy", 0.5}, {"status", "ok"}});
   EXPECT_EQ(old.vy, 0.5);
-  EXPECT_EQ(old.status, "ok");
+  EXPECT_EQ(old.status, RunStatus::Ok);
   EXPECT_TRUE(old.warnings.empty());
   try {
     summaryFromJson(nlohmann::json{{"steps", "many"}});
@@ -37,6 +38,12 @@ TEST(RunSummary, MissingKeysKeepTheirDefaultsAndWrongTypesAreNamed) {
     EXPECT_NE(std::string(e.what()).find("'steps'"), std::string::npos) << e.what();
   }
   EXPECT_THROW(summaryFromJson(nlohmann::json::array()), Error);
+  try {
+    summaryFromJson(nlohmann::json{{"status", "done"}});
+    FAIL() << "expected an error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("'status' is 'done', none of ok, stopped"), std::string::npos) << e.what();
+  }
 }
 
 // The schema file the Python package reads is this table; on a change, replace

@@ -1,7 +1,7 @@
 // Intruder shapes and their atom clumps: outline dimensions from the paper's table, the two-sided
 // envelope tolerance (checked here with the test's own geometry, not measureClump's), the no-lodge
 // argument, interior coverage, polygon validation and the mass rule.
-#include "scenario/Shape.h"
+#include "scenario/geometry/Shape.h"
 
 #include <gtest/gtest.h>
 
@@ -37,14 +37,14 @@ Extents atomExtents(const ClumpDef& c) {
   return e;
 }
 
-ClumpDef clumpFor(const std::string& shape, double angle = 0.0) {
+ClumpDef clumpFor(ShapeName shape, double angle = 0.0) {
   IntruderDef def;
-  def.shape = choiceNamed<ShapeName>(shape).value();
+  def.shape = shape;
   def.angle = angle;
   return makeClump(def, MassModel::Sphere, 1.0);
 }
 
-// The test's own point-to-outline geometry (independent of scenario/Polygon.cpp).
+// The test's own point-to-outline geometry (independent of scenario/geometry/Polygon.cpp).
 double segDist(OutlinePoint a, OutlinePoint b, OutlinePoint p) {
   const double ex = b[0] - a[0], ey = b[1] - a[1];
   double t = ((p[0] - a[0]) * ex + (p[1] - a[1]) * ey) / (ex * ex + ey * ey);
@@ -97,51 +97,52 @@ Envelope envelope(const Outline& poly, const ClumpDef& c) {
 
 TEST(Shape, PaperOutlinesHaveTheTableDimensions) {
   struct Row {
-    const char* name;
+    ShapeName kind;
     double w, h;
   };
   const double triH = 9.5 * std::sqrt(3.0) / 2.0;
-  for (const Row& r : {Row{"disk", 7.0, 7.0}, Row{"square", 6.5, 6.5}, Row{"rect_narrow", 4.5, 9.5},
-                       Row{"rect_wide", 9.5, 4.5}, Row{"triangle", 9.5, triH}}) {
-    const Shape s = makeShape(r.name);
+  for (const Row& r : {Row{ShapeName::Disk, 7.0, 7.0}, Row{ShapeName::Square, 6.5, 6.5}, Row{ShapeName::RectNarrow, 4.5, 9.5},
+                       Row{ShapeName::RectWide, 9.5, 4.5}, Row{ShapeName::Triangle, 9.5, triH}}) {
+    const Shape s = makeShape(r.kind);
     const OutlineBox box = boundingBox(s.outline);
-    EXPECT_NEAR(box.width(), r.w, 1e-12) << r.name;
-    EXPECT_NEAR(box.height(), r.h, 1e-12) << r.name;
+    EXPECT_NEAR(box.width(), r.w, 1e-12) << choiceName(r.kind);
+    EXPECT_NEAR(box.height(), r.h, 1e-12) << choiceName(r.kind);
     const OutlinePoint c = areaCentroid(s.outline);  // the clump centre is the centroid
-    EXPECT_NEAR(c[0], 0.0, 1e-9) << r.name;
-    EXPECT_NEAR(c[1], 0.0, 1e-9) << r.name;
+    EXPECT_NEAR(c[0], 0.0, 1e-9) << choiceName(r.kind);
+    EXPECT_NEAR(c[1], 0.0, 1e-9) << choiceName(r.kind);
   }
   // Triangle: base H/3 below the centre, apex 2H/3 above; all sides 9.5.
-  const Outline tri = makeShape("triangle").outline;
+  const Outline tri = makeShape(ShapeName::Triangle).outline;
   EXPECT_NEAR(boundingBox(tri).yMin, -triH / 3.0, 1e-12);
   for (std::size_t i = 0; i < 3; ++i)
     EXPECT_NEAR(std::hypot(tri[(i + 1) % 3][0] - tri[i][0], tri[(i + 1) % 3][1] - tri[i][1]), 9.5,
                 1e-12);
-  EXPECT_NEAR(std::abs(signedArea(makeShape("disk").outline)), kPi * 3.5 * 3.5, 2e-3);
+  EXPECT_NEAR(std::abs(signedArea(makeShape(ShapeName::Disk).outline)), kPi * 3.5 * 3.5, 2e-3);
 }
 
 TEST(Shape, ClumpExtentsMatchTheTable) {
   struct Row {
-    const char* name;
+    ShapeName kind;
     double w, h;
   };
   const double triH = 9.5 * std::sqrt(3.0) / 2.0;
-  for (const Row& r : {Row{"disk", 7.0, 7.0}, Row{"square", 6.5, 6.5}, Row{"rect_narrow", 4.5, 9.5},
-                       Row{"rect_wide", 9.5, 4.5}, Row{"triangle", 9.5, triH}}) {
-    const Extents e = atomExtents(clumpFor(r.name));
-    EXPECT_NEAR(e.width(), r.w, 0.1) << r.name;
-    EXPECT_NEAR(e.height(), r.h, 0.1) << r.name;
+  for (const Row& r : {Row{ShapeName::Disk, 7.0, 7.0}, Row{ShapeName::Square, 6.5, 6.5}, Row{ShapeName::RectNarrow, 4.5, 9.5},
+                       Row{ShapeName::RectWide, 9.5, 4.5}, Row{ShapeName::Triangle, 9.5, triH}}) {
+    const Extents e = atomExtents(clumpFor(r.kind));
+    EXPECT_NEAR(e.width(), r.w, 0.1) << choiceName(r.kind);
+    EXPECT_NEAR(e.height(), r.h, 0.1) << choiceName(r.kind);
   }
   // The disk's ring is exact: atoms on radius 3.25 at 0, 90, 180, 270 deg among others.
-  const Extents d = atomExtents(clumpFor("disk"));
+  const Extents d = atomExtents(clumpFor(ShapeName::Disk));
   EXPECT_NEAR(d.width(), 7.0, 1e-12);
   EXPECT_NEAR(d.yMax, 3.5, 1e-12);
 }
 
 TEST(Shape, EnvelopeWithinToleranceBothWays) {
-  for (const std::string& name : paperShapeNames()) {
-    const Shape s = makeShape(name);
-    const Envelope e = envelope(s.outline, clumpFor(name));
+  for (const ShapeName kind : paperShapes()) {
+    const std::string_view name = choiceName(kind);
+    const Shape s = makeShape(kind);
+    const Envelope e = envelope(s.outline, clumpFor(kind));
     EXPECT_LE(e.overshoot, 0.1) << name;
     EXPECT_LE(e.gap, 0.1) << name;
     // measureClump agrees with this independent evaluation.
@@ -152,10 +153,10 @@ TEST(Shape, EnvelopeWithinToleranceBothWays) {
   }
   // The numbers documented in docs/SHAPES.md: the square's corner gap is the 0.09 budget and its
   // corner atoms poke out by r - 0.34 sin 45 deg; the triangle's 60 deg corners by r - 0.34 sin 30.
-  const Envelope sq = envelope(makeShape("square").outline, clumpFor("square"));
+  const Envelope sq = envelope(makeShape(ShapeName::Square).outline, clumpFor(ShapeName::Square));
   EXPECT_NEAR(sq.gap, 0.09, 0.002);
   EXPECT_NEAR(sq.overshoot, kR - 0.34 * std::sin(kPi / 4), 0.001);
-  const Envelope tri = envelope(makeShape("triangle").outline, clumpFor("triangle"));
+  const Envelope tri = envelope(makeShape(ShapeName::Triangle).outline, clumpFor(ShapeName::Triangle));
   EXPECT_NEAR(tri.overshoot, kR - 0.34 * 0.5, 0.001);
 }
 
@@ -177,8 +178,9 @@ TEST(Shape, NoGrainLodgesBetweenSurfaceAtoms) {
   // their centre line: it sinks 0.7 - sqrt(0.49 - s^2/4) below their common tangent. Neighbours
   // must overlap (s < 0.5, so the shell has no opening at all) and the dimple must be shallow.
   double worst = 0.0, widest = 0.0;
-  for (const std::string& name : paperShapeNames()) {
-    const ClumpAtoms atoms = buildClumpAtoms(makeShape(name));
+  for (const ShapeName kind : paperShapes()) {
+    const std::string_view name = choiceName(kind);
+    const ClumpAtoms atoms = buildClumpAtoms(makeShape(kind));
     const auto& a = atoms.surface;
     for (std::size_t i = 0; i < a.size(); ++i) {
       const auto& p = a[i];
@@ -199,9 +201,10 @@ TEST(Shape, NoGrainFitsInsideTheOutline) {
   // Any grain (radius >= 0.45) centred inside the outline overlaps some atom, so a bed maker that
   // checks overlaps with atoms can never leave a grain inside the (mostly hollow) clump.
   std::mt19937_64 rng(7);
-  for (const std::string& name : paperShapeNames()) {
-    const Shape s = makeShape(name);
-    const ClumpDef c = clumpFor(name);
+  for (const ShapeName kind : paperShapes()) {
+    const std::string_view name = choiceName(kind);
+    const Shape s = makeShape(kind);
+    const ClumpDef c = clumpFor(kind);
     const OutlineBox box = boundingBox(s.outline);
     std::uniform_real_distribution<double> ux(box.xMin, box.xMax), uy(box.yMin, box.yMax);
     int tested = 0;
@@ -219,15 +222,15 @@ TEST(Shape, NoGrainFitsInsideTheOutline) {
 }
 
 TEST(Shape, RotatingNarrowRectangleBy90GivesWideExtents) {
-  const Extents rotated = atomExtents(clumpFor("rect_narrow", 90.0));
-  const Extents wide = atomExtents(clumpFor("rect_wide"));
+  const Extents rotated = atomExtents(clumpFor(ShapeName::RectNarrow, 90.0));
+  const Extents wide = atomExtents(clumpFor(ShapeName::RectWide));
   EXPECT_NEAR(rotated.width(), wide.width(), 1e-9);
   EXPECT_NEAR(rotated.height(), wide.height(), 1e-9);
-  const OutlineBox box = boundingBox(makeShape("rect_narrow", {}, 90.0).outline);
+  const OutlineBox box = boundingBox(makeShape(ShapeName::RectNarrow, {}, 90.0).outline);
   EXPECT_NEAR(box.width(), 9.5, 1e-12);
   EXPECT_NEAR(box.height(), 4.5, 1e-12);
   // A general angle: rotating the outline by 30 deg keeps the area and turns a vertex as expected.
-  const Outline r30 = makeShape("rect_wide", {}, 30.0).outline;
+  const Outline r30 = makeShape(ShapeName::RectWide, {}, 30.0).outline;
   EXPECT_NEAR(signedArea(r30), 9.5 * 4.5, 1e-9);
   const double c = std::cos(kPi / 6), s = std::sin(kPi / 6);
   EXPECT_NEAR(r30[1][0], c * 4.75 - s * -2.25, 1e-12);
@@ -263,7 +266,7 @@ TEST(Shape, ConcaveLShape) {
 TEST(Shape, RejectsBadPolygons) {
   auto message = [](const Outline& v) {
     try {
-      makeShape("polygon", v);
+      makeShape(ShapeName::Polygon, v);
     } catch (const Error& e) {
       return std::string(e.what());
     }
@@ -279,9 +282,8 @@ TEST(Shape, RejectsBadPolygons) {
   EXPECT_EQ(message({}), "intruder.vertices: shape 'polygon' needs a vertex list");
   EXPECT_EQ(message({{0, 0}, {4, 0}, {4, 4}, {0, 4}}), "accepted");
   EXPECT_EQ(message({{0, 0}, {0, 4}, {4, 4}, {4, 0}}), "accepted");  // clockwise is fine
-  EXPECT_THROW(makeShape("hexagon"), Error);
-  EXPECT_THROW(makeShape("square", {{0, 0}, {1, 0}, {0, 1}}), Error);
-  EXPECT_THROW(makeShape("square", {}, NAN), Error);
+  EXPECT_THROW(makeShape(ShapeName::Square, {{0, 0}, {1, 0}, {0, 1}}), Error);
+  EXPECT_THROW(makeShape(ShapeName::Square, {}, NAN), Error);
   // The self-intersection check works on any vertex list.
   EXPECT_TRUE(findSelfIntersection({{0, 0}, {2, 2}, {2, 0}, {0, 2}}).has_value());
   EXPECT_FALSE(findSelfIntersection({{0, 0}, {2, 0}, {2, 2}, {1, 1}, {0, 2}}).has_value());
@@ -343,9 +345,10 @@ TEST(Shape, GluedSurfaceHasTouchingAtomsAndStillHoldsGrainsOut) {
   // 0.35 for the smooth surface), so the envelope has cusps 0.25 deep, but no grain of radius
   // >= 0.45 can pass between two atoms nor sit inside the outline.
   std::mt19937_64 rng(11);
-  for (const std::string& name : paperShapeNames()) {
+  for (const ShapeName kind : paperShapes()) {
+    const std::string_view name = choiceName(kind);
     IntruderDef def;
-    def.shape = choiceNamed<ShapeName>(name).value();
+    def.shape = kind;
     def.surface = IntruderSurface::Glued;
     const Shape shape = makeShape(def);
     const ClumpAtoms atoms = buildClumpAtoms(shape, clumpOptionsFor(def));
@@ -372,8 +375,9 @@ TEST(Shape, GluedSurfaceHasTouchingAtomsAndStillHoldsGrainsOut) {
 TEST(Shape, ClumpIsCentredAndSymmetric) {
   // Mirror-symmetric shapes give mirror-symmetric clumps about x = 0, so the clump's atoms have
   // no net horizontal offset; atom count stays small.
-  for (const std::string& name : paperShapeNames()) {
-    const ClumpDef c = clumpFor(name);
+  for (const ShapeName kind : paperShapes()) {
+    const std::string_view name = choiceName(kind);
+    const ClumpDef c = clumpFor(kind);
     double sx = 0.0;
     for (double x : c.offsetX) sx += x;
     EXPECT_NEAR(sx / c.offsetX.size(), 0.0, 0.02) << name;

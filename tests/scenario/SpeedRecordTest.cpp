@@ -1,4 +1,4 @@
-// The speed log behind the cost estimates (scenario/SpeedRecord.h): what counts, the median of the
+// The speed log behind the cost estimates (scenario/cost/SpeedRecord.h): what counts, the median of the
 // last runs, and a record written by one run read back by the next estimate.
 #include <gtest/gtest.h>
 
@@ -11,8 +11,8 @@
 #include "io/AtomicFile.h"
 #include "io/Config.h"
 #include "physics/ForceKernels.h"
-#include "scenario/CostModel.h"
-#include "scenario/SpeedRecord.h"
+#include "scenario/cost/CostModel.h"
+#include "scenario/cost/SpeedRecord.h"
 #include "sweep/SweepPlan.h"
 
 namespace wiggle {

@@ -15,7 +15,7 @@
 
 #include "io/AtomicFile.h"
 #include "io/SweepSpec.h"
-#include "scenario/RunSummary.h"
+#include "scenario/run/RunSummary.h"
 #include "sweep/Coordinator.h"
 #include "sweep/ResultsTable.h"
 #include "support/TestSupport.h"
@@ -48,7 +48,7 @@ class CoordinatorTest : public ::testing::Test {
     fs::permissions(fake_, fs::perms::owner_all);
     writeFileAtomically(dir_ / "pinned.bed", "never read: a pinned bed is not made, and the stand-in reads nothing");
     RunSummary summary;
-    summary.status = "ok";
+    summary.status = RunStatus::Ok;
     summary.vy = 0.25;
     writeFileAtomically(dir_ / "summary.json", toJson(summary).dump());
     ::setenv("FAKE_SUMMARY", (dir_ / "summary.json").c_str(), 1);

@@ -28,7 +28,7 @@ TEST(ResultsTable, SchemaFileIsTheTable) {
 TEST(ResultsTable, ThePaceIsTheMedianCaseNotThePausedOne) {
   auto ok = [](double wallSeconds, double particleSteps) {
     CaseResult r;
-    r.status = "ok";
+    r.status = CaseStatus::Ok;
     r.runWallSeconds = wallSeconds;
     r.particleSteps = particleSteps;
     return r;
@@ -51,7 +51,7 @@ TEST(ResultsTable, RowsForPendingOkAndFailedCases) {
   const SweepSpec spec =
       parseSweepSpec("[[case]]\nname = \"deep\"\nintruder.y0 = 20\n[grid.drive]\nperiod = [1, 2, 3]\n", "t.toml");
   std::vector<CaseResult> results(3);
-  results[0].status = "ok";
+  results[0].status = CaseStatus::Ok;
   results[0].vy = 0.125;
   results[0].vySlope = -0.5;
   results[0].vySettled = 0.25;
@@ -61,7 +61,7 @@ TEST(ResultsTable, RowsForPendingOkAndFailedCases) {
   results[0].steps = 2000;
   results[0].stateHash = "abc";
   results[0].warnings = {"one, with a comma", "two"};
-  results[1].status = "failed";
+  results[1].status = CaseStatus::Failed;
   results[1].error = "box.width = 5 is too narrow, really";
   const std::string csv = resultsCsv(spec, {"cases/a", "cases/b", "cases/c"}, results);
   const auto rows = parseCsv(csv);

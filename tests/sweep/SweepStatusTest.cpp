@@ -9,9 +9,9 @@
 
 #include "io/AtomicFile.h"
 #include "io/FileLock.h"
-#include "scenario/Experiment.h"
-#include "scenario/RunProgress.h"
-#include "scenario/RunSummary.h"
+#include "scenario/run/Experiment.h"
+#include "scenario/run/RunProgress.h"
+#include "scenario/run/RunSummary.h"
 #include "support/TestSupport.h"
 #include "sweep/SweepStart.h"
 #include "sweep/SweepStatus.h"
@@ -41,7 +41,7 @@ class SweepStatusTest : public ::testing::Test {
     for (const char* name : {"a", "b", "c", "d", "e", "f", "g"})
       fs::create_directories(dir_ / (std::string("cases/") + name));
     RunSummary ok;
-    ok.status = "ok";
+    ok.status = RunStatus::Ok;
     writeFileAtomically(dir_ / "cases/a/summary.json", toJson(ok).dump());
     writeFileAtomically(dir_ / "cases/g/summary.json", toJson(ok).dump());
     ok.warnings = {"short window"};
@@ -58,16 +58,16 @@ TEST_F(SweepStatusTest, EachCaseIsInTheStateItsFilesShow) {
   EXPECT_EQ(s.jobs, 2);
   EXPECT_FALSE(s.sweepRunning());  // nothing holds the directory's lock
   ASSERT_EQ(s.cases.size(), 7u);
-  EXPECT_EQ(s.cases[0].status, "ok");
+  EXPECT_EQ(s.cases[0].status, CaseStatus::Ok);
   EXPECT_EQ(s.cases[0].vy, 0.25);
   EXPECT_EQ(s.cases[1].warnings, std::vector<std::string>{"short window"});
-  EXPECT_EQ(s.cases[2].status, "failed");
+  EXPECT_EQ(s.cases[2].status, CaseStatus::Failed);
   EXPECT_EQ(s.cases[2].error, "the run blew up at t = 3");
-  EXPECT_EQ(s.cases[3].status, "running");
+  EXPECT_EQ(s.cases[3].status, CaseStatus::Running);
   EXPECT_EQ(s.cases[3].fraction, 0.25);
-  EXPECT_EQ(s.cases[4].status, "pending");
+  EXPECT_EQ(s.cases[4].status, CaseStatus::Pending);
   // Called ok, but without a summary the sweep would run it again: pending, saying why.
-  EXPECT_EQ(s.cases[5].status, "pending");
+  EXPECT_EQ(s.cases[5].status, CaseStatus::Pending);
   EXPECT_EQ(s.cases[5].error.rfind("results.csv says ok, but", 0), 0u) << s.cases[5].error;
 }
 
@@ -97,12 +97,12 @@ TEST_F(SweepStatusTest, ArrayTasksCasesRunWhereTheirRunsHoldTheirDirectories) {
   const SweepStatus s = readSweepStatus(dir_.path().string());
   EXPECT_EQ(s.sweepLock, FileLock::Holders::Shared);
   EXPECT_TRUE(s.sweepRunning());
-  EXPECT_EQ(s.cases[3].status, "running");  // d: results.csv's word, but no process runs it
+  EXPECT_EQ(s.cases[3].status, CaseStatus::Running);  // d: results.csv's word, but no process runs it
   EXPECT_TRUE(s.cases[3].interrupted);
-  EXPECT_EQ(s.cases[4].status, "running");  // e: pending in the table, its run holds it
+  EXPECT_EQ(s.cases[4].status, CaseStatus::Running);  // e: pending in the table, its run holds it
   EXPECT_FALSE(s.cases[4].interrupted);
   EXPECT_EQ(s.cases[4].fraction, 0.5);
-  EXPECT_EQ(s.cases[5].status, "running");  // f: "ok" without a summary, being run again
+  EXPECT_EQ(s.cases[5].status, CaseStatus::Running);  // f: "ok" without a summary, being run again
   EXPECT_EQ(s.cases[5].error, "");
   // Two cases run at once: d's three quarters, e's half and f whole = 2.25 cases of 300 s, over 2.
   EXPECT_EQ(s.casesAtOnce, 2);
@@ -139,6 +139,11 @@ TEST_F(SweepStatusTest, WhatIsNotASweepDirectoryIsNamed) {
             std::string::npos);
   writeFileAtomically(dir_ / "results.csv", "case,status\na,ok\n");
   EXPECT_NE(errorOf([&] { readSweepStatus(dir_.path().string()); }).find("no column 'run_dir'"), std::string::npos);
+  // A status word that is none of the table's (a hand-edited file) is named, not taken for pending.
+  writeFileAtomically(dir_ / "results.csv", "case,run_dir,status,vy,wall_s,error\na,cases/a,done,,,\n");
+  EXPECT_NE(errorOf([&] { readSweepStatus(dir_.path().string()); })
+                .find("row 2: status 'done' is none of ok, failed, running, pending"),
+            std::string::npos);
 }
 
 }  // namespace

@@ -16,7 +16,7 @@
 #include "core/Error.h"
 #include "io/AtomicFile.h"
 #include "io/SweepSpec.h"
-#include "scenario/RunSummary.h"
+#include "scenario/run/RunSummary.h"
 #include "sweep/TaskRunner.h"
 
 namespace wiggle {
@@ -45,7 +45,7 @@ class TaskRunnerTest : public ::testing::Test {
     std::ofstream(fake_) << kFakeWiggle;
     fs::permissions(fake_, fs::perms::owner_all);
     RunSummary summary;
-    summary.status = "ok";
+    summary.status = RunStatus::Ok;
     summary.vy = 0.5;
     summary.stateHash = "0123456789abcdef";
     writeFileAtomically((root_ / "summary.json").string(), toJson(summary).dump());
@@ -86,7 +86,7 @@ TEST_F(TaskRunnerTest, ACaseThatEndsWellIsReadFromItsSummary) {
   TaskRunner runner(spec_, root_.string(), fake_, 3);
   const TaskOutcome o = runCase(1, "ok", runner);
   EXPECT_TRUE(o.ok) << o.error;
-  EXPECT_EQ(o.result.status, "ok");
+  EXPECT_EQ(o.result.status, CaseStatus::Ok);
   EXPECT_EQ(o.result.vy, 0.5);
   EXPECT_EQ(o.result.stateHash, "0123456789abcdef");
   EXPECT_EQ(o.task, (SweepTask{SweepTask::Kind::Case, 1}));
@@ -104,7 +104,7 @@ TEST_F(TaskRunnerTest, AFailureIsItsLastErrorLineNotAWarning) {
   const TaskOutcome o = runCase(0, "fail", runner);
   EXPECT_FALSE(o.ok);
   EXPECT_EQ(o.error, "the run blew up at t = 3");
-  EXPECT_EQ(o.result.status, "failed");
+  EXPECT_EQ(o.result.status, CaseStatus::Failed);
   EXPECT_EQ(o.result.error, o.error);
 }
 
@@ -138,7 +138,7 @@ TEST(SweepTask, OutcomesSurviveTheTripBetweenRanks) {
   o.error = "making its bed failed: \"quoted\", and a comma";
   o.wallSeconds = 12.5;
   o.pid = 4242;
-  o.result.status = "failed";
+  o.result.status = CaseStatus::Failed;
   o.result.error = o.error;
   const TaskOutcome back = TaskOutcome::fromJson(o.toJson());
   EXPECT_EQ(back.task, o.task);

@@ -14,7 +14,7 @@ The table holds, per bed (the three presets' beds) and thread count, the median 
 of the run phase of each code the bench script runs (wiggle, Debian's LAMMPS, the optimised LAMMPS,
 the floor), on one named machine, with the run it comes from. `wiggle run --check` and `sweep
 --dry-run` estimate from its wiggle one-thread rows before this machine has recorded runs of its own
-(src/scenario/CostModel.h: the build embeds the table). A cost block sits between `<!-- costs: NAME
+(src/scenario/cost/CostModel.h: the build embeds the table). A cost block sits between `<!-- costs: NAME
 -->` and `<!-- /costs: NAME -->` (Markdown) or `# costs: NAME` and `# /costs: NAME` (TOML); BLOCKS
 below says what each holds.
 """

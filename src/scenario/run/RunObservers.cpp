@@ -1,4 +1,4 @@
-#include "scenario/RunObservers.h"
+#include "scenario/run/RunObservers.h"
 
 #include "analysis/LammpsDump.h"
 #include "io/AtomicFile.h"

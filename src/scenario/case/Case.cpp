@@ -1,4 +1,4 @@
-#include "scenario/Case.h"
+#include "scenario/case/Case.h"
 
 #include <algorithm>
 #include <cmath>

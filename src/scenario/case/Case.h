@@ -14,7 +14,7 @@
 #include "io/RunConfig.h"
 #include "physics/Intruder.h"
 #include "physics/World.h"
-#include "scenario/Shape.h"
+#include "scenario/geometry/Shape.h"
 
 namespace wiggle {
 

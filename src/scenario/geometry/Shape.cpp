@@ -1,4 +1,4 @@
-#include "scenario/Shape.h"
+#include "scenario/geometry/Shape.h"
 
 #include <algorithm>
 #include <cmath>
@@ -91,7 +91,7 @@ double cornerAtomDistance(double theta, const ClumpOptions& o) {
 
 // Depth below the outline (positive inside) for the shape; analytic for the disk.
 std::function<double(OutlinePoint)> depthFunction(const Shape& shape) {
-  if (shape.isDisk) {
+  if (shape.isDisk()) {
     const double radius = shape.diskRadius;
     return [radius](OutlinePoint p) { return radius - std::hypot(p[0], p[1]); };
   }
@@ -224,22 +224,22 @@ std::string fixed3(double value) {
 
 }  // namespace
 
-const std::vector<std::string>& paperShapeNames() {
-  static const std::vector<std::string> names = [] {
-    std::vector<std::string> all;
-    for (const std::string_view name : ChoiceNames<ShapeName>::names)
-      if (name != choiceName(ShapeName::Polygon)) all.emplace_back(name);
+const std::vector<ShapeName>& paperShapes() {
+  static const std::vector<ShapeName> shapes = [] {
+    std::vector<ShapeName> all;
+    for (std::size_t i = 0; i < ChoiceNames<ShapeName>::names.size(); ++i)
+      if (static_cast<ShapeName>(i) != ShapeName::Polygon) all.push_back(static_cast<ShapeName>(i));
     return all;
   }();
-  return names;
+  return shapes;
 }
 
 Shape makeShape(ShapeName kind, const Outline& vertices, double angleDegrees) {
   if (!std::isfinite(angleDegrees)) throw Error("intruder.angle: not a finite number");
   Shape shape;
-  shape.name = choiceName(kind);
+  shape.kind = kind;
   if (kind != ShapeName::Polygon && !vertices.empty())
-    throw Error("intruder.vertices: only used with shape = \"polygon\", not '" + shape.name + "'");
+    throw Error("intruder.vertices: only used with shape = \"polygon\", not '" + std::string(choiceName(kind)) + "'");
   Outline raw;
   switch (kind) {
     case ShapeName::Polygon: {
@@ -252,7 +252,6 @@ Shape makeShape(ShapeName kind, const Outline& vertices, double angleDegrees) {
     }
     case ShapeName::Disk:
       // A disk is rotation-invariant: the angle is ignored and the outline stays exact.
-      shape.isDisk = true;
       shape.diskRadius = 0.5 * kDiskDiameter;
       shape.outline = diskOutline(shape.diskRadius);
       return shape;
@@ -263,15 +262,6 @@ Shape makeShape(ShapeName kind, const Outline& vertices, double angleDegrees) {
   }
   shape.outline = rotated(std::move(raw), angleDegrees);
   return shape;
-}
-
-Shape makeShape(const std::string& name, const Outline& vertices, double angleDegrees) {
-  const std::optional<ShapeName> kind = choiceNamed<ShapeName>(name);
-  if (!kind) {
-    throw Error("intruder.shape: unknown shape '" + name + "' (expected one of " +
-                joinedNames(choiceNameList<ShapeName>()) + ")");
-  }
-  return makeShape(*kind, vertices, angleDegrees);
 }
 
 Shape makeShape(const IntruderDef& def) {
@@ -327,7 +317,7 @@ double cornerDeviation(double theta, const ClumpOptions& o) {
 ClumpAtoms placeAtoms(const Shape& shape, const ClumpOptions& o) {
   ClumpAtoms atoms;
   atoms.atomRadius = o.atomRadius;
-  atoms.surface = shape.isDisk ? diskSurfaceAtoms(shape.diskRadius, o)
+  atoms.surface = shape.isDisk() ? diskSurfaceAtoms(shape.diskRadius, o)
                                : polygonSurfaceAtoms(shape.outline, o);
   if (!o.guardInterior) return atoms;
 
@@ -370,7 +360,7 @@ double largestOutlineGap(const Shape& shape, const ClumpAtoms& atoms) {
   const std::vector<OutlinePoint> none;
   double gap = 0.0;
   auto gapAt = [&](OutlinePoint p) { gap = std::max(gap, minDistanceToAtoms(atoms.surface, none, p) - r); };
-  if (shape.isDisk) {
+  if (shape.isDisk()) {
     const int samples = static_cast<int>(std::ceil(2.0 * kPi * shape.diskRadius / 0.005));
     for (int k = 0; k < samples; ++k) {
       const double a = 2.0 * kPi * k / samples;
@@ -465,7 +455,7 @@ ClumpQuality measureClump(const Shape& shape, const ClumpAtoms& atoms, const Clu
   q.maxEnvelopeDepth = deepestEnvelopePoint(atoms, depth);
   measureSurfaceSpacing(atoms, o, q);
   q.minInteriorAngle = 180.0;
-  if (!shape.isDisk) {
+  if (!shape.isDisk()) {
     for (std::size_t i = 0; i < shape.outline.size(); ++i) {
       const double theta = interiorAngle(shape.outline, i);
       if (theta < kPi) {
@@ -485,7 +475,7 @@ ClumpAtoms buildClumpAtoms(const Shape& shape, const ClumpOptions& o) {
   // (touching atoms) has its own gap between neighbours, sqrt(s^2 / 4 + r^2) - r.
   const double r = o.atomRadius, s = o.maxSpacing;
   const double limit = std::max({0.1, q.worstCornerDeviation, std::sqrt(0.25 * s * s + r * r) - r}) + 1e-9;
-  const std::string what = "intruder '" + shape.name + "'";
+  const std::string what = "intruder '" + std::string(choiceName(shape.kind)) + "'";
   if (q.maxOvershoot > limit)
     throw Error(what + ": outline has features too small for atoms of radius " + fixed3(o.atomRadius) +
                 " d (an atom reaches " + fixed3(q.maxOvershoot) + " d beyond it, limit " +

@@ -1,6 +1,6 @@
 #pragma once
 // A run directory's progress.json: what the run is doing and how far it is, written by the run
-// (scenario/Experiment.cpp) as it goes and read by `wiggle status` and `wiggle report`
+// (scenario/run/Experiment.cpp) as it goes and read by `wiggle status` and `wiggle report`
 // (sweep/SweepStatus), so that they read data, not the log lines written for people. Written
 // atomically (io/AtomicFile): a reader sees the previous state or the new one, never half of one.
 // docs/OUTPUT-FORMATS.md lists its fields.

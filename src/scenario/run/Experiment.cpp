@@ -1,4 +1,4 @@
-#include "scenario/Experiment.h"
+#include "scenario/run/Experiment.h"
 
 #include <omp.h>
 
@@ -23,13 +23,13 @@
 #include "io/AtomicFile.h"
 #include "io/Config.h"
 #include "model/CavityModel.h"
-#include "scenario/BedMaker.h"
-#include "scenario/Checkpoint.h"
-#include "scenario/Remeasure.h"
-#include "scenario/RunObservers.h"
-#include "scenario/RunProgress.h"
-#include "scenario/RunSummary.h"
-#include "scenario/SpeedRecord.h"
+#include "scenario/bed/BedMaker.h"
+#include "scenario/run/Checkpoint.h"
+#include "scenario/run/Remeasure.h"
+#include "scenario/run/RunObservers.h"
+#include "scenario/run/RunProgress.h"
+#include "scenario/run/RunSummary.h"
+#include "scenario/cost/SpeedRecord.h"
 
 namespace wiggle {
 
@@ -140,7 +140,7 @@ std::optional<Checkpoint> newestGoodCheckpoint(const std::string& dir, const Run
   return std::nullopt;
 }
 
-// progress.json (scenario/RunProgress.h): each stage as it begins, and the run's progress at most
+// progress.json (scenario/run/RunProgress.h): each stage as it begins, and the run's progress at most
 // every 10 wall seconds (the step loop reports it every 200 steps).
 class ProgressFile {
  public:
@@ -251,7 +251,7 @@ RunSummary summarise(const Case& run, const std::string& dir, const World& world
   for (std::string& w : runWarnings(rate, averagedFrom, extended)) summary.warnings.push_back(std::move(w));
   summary.overlapMargin = world.healthMargins().overlap;
   summary.speedMargin = world.healthMargins().speed;
-  summary.status = "ok";
+  summary.status = RunStatus::Ok;
   summary.grains = world.grainCount();
   summary.particles = world.particles().size();
   summary.steps = world.stepCount();
@@ -366,7 +366,7 @@ RunOutcome writeRunOutputs(const Case& run, const std::string& dir, const World&
   const bool extended = firstAveraged != run.steps.firstMeasured;
   const RunSummary summary = summarise(run, dir, world, state, fields, rate, settled, rule, averagedFrom, extended);
   writeFileAtomically(dir + "/summary.json", toJson(summary).dump(2) + "\n");
-  // For the cost estimates (scenario/SpeedRecord.h); stretches under 10^4 steps say more about
+  // For the cost estimates (scenario/cost/SpeedRecord.h); stretches under 10^4 steps say more about
   // start-up than about the step.
   if (stepping.steps >= 10000)
     recordRunSpeed(
@@ -378,7 +378,7 @@ RunOutcome writeRunOutputs(const Case& run, const std::string& dir, const World&
            formatNumber(summary.nsPerParticleStep) + " ns/particle-step, state " + world.stateHash());
   for (const std::string& w : summary.warnings) log.line("warning: " + w);
   RunOutcome outcome;
-  outcome.status = "ok";
+  outcome.status = RunStatus::Ok;
   outcome.vy = rate.vy;
   outcome.vySlope = rate.slope;
   outcome.vySettled = settled.vy;
@@ -535,7 +535,7 @@ RunOutcome runExperiment(const Case& run, const RunOptions& options) {
   stepping.steps = world.stepCount() - stepAtStart;
   if (!finished) {
     RunOutcome stopped;
-    stopped.status = "stopped";
+    stopped.status = RunStatus::Stopped;
     return stopped;
   }
   writeCheckpoint(dir, configToml, world, state, fields);

@@ -1,4 +1,6 @@
-#include "scenario/RunSummary.h"
+#include "scenario/run/RunSummary.h"
+
+#include <optional>
 
 #include "core/Error.h"
 
@@ -68,7 +70,14 @@ const std::vector<SummaryField>& summaryFields() {
 nlohmann::json toJson(const RunSummary& summary) {
   nlohmann::json j = nlohmann::json::object();
   for (const SummaryField& f : summaryFields())
-    std::visit([&](auto member) { j[f.name] = summary.*member; }, f.member);
+    std::visit(
+        [&](auto member) {
+          if constexpr (std::is_same_v<decltype(member), RunStatus S::*>)
+            j[f.name] = choiceName(summary.*member);  // the word, never the enum's number
+          else
+            j[f.name] = summary.*member;
+        },
+        f.member);
   return j;
 }
 
@@ -81,7 +90,16 @@ RunSummary summaryFromJson(const nlohmann::json& json) {
     std::visit(
         [&](auto member) {
           try {
-            it->get_to(summary.*member);
+            if constexpr (std::is_same_v<decltype(member), RunStatus S::*>) {
+              const std::string word = it->get<std::string>();
+              const std::optional<RunStatus> status = choiceNamed<RunStatus>(word);
+              if (!status)
+                throw Error(std::string("summary: key '") + f.name + "' is '" + word + "', none of " +
+                            joinedNames(choiceNameList<RunStatus>()));
+              summary.*member = *status;
+            } else {
+              it->get_to(summary.*member);
+            }
           } catch (const nlohmann::json::exception&) {
             throw Error(std::string("summary: key '") + f.name + "' has the wrong type");
           }
@@ -100,7 +118,7 @@ nlohmann::json summarySchema() {
           if constexpr (std::is_same_v<T, double>) return "number";
           else if constexpr (std::is_same_v<T, bool>) return "boolean";
           else if constexpr (std::is_same_v<T, std::uint64_t>) return "integer";
-          else if constexpr (std::is_same_v<T, std::string>) return "string";
+          else if constexpr (std::is_same_v<T, std::string> || std::is_same_v<T, RunStatus>) return "string";
           else if constexpr (std::is_same_v<T, std::vector<std::string>>) return "list of strings";
           else return "list of integers";
         },

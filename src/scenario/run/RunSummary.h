@@ -3,14 +3,26 @@
 // (name, unit, meaning, member) writes the file, reads it back (the sweep's results table), and is
 // the schema the Python package reads (docs/summary-schema.json, checked against this table by a
 // test), so the three cannot drift apart.
+#include <array>
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <variant>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "core/Choice.h"
+
 namespace wiggle {
+
+// How a run ended: ok (its outputs and summary.json are written) or stopped (a signal or the
+// stopAfterSteps hook: only its checkpoints, and it resumes). summary.json's "status" is its word.
+enum class RunStatus { Ok, Stopped };
+template <>
+struct ChoiceNames<RunStatus> {
+  static constexpr std::array<std::string_view, 2> names{"ok", "stopped"};
+};
 
 struct RunSummary {
   // the rise rate (analysis/RiseRate.h)
@@ -24,7 +36,7 @@ struct RunSummary {
   std::vector<std::string> warnings;
   // the blow-up detector (docs/RELIABILITY.md, section 7)
   double overlapMargin = 0.0, speedMargin = 0.0;
-  std::string status;  // "ok"
+  RunStatus status = RunStatus::Ok;
   // size and cost
   std::uint64_t grains = 0, particles = 0, steps = 0, threads = 0;
   std::string simd;  // the force kernels' instruction set (physics/ForceKernels.h)
@@ -48,7 +60,7 @@ struct SummaryField {
   const char* unit;     // "" for none
   const char* meaning;  // one line
   std::variant<double RunSummary::*, bool RunSummary::*, std::uint64_t RunSummary::*, std::string RunSummary::*,
-               std::vector<std::string> RunSummary::*, std::vector<std::uint64_t> RunSummary::*>
+               std::vector<std::string> RunSummary::*, std::vector<std::uint64_t> RunSummary::*, RunStatus RunSummary::*>
       member;
 };
 

@@ -1,6 +1,6 @@
 #pragma once
 // One case of the paper's experiment, from the bed to the rise rate (docs/PHYSICS.md §6-9, §13): from a
-// prepared Case (scenario/Case.h), gets the bed (cache or made), drives the intruder, samples its trajectory, bins the
+// prepared Case (scenario/case/Case.h), gets the bed (cache or made), drives the intruder, samples its trajectory, bins the
 // vertical velocity by phase, takes field frames at the chosen phases, writes dumps, checkpoints
 // every run.checkpoint_interval wall seconds, and writes the run directory's files.
 #include <functional>
@@ -11,8 +11,9 @@
 #include "io/RunConfig.h"
 #include "physics/Intruder.h"
 #include "physics/World.h"
-#include "scenario/BedMaker.h"
-#include "scenario/Case.h"
+#include "scenario/bed/BedMaker.h"
+#include "scenario/case/Case.h"
+#include "scenario/run/RunSummary.h"  // RunStatus
 
 namespace wiggle {
 
@@ -27,7 +28,7 @@ struct RunOptions {
 };
 
 struct RunOutcome {
-  std::string status;   // "ok" | "stopped"
+  RunStatus status = RunStatus::Ok;
   double vy = 0.0, vySlope = 0.0;
   double vySettled = 0.0, tSettled = 0.0;  // the paper's t_f rule (analysis/RiseRate.h)
   bool settled = false;

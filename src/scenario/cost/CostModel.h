@@ -48,7 +48,7 @@ CostTable parseCostTable(const std::string& csv);
 const CostTable& committedCostTable();
 
 // The ns per particle-step the estimates use, and where it comes from: once this machine has
-// recorded one-thread runs on this CPU, the median of the last ones (scenario/SpeedRecord.h), of
+// recorded one-thread runs on this CPU, the median of the last ones (scenario/cost/SpeedRecord.h), of
 // beds of the config's size when there are any; else the committed cost table's figure for the
 // config's bed size.
 struct SpeedBasis {

@@ -9,8 +9,8 @@
 
 #include "analysis/FieldObserver.h"
 #include "physics/World.h"
-#include "scenario/Case.h"
-#include "scenario/Checkpoint.h"
+#include "scenario/case/Case.h"
+#include "scenario/run/Checkpoint.h"
 
 namespace wiggle {
 

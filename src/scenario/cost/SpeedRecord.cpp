@@ -1,4 +1,4 @@
-#include "scenario/SpeedRecord.h"
+#include "scenario/cost/SpeedRecord.h"
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -12,7 +12,7 @@
 #include "core/Machine.h"
 #include "core/Median.h"
 #include "physics/ForceKernels.h"
-#include "scenario/BedMaker.h"
+#include "scenario/bed/BedMaker.h"
 
 namespace wiggle {
 

@@ -1,4 +1,4 @@
-#include "scenario/Remeasure.h"
+#include "scenario/run/Remeasure.h"
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -7,7 +7,7 @@
 #include "core/Format.h"
 #include "io/AtomicFile.h"
 #include "io/Config.h"
-#include "scenario/Case.h"
+#include "scenario/case/Case.h"
 
 namespace wiggle {
 

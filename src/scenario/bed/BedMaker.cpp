@@ -1,4 +1,4 @@
-#include "scenario/BedMaker.h"
+#include "scenario/bed/BedMaker.h"
 
 #include <algorithm>
 #include <chrono>
@@ -15,7 +15,8 @@
 #include "io/AtomicFile.h"
 #include "io/FileLock.h"
 #include "io/StateFile.h"
-#include "scenario/LammpsExport.h"
+#include "scenario/bed/EngineSettings.h"
+#include "scenario/bed/LammpsBed.h"
 
 namespace wiggle {
 
@@ -36,28 +37,6 @@ double totalMass(const World& world) {
   for (std::uint32_t i = 0; i < world.grainCount(); ++i) mass += world.particles().mass[i];
   return mass;
 }
-
-}  // namespace
-
-WorldDef worldDefFor(const RunConfig& config) {
-  WorldDef def;
-  def.boxWidth = config.box.width;
-  def.dt = config.run.dt;
-  def.massModel = config.grains.massModel;
-  def.contact = config.contact;
-  def.skin = config.engine.skin;
-  def.intruderSkin = config.engine.intruderSkin;
-  def.sortInterval = config.engine.sortInterval;
-  // The fastest a grain falls without the drive: from the top of the last batch poured (thrown
-  // down at bed.pour_speed when the pour is random).
-  def.referenceImpactSpeed = std::sqrt(2.0 * def.gravity * (config.box.bedHeight + config.bed.batchHeight));
-  if (config.bed.pour == BedPour::Random)
-    def.referenceImpactSpeed = std::sqrt(def.referenceImpactSpeed * def.referenceImpactSpeed +
-                                         config.bed.pourSpeed * config.bed.pourSpeed);
-  return def;
-}
-
-namespace {
 
 // The key of a bed poured around `clump` at intruder.y0, or, when `clump` has no atoms, of the
 // seed's bed poured without an intruder (the base of carved beds: the same for every shape and y0).

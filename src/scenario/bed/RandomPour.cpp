@@ -1,4 +1,4 @@
-#include "scenario/RandomPour.h"
+#include "scenario/bed/RandomPour.h"
 
 #include <algorithm>
 #include <cmath>

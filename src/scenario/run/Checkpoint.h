@@ -12,7 +12,7 @@
 #include "core/BinaryStream.h"
 #include "io/RunConfig.h"
 #include "physics/World.h"
-#include "scenario/Case.h"
+#include "scenario/case/Case.h"
 
 namespace wiggle {
 

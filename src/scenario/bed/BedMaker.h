@@ -13,7 +13,7 @@
 
 #include "io/RunConfig.h"
 #include "physics/World.h"
-#include "scenario/RandomPour.h"
+#include "scenario/bed/RandomPour.h"
 
 namespace wiggle {
 
@@ -30,9 +30,6 @@ using BedProgress = std::function<void(const BedStatus&)>;
 
 // The status as one line of text: "[bed] pouring batch 5, 4590 grains, surface 59.1 / 195, t = 33.8".
 std::string bedStatusLine(const BedStatus& status, double targetHeight);
-
-// The engine parameters of a run config (everything but the particles).
-WorldDef worldDefFor(const RunConfig& config);
 
 // Hex key of everything a bed depends on: box, seed, grains, contact, intruder clump and position,
 // bed-making parameters (not bed.max_time, a bound only; bed.pour and its parameters only when

@@ -1,4 +1,4 @@
-#include "scenario/RunProgress.h"
+#include "scenario/run/RunProgress.h"
 
 #include <filesystem>
 #include <nlohmann/json.hpp>

@@ -1,4 +1,4 @@
-#include "scenario/Checkpoint.h"
+#include "scenario/run/Checkpoint.h"
 
 #include <filesystem>
 

@@ -1,4 +1,4 @@
-#include "scenario/Polygon.h"
+#include "scenario/geometry/Polygon.h"
 
 #include <algorithm>
 #include <cmath>

@@ -15,28 +15,30 @@
 #include "io/RunConfig.h"
 #include "physics/Intruder.h"
 #include "physics/ParticleStore.h"
-#include "scenario/Polygon.h"
+#include "scenario/geometry/Polygon.h"
 
 namespace wiggle {
 
 // An outline in the clump frame: counter-clockwise, centroid at the origin, already rotated.
+// Its name is choiceName(kind): the one table of shape names (ChoiceNames<ShapeName>, io/RunConfig.h).
 struct Shape {
-  std::string name;      // "disk", "square", "rect_narrow", "rect_wide", "triangle" or "polygon"
+  ShapeName kind = ShapeName::Disk;
   Outline outline;       // [d]; a disk is a regular 720-gon with vertices at 0, 90, 180, 270 deg,
                          // so its top (+R), equator (y = 0) and height (2R) are exact
-  bool isDisk = false;   // the disk is placed analytically (atoms on a circle)
   double diskRadius = 0.0;  // [d], disk only
+  // The disk is placed analytically (atoms on a circle), every other outline atom by atom.
+  bool isDisk() const { return kind == ShapeName::Disk; }
 };
 
-// The paper's five shapes, in the order OS1..OS5.
-const std::vector<std::string>& paperShapeNames();
+// The paper's five shapes, in the order OS1..OS5: every ShapeName but Polygon.
+const std::vector<ShapeName>& paperShapes();
 
 // Builds the outline of a shape (Polygon takes `vertices`, in any order and frame) rotated by
 // angleDegrees counter-clockwise about its centroid. Throws wiggle::Error on a paper shape given
 // vertices, or an invalid polygon (too few vertices, repeated vertices, zero area, non-finite
-// numbers, self-intersection); the named form also on an unknown name.
+// numbers, self-intersection). A shape named in text is parsed where the text is read (the
+// config, the command line) with choiceNamed<ShapeName>.
 Shape makeShape(ShapeName kind, const Outline& vertices = {}, double angleDegrees = 0.0);
-Shape makeShape(const std::string& name, const Outline& vertices = {}, double angleDegrees = 0.0);
 Shape makeShape(const IntruderDef& def);
 
 // The default intruder mass (docs/PHYSICS.md §6): the disk outline's area pi 3.5^2 times the grain

@@ -1,4 +1,4 @@
-#include "scenario/CostModel.h"
+#include "scenario/cost/CostModel.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,9 +10,9 @@
 
 #include "core/Error.h"
 #include "io/Config.h"
-#include "scenario/BedMaker.h"
-#include "scenario/Case.h"
-#include "scenario/SpeedRecord.h"
+#include "scenario/bed/BedMaker.h"
+#include "scenario/case/Case.h"
+#include "scenario/cost/SpeedRecord.h"
 
 namespace wiggle {
 

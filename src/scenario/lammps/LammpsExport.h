@@ -9,8 +9,7 @@
 // y to be integrated, and `fix setforce` gives every atom the force F_contact,y - M g so all atoms
 // accelerate together with the clump's acceleration.
 //
-// The same data files are read back as beds (readLammpsBed, for bed.file): an exported bed, or one
-// that LAMMPS made (tools/validation/lammps_fix_pour.py), run by wiggle.
+// The same data files are read back as beds by scenario/bed/LammpsBed.h (bed.file).
 //
 // What cannot be carried: the tangential contact history. A data file has no section for it, and
 // LAMMPS restores it only from its own binary restart files. The deck therefore starts every
@@ -21,7 +20,7 @@
 
 #include "io/RunConfig.h"
 #include "physics/World.h"
-#include "scenario/Case.h"
+#include "scenario/case/Case.h"
 
 namespace wiggle {
 
@@ -50,18 +49,6 @@ void writeLammpsDeck(const std::string& dir, const LammpsDeck& deck);
 // data file), velocities, spins, intruder and motion, but no contact history. For comparing a
 // LAMMPS run of the exported deck with wiggle step by step.
 World withoutContactHistory(const World& world);
-
-// bed.file = a LAMMPS data file: the bed in it for this config (atom_style sphere, as LAMMPS's
-// write_data and writeLammpsDeck write it; `text` is the file's bytes). The atoms of the types that
-// bed.lammps_types calls grain and base become grains (positions, velocities, spins) and frozen base
-// particles, keeping their atom ids (World::adoptParticleIds); the drop types' atoms (the intruder
-// the bed was made around) are left out and `clump` is held at the box centre and intruder.y0. A
-// data file has no contact history, so every contact starts with zero shear. Throws wiggle::Error,
-// one line starting with `name`, for what it cannot map: another atom style, a triclinic or tilted
-// box, a box width that is not box.width, a type without a role, a grain density other than the
-// config's, an atom off the z = 0 plane, a malformed number, a count the sections do not hold, or
-// dropped atoms centred away from the config's intruder.
-World readLammpsBed(const std::string& text, const std::string& name, const RunConfig& config, const ClumpDef& clump);
 
 struct LammpsExportResult {
   LammpsDeck deck;
