@@ -417,6 +417,7 @@ TEST_F(Cli, RateMeasuresAFinishedRunAgainAndRecordsTheSettledRate) {
 // your input". The process is started directly (fork/exec: no shell in between to translate a
 // death by signal into 128 + N) and signalled once it has started work (its log or results exist).
 struct Stopped {
+  bool started = false;  // the file it waited for appeared before the signal
   bool exited = false;
   int status = -1;
   std::string err;
@@ -437,12 +438,21 @@ Stopped startAndSignal(const std::vector<std::string>& args, const fs::path& sta
     execv(argv[0], argv.data());
     _exit(127);
   }
-  for (int i = 0; i < 600 && !fs::exists(startedWhen); ++i) usleep(100000);
-  usleep(1500000);  // past the start: the signal handlers are in place, a bed or the run is under way
-  kill(pid, signal);
+  // Waits by event, not by a clock: a bed made under the sanitizers can take minutes, and a signal
+  // sent before `startedWhen` appears would land in another stage than the test means.
   int raw = 0;
-  waitpid(pid, &raw, 0);
+  bool ended = false;
+  for (int i = 0; i < 6000 && !fs::exists(startedWhen) && !ended; ++i) {
+    usleep(100000);
+    ended = waitpid(pid, &raw, WNOHANG) == pid;
+  }
   Stopped s;
+  s.started = fs::exists(startedWhen);
+  if (!ended) {
+    if (s.started) usleep(1500000);  // past the start: the signal handlers are in place, a bed or the run is under way
+    kill(pid, signal);
+    waitpid(pid, &raw, 0);
+  }
   s.exited = WIFEXITED(raw);
   s.status = s.exited ? WEXITSTATUS(raw) : -1;
   s.err = slurp(errPath);
@@ -474,6 +484,7 @@ TEST_F(Cli, InterruptedRunsAndSweepsExit128PlusTheSignal) {
     const Stopped s =
         startAndSignal({WIGGLE_BINARY, "run", config.string(), "--out", out.string(), "--threads", "1"},
                        out / "log.txt", signal, logs_ / "err", root_ / ("cache" + std::to_string(signal)));
+    EXPECT_TRUE(s.started) << "no log.txt: " << s.err;
     EXPECT_TRUE(s.exited) << "killed by the signal instead of stopping: " << s.err;
     EXPECT_EQ(s.status, expected) << s.err;
     EXPECT_NE(s.err.find("interrupted"), std::string::npos) << s.err;
@@ -486,6 +497,7 @@ TEST_F(Cli, InterruptedRunsAndSweepsExit128PlusTheSignal) {
   const Stopped s = startAndSignal(
       {WIGGLE_BINARY, "sweep", sweep.string(), "--out", out.string(), "--jobs", "1", "--threads", "1", "--local"},
       out / "results.csv", SIGTERM, logs_ / "err", root_ / "cache-sweep");
+  EXPECT_TRUE(s.started) << "no results.csv: " << s.err;
   EXPECT_TRUE(s.exited) << s.err;
   EXPECT_EQ(s.status, 143) << s.err;
   EXPECT_NE(s.err.find("rerun the same command to resume"), std::string::npos) << s.err;
@@ -504,6 +516,7 @@ TEST_F(Cli, StatusOfARunDirectorySaysWhereItStopped) {
   const Stopped s = startAndSignal({WIGGLE_BINARY, "run", tinyConfig(), "--set", "run.duration=50", "--set",
                                     "run.checkpoint_interval=0.2", "--out", out.string(), "--threads", "1"},
                                    out / "checkpoint.bin", SIGINT, logs_ / "err", root_ / "cache");
+  ASSERT_TRUE(s.started) << "no checkpoint within 10 minutes: " << s.err;
   ASSERT_EQ(s.status, 130) << s.err;
   const std::string progress = slurp(out / "progress.json");
   EXPECT_NE(progress.find("\"stage\": \"interrupted at t = "), std::string::npos) << progress;

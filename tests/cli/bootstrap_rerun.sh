@@ -23,7 +23,7 @@ WRAP
 chmod +x "$work/bin/cmake" "$work/tree/build/release/wiggle"
 export PATH="$work/bin:$PATH" WIGGLE_CACHE="$work/cache"
 # The README's command as a newcomer types it: the default preset, whatever preset runs this test
-# (CI runs the suite with WIGGLE_PRESET=ci).
+# (a developer may run the suite with WIGGLE_PRESET set).
 unset WIGGLE_PRESET
 for attempt in 1 2; do
   if ! "$work/tree/tools/bootstrap.sh" run > "$work/out$attempt" 2>&1; then
