@@ -6,22 +6,28 @@ uninterrupted run's.
     tests/reliability/kill_resume.py WIGGLE_BINARY [--seed N] [--run-kills K] [--work DIR] [--keep]
 
 One run (a 20 x 14 bed, about 250 grains, with its own empty bed cache so that the bed is made):
-  1. killed at a random moment while it makes its bed;
+  1. killed while it makes its bed (at its partial file's k-th save);
   2. killed the moment the bed cache file is being written (a watcher polls for the temporary file);
-  3. resumed and killed K times at random moments of the run (checkpoints every 200 steps);
+  3. resumed and killed K times at drawn moments of the run (checkpoints every 200 steps);
   4. killed the moment a checkpoint is being written (the watcher polls for checkpoint.bin.tmp.*
      or for the gap between moving checkpoint.bin aside and writing the new one);
   5. resumed to the end; every output (trajectory, phase rates, fields, dumps, model, summary
      without its wall times) and the cached bed's bytes must equal the uninterrupted run's.
 One sweep (3 cases, 2 jobs, each case twice as long as the run): one worker process SIGKILLed at a
-random moment while the sweep goes on (recorded as failed, exit 1), then the coordinator alone
+drawn step of its case while the sweep goes on (recorded as failed, exit 1), then the coordinator alone
 SIGKILLed (its children get SIGTERM and checkpoint), then the coordinator and all its children
-SIGKILLed at once, each at a random moment after a case has started; rerun to the end; results.csv (status, vy, state_hash)
+SIGKILLed at once, each at a drawn step of a running case; rerun to the end; results.csv (status, vy, state_hash)
 and every case's outputs must equal the uninterrupted sweep's.
 
-Kill moments are wall-clock times drawn from --seed (printed, with each moment and what the
-process was doing when it died), so a failing schedule can be replayed; the state a wall-clock
-kill catches still varies with the machine's speed. Exit status 0 when everything matches.
+Every kill waits for an event, never for a time measured beforehand, so a loaded or an idle
+machine cannot make it miss its window (until session 29 the moments were wall-clock fractions of
+the reference's times, and a kill could come after the stage it meant had ended): the bed's
+partial file saved the k-th time, a checkpoint at or past a drawn step (the log's "checkpoint at
+step S"), a worker's case past a drawn step. After the event a kill may wait a drawn fraction of
+one checkpoint interval's wall time of the reference, so that it lands at any point of a step,
+not only just after a checkpoint. The draws come from --seed (printed, with each kill and what the
+process was doing when it died), so a failing schedule can be replayed. Exit status 0 when
+everything matches.
 """
 import argparse
 import json
@@ -163,12 +169,16 @@ class Harness:
             proc.wait()
             return True
 
-    def kill_after_condition(self, proc, condition, seconds):
-        """SIGKILL `seconds` after `condition()` first holds; True when the kill landed."""
-        end = time.monotonic() + 120.0
-        while proc.poll() is None and not condition() and time.monotonic() < end:
+    def kill_after_event(self, proc, event, delay, timeout=300.0):
+        """SIGKILL `delay` seconds after `event()` first holds; True when the kill landed (the process
+        was alive). Polls every millisecond; the process ending first is a miss."""
+        end = time.monotonic() + timeout
+        while proc.poll() is None and not event() and time.monotonic() < end:
             time.sleep(0.001)
-        return self.kill_after(proc, seconds)
+        if proc.poll() is not None or not event():
+            proc.wait() if proc.poll() is None else None
+            return False
+        return self.kill_after(proc, delay)
 
     def kill_when(self, proc, condition, timeout=120.0):
         """SIGKILL as soon as `condition()` holds (polled in a tight loop); True when it landed."""
@@ -198,13 +208,14 @@ def run_trials(h, run_kills, duration):
 
     out, cache = os.path.join(h.work, "run-killed"), os.path.join(h.work, "cache-killed")
     kills = 0
-    # 1. During bed making.
-    moment = h.rng.uniform(0.1, 0.8) * bed_s
+    # 1. During bed making: when the bed in the making has been saved the k-th time (its partial
+    # file written anew k times, as the watcher sees it).
+    saves = h.rng.randint(1, 3)
     p = h.start(["run", cfg, "--out", out, "--threads", "1"], cache)
-    landed = h.kill_after(p, moment)
+    landed = h.kill_after_event(p, PartialSaves(cache, saves), 0.0)
     beds, temps, partials = cache_beds(cache)
-    log(f"run kill 1 at {moment:.3f} s (bed making): {'killed' if landed else 'had finished'}; cache holds "
-        f"{beds or 'no bed'}, partial {partials or 'none'}, temporary files {temps or 'none'}")
+    log(f"run kill 1 at the bed's partial save {saves} (bed making): {'killed' if landed else 'had finished'}; "
+        f"cache holds {beds or 'no bed'}, partial {partials or 'none'}, temporary files {temps or 'none'}")
     check(landed and not beds and not os.path.exists(os.path.join(out, "checkpoint.bin")),
           "kill 1 did not land during bed making (bed making too fast for the schedule?)")
     kills += landed
@@ -226,22 +237,30 @@ def run_trials(h, run_kills, duration):
     for b in beds:  # if the rename beat the kill, the bed there must be whole
         check(read(os.path.join(cache, b)) == read(os.path.join(ref_cache, b)),
               f"kill 2 left a cached bed {b} that differs from the reference's")
-    # 3. At random moments of the run (each resume first loads the bed or a checkpoint).
+    # 3. At drawn moments of the run (each resume first loads the bed or a checkpoint): the first
+    # once the run phase has begun, the others at a checkpoint at or past a drawn step of the first
+    # 30 % of the run (which leaves most of it for the checkpoint-write kill); each then waits a
+    # drawn fraction of one checkpoint interval (CHECKPOINT_STEPS steps at the reference's speed).
+    interval_s = run_s * CHECKPOINT_STEPS / s["steps"]
+    targets = sorted(h.rng.uniform(0.0, 0.3) * s["steps"] for _ in range(max(run_kills - 1, 0)))
     for k in range(run_kills):
-        # Up to 30 % of the run after the run phase starts (the bed or a checkpoint loaded, or the
-        # bed made): three kills leave some of the run for the checkpoint-write kill.
-        moment = h.rng.uniform(0.0, 0.3) * run_s
-        logged = log_lines(out)
+        target = None if k == 0 else targets[k - 1]
+        delay = h.rng.uniform(0.0, 1.0) * interval_s
+        logged = len(log_lines(out))
         p = h.start(["run", "--out", out, "--resume", "--threads", "1"], cache)
-        started = lambda: any(w in l for l in log_lines(out)[len(logged):]
-                              for w in ("resumed from", "bed made", "bed loaded"))
-        landed = h.kill_when(p, started) if moment == 0 else h.kill_after_condition(p, started, moment)
-        new = log_lines(out)[len(logged):]
+        if target is None:
+            event = lambda: any(w in l for l in log_lines(out)[logged:] for w in ("resumed from", "bed made", "bed loaded"))
+        else:
+            event = lambda: any(step >= target for step in checkpoint_steps(log_lines(out)[logged:]))
+        landed = h.kill_after_event(p, event, delay)
+        new = log_lines(out)[logged:]
         begun = next((l for l in new if "resumed from" in l or "bed made" in l or "bed loaded" in l), "?")
-        last = [l for l in new if "checkpoint at step" in l]
-        log(f"run kill {3 + k} {moment:.3f} s into the run phase: {'killed' if landed else 'had finished'} "
+        last = checkpoint_steps(new)
+        what = "once the run began" if target is None else f"at a checkpoint at or past step {target:.0f}"
+        log(f"run kill {3 + k} {what}, {delay:.3f} s after: {'killed' if landed else 'had finished'} "
             f"(it began: {begun.split('  ', 1)[-1].strip()}; last checkpoint: "
-            f"{last[-1].split('  ', 1)[-1].strip() if last else 'none'})")
+            f"{f'step {last[-1]}' if last else 'none'})")
+        check(landed, f"run kill {3 + k} missed: the run ended before its event")
         kills += landed
         if not landed:
             break
@@ -275,6 +294,43 @@ def run_trials(h, run_kills, duration):
     log(f"run: {kills} kills survived; outputs {'identical' if same else 'DIFFERENT'} "
         f"(state {summary_without_wall_times(os.path.join(out, 'summary.json'))['state_hash']})")
     return kills
+
+
+# The run loop checks the wall clock for a checkpoint every this many steps (src/scenario/run/
+# Experiment.cpp); with run.checkpoint_interval = 0.001 s every check writes one.
+CHECKPOINT_STEPS = 200
+
+
+class PartialSaves:
+    """True once the bed's partial file in `cache` has been seen written anew `count` times."""
+
+    def __init__(self, cache, count):
+        self.cache, self.count, self.seen, self.last = cache, count, 0, None
+
+    def __call__(self):
+        for name in cache_beds(self.cache)[2]:
+            try:
+                st = os.stat(os.path.join(self.cache, name))
+            except OSError:
+                continue
+            if (st.st_ino, st.st_mtime_ns) != self.last:
+                self.last = (st.st_ino, st.st_mtime_ns)
+                self.seen += 1
+        return self.seen >= self.count
+
+
+def wait_for_checkpoint(case, target, timeout=300.0):
+    """Waits until the case process (pid, run directory) has logged a checkpoint at or past step
+    `target`, or has ended."""
+    end = time.monotonic() + timeout
+    while (not is_zombie(case[0]) and time.monotonic() < end and
+           not any(step >= target for step in checkpoint_steps(log_lines(case[1])))):
+        time.sleep(0.001)
+
+
+def checkpoint_steps(lines):
+    """The steps of the log's "checkpoint at step S" lines."""
+    return [int(l.rsplit(" ", 1)[1]) for l in lines if "checkpoint at step " in l]
 
 
 def log_lines(run_dir):
@@ -333,9 +389,9 @@ def sweep_trials(h, duration):
     p = h.start(args(ref), os.path.join(h.work, "cache-sweep-ref"))
     check(p.wait() == 0, "the reference sweep failed (see processes.log)")
     wall = time.monotonic() - t0
-    case_s = min(float(r["wall_s"]) for r in results(os.path.join(ref, "results.csv")).values())
+    case_steps = min(int(r["steps"]) for r in results(os.path.join(ref, "results.csv")).values())
     log(f"sweep: reference {len(results(os.path.join(ref, 'results.csv')))} cases in {wall:.2f} s (2 jobs), "
-        f"the shortest case {case_s:.2f} s")
+        f"the shortest case {case_steps} steps")
 
     out, cache = os.path.join(h.work, "sweep-killed"), os.path.join(h.work, "cache-sweep-killed")
     kills = 0
@@ -354,19 +410,20 @@ def sweep_trials(h, duration):
             time.sleep(0.005)
         return None
 
-    # 1. One worker process, while the sweep goes on: recorded as failed, retried by the rerun.
+    # 1. One worker process, while the sweep goes on: recorded as failed, retried by the rerun. It
+    # is killed at its case's checkpoint at or past a drawn step of the first half of the case.
     p = h.start(args(out), cache)
     victim = running_case(p)
-    moment = h.rng.uniform(0.0, 0.5) * case_s
+    target = h.rng.uniform(0.0, 0.5) * case_steps
     if victim:
-        time.sleep(moment)
+        wait_for_checkpoint(victim, target)
         if not is_zombie(victim[0]):
             os.kill(victim[0], signal.SIGKILL)
     rc = p.wait()
     rows = results(os.path.join(out, "results.csv"))
     failed = [r["error"] for r in rows.values() if r["status"] == "failed"]
     log(f"sweep kill 1: worker pid {victim[0] if victim else '-'} "
-        f"({os.path.basename(victim[1]) if victim else 'none found'}) {moment:.3f} s after it started; "
+        f"({os.path.basename(victim[1]) if victim else 'none found'}) at its checkpoint at or past step {target:.0f}; "
         f"the sweep exited {rc}; failed: {failed or 'none'}")
     kills += rc != 0
     check(rc == 1 and any("killed by signal 9" in e for e in failed),
@@ -375,11 +432,12 @@ def sweep_trials(h, duration):
     # checkpoint. 3. The coordinator and every child at once (as a crash of the machine would).
     for kill, everything in ((2, False), (3, True)):
         p = h.start(args(out), cache)
-        moment = h.rng.uniform(0.0, 0.5) * case_s
+        target = h.rng.uniform(0.0, 0.5) * case_steps
         kids = []
-        landed = bool(running_case(p))
+        victim = running_case(p)
+        landed = bool(victim)
         if landed:
-            time.sleep(moment)
+            wait_for_checkpoint(victim, target)
             kids = children_of(p.pid)
             for pid in (kids if everything else []) + [p.pid]:
                 try:
@@ -391,7 +449,7 @@ def sweep_trials(h, duration):
         else:
             p.wait()
         log(f"sweep kill {kill} ({f'coordinator and {len(kids)} children at once' if everything else 'coordinator only'}) "
-            f"{moment:.3f} s after a case started: {'killed' if landed else 'had finished'}; "
+            f"at a case's checkpoint at or past step {target:.0f}: {'killed' if landed else 'had finished'}; "
             f"case states: {sorted(set(r['status'] for r in results(os.path.join(out, 'results.csv')).values()))}")
         kills += landed
     # To the end.
