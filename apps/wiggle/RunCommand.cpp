@@ -127,7 +127,7 @@ void addRunCommand(CLI::App& app) {
     options.resume = args->resume;
     const RunOutcome outcome = runExperiment(prepareCase(config), options);
     std::printf("%s\n", outcome.resultLine().c_str());
-    for (const std::string& w : outcome.warnings) std::fprintf(stderr, "wiggle: warning: %s\n", w.c_str());
+    for (const std::string& w : outcome.summary.warnings) std::fprintf(stderr, "wiggle: warning: %s\n", w.c_str());
     std::fflush(stdout);  // before the plotter writes to the same stream
     if (config.run.plot && !args->noPlot) {
       int status = 1;

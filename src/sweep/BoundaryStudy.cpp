@@ -125,8 +125,8 @@ std::vector<BoundaryCaseOutcome> SweepBoundaryRunner::run(const BoundarySpec& sp
     if (caseFinished(caseDir(i))) {
       const CaseResult r = readCaseSummary(caseDir(i));
       o.ok = true;
-      o.vy = spec.rate == RateRule::Paper ? r.vy : r.vySettled;
-      o.wallSeconds = r.wallSeconds;
+      o.vy = spec.rate == RateRule::Paper ? r.summary.vy : r.summary.vySettled;
+      o.wallSeconds = r.summary.wallSeconds;
     } else {
       if (!status) status = readSweepStatus(dir);
       for (const CaseAtAGlance& c : status->cases)

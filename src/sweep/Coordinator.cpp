@@ -265,7 +265,7 @@ class Coordinator {
       if (out.pending) out.summary += ", " + std::to_string(out.pending) + unfinished;
     }
     std::size_t warned = 0;
-    for (std::size_t c = 0; c < results_.size(); ++c) warned += counts(c) && !results_[c].warnings.empty();
+    for (std::size_t c = 0; c < results_.size(); ++c) warned += counts(c) && !results_[c].summary.warnings.empty();
     if (warned)
       out.summary += "; " + std::to_string(warned) + (warned > 1 ? " cases have" : " case has") +
                      " warnings (warnings column of results.csv, wiggle status)";
@@ -364,9 +364,9 @@ class Coordinator {
     if (o.ok) {
       results_[c] = o.result;
       results_[c].status = CaseStatus::Ok;
-      monitor_.event("ok " + name + where + ": vy = " + formatNumber(o.result.vy, 4) + ", " + formatDuration(o.wallSeconds) + ", " +
-                     formatNumber(o.result.nsPerParticleStep, 3) + " ns/particle-step");
-      for (const std::string& w : o.result.warnings) monitor_.event("warning " + name + ": " + w);
+      monitor_.event("ok " + name + where + ": vy = " + formatNumber(o.result.summary.vy, 4) + ", " + formatDuration(o.wallSeconds) + ", " +
+                     formatNumber(o.result.summary.nsPerParticleStep, 3) + " ns/particle-step");
+      for (const std::string& w : o.result.summary.warnings) monitor_.event("warning " + name + ": " + w);
       return;
     }
     results_[c] = CaseResult{};

@@ -75,7 +75,8 @@ std::string joinedWarnings(const std::vector<std::string>& warnings) {
 double sweepNsPerParticleStep(const std::vector<CaseResult>& results, double fallback) {
   std::vector<double> each;
   for (const CaseResult& r : results)
-    if (r.status == CaseStatus::Ok && r.particleSteps > 0.0) each.push_back(1e9 * r.runWallSeconds / r.particleSteps);
+    if (r.status == CaseStatus::Ok && r.particleSteps() > 0.0)
+      each.push_back(1e9 * r.summary.runWallSeconds / r.particleSteps());
   return each.empty() ? fallback : median(std::move(each));
 }
 
@@ -96,20 +97,13 @@ CaseResult readCaseSummary(const std::string& runDir) {
     return r;
   }
   r.status = CaseStatus::Ok;
-  r.vy = summary.vy;
-  r.vySlope = summary.vySlope;
-  r.vySettled = summary.vySettled;
-  r.tSettled = summary.tSettled;
-  r.wallSeconds = summary.wallSeconds;
-  r.nsPerParticleStep = summary.nsPerParticleStep;
-  r.runWallSeconds = summary.runWallSeconds;
-  r.grains = summary.grains;
-  r.steps = summary.steps;
-  const double particles = summary.particles ? static_cast<double>(summary.particles) : static_cast<double>(r.grains);
-  r.particleSteps = particles * static_cast<double>(r.steps);
-  r.stateHash = summary.stateHash;
-  r.warnings = summary.warnings;
+  r.summary = std::move(summary);
   return r;
+}
+
+double CaseResult::particleSteps() const {
+  const std::uint64_t particles = summary.particles ? summary.particles : summary.grains;
+  return static_cast<double>(particles) * static_cast<double>(summary.steps);
 }
 
 namespace {
@@ -132,15 +126,15 @@ const std::vector<ResultColumn>& resultColumnsBeforeParameters() {
        [](const ResultRow& r) { return r.runDir; }},
       {"status", "", statusWords.c_str(), [](const ResultRow& r) { return std::string(choiceName(r.result.status)); }},
       {"vy", "sqrt(g d)", "the rise rate by the run's rule (summary.json's vy)",
-       [](const ResultRow& r) { return okNumber(r, r.result.vy); }},
+       [](const ResultRow& r) { return okNumber(r, r.result.summary.vy); }},
       {"vy_slope", "sqrt(g d)", "the least-squares slope of y(t) over the same window",
-       [](const ResultRow& r) { return okNumber(r, r.result.vySlope); }},
+       [](const ResultRow& r) { return okNumber(r, r.result.summary.vySlope); }},
       {"vy_settled", "sqrt(g d)", "the rise rate by the paper's t_f rule",
-       [](const ResultRow& r) { return okNumber(r, r.result.vySettled); }},
+       [](const ResultRow& r) { return okNumber(r, r.result.summary.vySettled); }},
       {"t_settled", "sqrt(d/g)", "the t_f that rule chose",
-       [](const ResultRow& r) { return okNumber(r, r.result.tSettled); }},
+       [](const ResultRow& r) { return okNumber(r, r.result.summary.tSettled); }},
       {"wall_s", "s", "the case's wall time, bed included",
-       [](const ResultRow& r) { return okNumber(r, r.result.wallSeconds); }},
+       [](const ResultRow& r) { return okNumber(r, r.result.summary.wallSeconds); }},
   };
   return columns;
 }
@@ -148,15 +142,15 @@ const std::vector<ResultColumn>& resultColumnsBeforeParameters() {
 const std::vector<ResultColumn>& resultColumnsAfterParameters() {
   static const std::vector<ResultColumn> columns = {
       {"n_grains", "", "mobile grains in the bed",
-       [](const ResultRow& r) { return okText(r, std::to_string(r.result.grains)); }},
-      {"steps", "", "time steps run", [](const ResultRow& r) { return okText(r, std::to_string(r.result.steps)); }},
+       [](const ResultRow& r) { return okText(r, std::to_string(r.result.summary.grains)); }},
+      {"steps", "", "time steps run", [](const ResultRow& r) { return okText(r, std::to_string(r.result.summary.steps)); }},
       {"ns_per_particle_step", "ns", "stepping cost: wall time per particle per step",
-       [](const ResultRow& r) { return okNumber(r, r.result.nsPerParticleStep); }},
+       [](const ResultRow& r) { return okNumber(r, r.result.summary.nsPerParticleStep); }},
       {"state_hash", "", "the hash of the final state (summary.json's state_hash)",
-       [](const ResultRow& r) { return okText(r, r.result.stateHash); }},
+       [](const ResultRow& r) { return okText(r, r.result.summary.stateHash); }},
       {"error", "", "why the case failed or stopped, in one line", [](const ResultRow& r) { return r.result.error; }},
       {"warnings", "", "summary.json's warnings joined by \" | \"",
-       [](const ResultRow& r) { return okText(r, joinedWarnings(r.result.warnings)); }},
+       [](const ResultRow& r) { return okText(r, joinedWarnings(r.result.summary.warnings)); }},
   };
   return columns;
 }
@@ -277,8 +271,8 @@ void refreshSettledColumns(const std::string& sweepDir) {
                   " cells, the header " + std::to_string(header.size()));
     if (caseStatusNamed(row[status], path + ": row " + std::to_string(r + 1)) == CaseStatus::Ok) {
       const CaseResult result = readCaseSummary(sweepDir + "/" + row[runDir]);
-      row[vySettled] = formatNumber(result.vySettled, 10);
-      row[tSettled] = formatNumber(result.tSettled, 10);
+      row[vySettled] = formatNumber(result.summary.vySettled, 10);
+      row[tSettled] = formatNumber(result.summary.tSettled, 10);
     }
     appendRow(out, row);
   }

@@ -19,6 +19,7 @@
 
 #include "core/Choice.h"
 #include "io/SweepSpec.h"
+#include "scenario/run/RunSummary.h"
 
 namespace wiggle {
 
@@ -40,17 +41,17 @@ struct ChoiceNames<CaseStatus> {
 CaseStatus caseStatusNamed(std::string_view word, const std::string& where);
 
 // What a case's run left, read from its summary.json (numbers) or its failure (error).
+// A case as the sweep sees it: its status, and when ok the run's outcome as its summary.json holds
+// it (one struct, the summary's: results.csv's columns, the task protocol and `wiggle status` all
+// read it, none copies it field by field).
 struct CaseResult {
   CaseStatus status = CaseStatus::Pending;
-  double vy = 0.0, vySlope = 0.0, wallSeconds = 0.0;
-  double vySettled = 0.0, tSettled = 0.0;  // the paper's t_f rule (summary.json)
-  double nsPerParticleStep = 0.0;
-  double runWallSeconds = 0.0;      // stepping time (for the ETA)
-  double particleSteps = 0.0;       // particles x steps of the run phase (for the ETA)
-  std::uint64_t grains = 0, steps = 0;
-  std::string stateHash;
-  std::string error;                // one line; empty unless failed (or interrupted)
-  std::vector<std::string> warnings;  // summary.json's warnings (ok cases)
+  std::string error;   // one line; empty unless failed (or interrupted)
+  RunSummary summary;  // summary.json's (ok cases)
+
+  // Particles x steps of the run phase (for the ETA); the grains' count for a summary written
+  // before it recorded its particles.
+  double particleSteps() const;
 };
 
 // Whether the case in runDir is finished: its summary.json reads whole and says "ok". The one rule

@@ -84,7 +84,7 @@ SweepStatus readSweepStatus(const std::string& dir) {
     }
     if (c.status == CaseStatus::Ok) {
       if (warningsIt != header.end() && !row[warningsIt - header.begin()].empty())
-        c.warnings = readCaseSummary(caseDir).warnings;
+        c.warnings = readCaseSummary(caseDir).summary.warnings;
       c.vy = number(row[vyAt]);
       c.wallSeconds = number(row[wallAt]);
       finishedWall.push_back(c.wallSeconds);
@@ -162,8 +162,8 @@ std::optional<RunDirStatus> readRunDirStatus(const std::string& dir) {
     // summary.json is a later resume (an extension) that stopped.
     r.state = RunDirState::Done;
     const CaseResult summary = readCaseSummary(dir);
-    r.vy = summary.vy;
-    r.warnings = summary.warnings;
+    r.vy = summary.summary.vy;
+    r.warnings = summary.summary.warnings;
     return r;
   } else {
     r.state = RunDirState::Stopped;

@@ -55,19 +55,8 @@ std::string TaskOutcome::toJson() const {
   j["task_wall_s"] = wallSeconds;
   j["pid"] = pid;
   j["status"] = choiceName(result.status);
-  j["vy"] = result.vy;
-  j["vy_slope"] = result.vySlope;
-  j["vy_settled"] = result.vySettled;
-  j["t_settled"] = result.tSettled;
-  j["wall_s"] = result.wallSeconds;
-  j["ns_per_particle_step"] = result.nsPerParticleStep;
-  j["run_wall_s"] = result.runWallSeconds;
-  j["particle_steps"] = result.particleSteps;
-  j["n_grains"] = result.grains;
-  j["steps"] = result.steps;
-  j["state_hash"] = result.stateHash;
+  j["summary"] = wiggle::toJson(result.summary);
   j["result_error"] = result.error;
-  j["warnings"] = result.warnings;
   return j.dump();
 }
 
@@ -80,19 +69,8 @@ TaskOutcome TaskOutcome::fromJson(const std::string& text) {
   o.wallSeconds = j.at("task_wall_s").get<double>();
   o.pid = j.at("pid").get<int>();
   o.result.status = caseStatusNamed(j.at("status").get<std::string>(), "a task's outcome");
-  o.result.vy = j.at("vy").get<double>();
-  o.result.vySlope = j.at("vy_slope").get<double>();
-  o.result.vySettled = j.at("vy_settled").get<double>();
-  o.result.tSettled = j.at("t_settled").get<double>();
-  o.result.wallSeconds = j.at("wall_s").get<double>();
-  o.result.nsPerParticleStep = j.at("ns_per_particle_step").get<double>();
-  o.result.runWallSeconds = j.at("run_wall_s").get<double>();
-  o.result.particleSteps = j.at("particle_steps").get<double>();
-  o.result.grains = j.at("n_grains").get<std::uint64_t>();
-  o.result.steps = j.at("steps").get<std::uint64_t>();
-  o.result.stateHash = j.at("state_hash").get<std::string>();
+  o.result.summary = summaryFromJson(j.at("summary"));
   o.result.error = j.at("result_error").get<std::string>();
-  o.result.warnings = j.at("warnings").get<std::vector<std::string>>();
   return o;
 }
 
@@ -279,7 +257,7 @@ void runSweepCase(const std::string& configPath, const std::string& runDir, int 
   options.progressLine = false;
   const RunOutcome outcome = runExperiment(prepareCase(config), options);
   std::printf("%s\n", outcome.resultLine().c_str());
-  for (const std::string& w : outcome.warnings) std::fprintf(stderr, "wiggle: warning: %s\n", w.c_str());
+  for (const std::string& w : outcome.summary.warnings) std::fprintf(stderr, "wiggle: warning: %s\n", w.c_str());
 }
 
 }  // namespace wiggle

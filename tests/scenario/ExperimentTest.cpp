@@ -70,7 +70,7 @@ TEST(Experiment, ResumedRunIsBitwiseIdenticalToAnUninterruptedOne) {
   fs::remove_all(config.bed.cacheDir);
   const std::string straight = scratch("straight"), interrupted = scratch("interrupted");
   const RunOutcome reference = runExperiment(prepareCase(config), quiet(straight));
-  ASSERT_EQ(reference.status, RunStatus::Ok);
+  ASSERT_EQ(reference.summary.status, RunStatus::Ok);
   ASSERT_NE(readFile(straight + "/log.txt").find("bed made"), std::string::npos);
   const std::optional<RunProgress> done = readRunProgress(straight);  // what `wiggle status` reads
   ASSERT_TRUE(done.has_value());
@@ -81,12 +81,12 @@ TEST(Experiment, ResumedRunIsBitwiseIdenticalToAnUninterruptedOne) {
   RunOptions stop = quiet(interrupted);
   stop.stopAfterSteps = 1700;  // mid-period, between samples and dump frames
   stop.checkpointAtStop = true;
-  ASSERT_EQ(runExperiment(prepareCase(config), stop).status, RunStatus::Stopped);
+  ASSERT_EQ(runExperiment(prepareCase(config), stop).summary.status, RunStatus::Stopped);
   // Work done after the checkpoint and lost in a crash: the resumed run must not depend on it.
   RunOptions resume = quiet(interrupted);
   resume.resume = true;
   const RunOutcome resumed = runExperiment(prepareCase(config), resume);
-  EXPECT_EQ(resumed.stateHash, reference.stateHash);
+  EXPECT_EQ(resumed.summary.stateHash, reference.summary.stateHash);
   ASSERT_NE(readFile(interrupted + "/log.txt").find("bed loaded"), std::string::npos);
   for (const char* file : {"trajectory.csv", "phase_rates.csv", "fields.csv", "dumps/dump.lammpstrj", "model.json"})
     EXPECT_EQ(readFile(interrupted + "/" + file), readFile(straight + "/" + file)) << file;
@@ -99,7 +99,7 @@ TEST(Experiment, ResumedRunIsBitwiseIdenticalToAnUninterruptedOne) {
   const auto summary = nlohmann::json::parse(readFile(straight + "/summary.json"));
   EXPECT_EQ(summary["status"], "ok");
   EXPECT_EQ(summary["steps"], 4000);
-  EXPECT_EQ(summary["state_hash"], reference.stateHash);
+  EXPECT_EQ(summary["state_hash"], reference.summary.stateHash);
   EXPECT_GT(summary["n_grains"].get<int>(), 100);
   // The file holds exactly the schema's keys, and reads back into the struct that wrote it.
   std::vector<std::string> keys, schema;
@@ -125,12 +125,12 @@ TEST(Experiment, FinishedRunExtendedIsTheLongerRunFromTheStart) {
   longer.run.duration = 0.8;
   const std::string straight = scratch("long-straight"), extended = scratch("extended");
   const RunOutcome reference = runExperiment(prepareCase(longer), quiet(straight));
-  ASSERT_EQ(runExperiment(prepareCase(shorter), quiet(extended)).status, RunStatus::Ok);
+  ASSERT_EQ(runExperiment(prepareCase(shorter), quiet(extended)).summary.status, RunStatus::Ok);
   RunOptions resume = quiet(extended);
   resume.resume = true;
   const RunOutcome grown = runExperiment(prepareCase(longer), resume);
-  EXPECT_EQ(grown.stateHash, reference.stateHash);
-  EXPECT_EQ(grown.vy, reference.vy);
+  EXPECT_EQ(grown.summary.stateHash, reference.summary.stateHash);
+  EXPECT_EQ(grown.summary.vy, reference.summary.vy);
   EXPECT_EQ(readFile(extended + "/trajectory.csv"), readFile(straight + "/trajectory.csv"));
   const auto summary = nlohmann::json::parse(readFile(extended + "/summary.json"));
   EXPECT_NEAR(summary["averaged_from_t"].get<double>(), 0.04, 1e-9);
@@ -164,7 +164,7 @@ TEST(Experiment, ThreadCountDoesNotChangeTheResult) {
   three.threads = 3;
   const RunOutcome a = runExperiment(prepareCase(config), one);
   const RunOutcome b = runExperiment(prepareCase(config), three);
-  EXPECT_EQ(a.stateHash, b.stateHash);
+  EXPECT_EQ(a.summary.stateHash, b.summary.stateHash);
   EXPECT_EQ(readFile(one.outDir + "/fields.csv"), readFile(three.outDir + "/fields.csv"));
 }
 
@@ -179,7 +179,7 @@ TEST(Experiment, ARunRecordsItsWallAndCpuSpeedForTheEstimates) {
   config.run.duration = 1.2;  // 12,000 steps
   RunOptions options = quiet(root + "/run");
   options.threads = 1;
-  ASSERT_EQ(runExperiment(prepareCase(config), options).status, RunStatus::Ok);
+  ASSERT_EQ(runExperiment(prepareCase(config), options).summary.status, RunStatus::Ok);
   const nlohmann::json summary = nlohmann::json::parse(readFile(options.outDir + "/summary.json"));
   std::ifstream log(config.bed.cacheDir + "/speed.log");
   std::vector<std::vector<std::string>> lines;
@@ -228,7 +228,7 @@ TEST(Experiment, ARunningRunsDirectoryIsRefusedToAnother) {
     EXPECT_NE(refused.find("another wiggle process is running the case in " + dir), std::string::npos) << refused;
     EXPECT_FALSE(fs::exists(dir + "/config.toml"));
   }
-  EXPECT_EQ(runExperiment(prepareCase(config), resume).status, RunStatus::Ok);       // released: it runs
+  EXPECT_EQ(runExperiment(prepareCase(config), resume).summary.status, RunStatus::Ok);       // released: it runs
   EXPECT_EQ(FileLock::holders(runLockPath(dir)), FileLock::Holders::None);  // and lets go when it ends
 }
 
@@ -272,7 +272,7 @@ TEST(Experiment, CorruptCheckpointFallsBackToThePreviousOne) {
   writeFileAtomically(dir + "/checkpoint.bin", bytes);
   RunOptions resume = quiet(dir);
   resume.resume = true;
-  EXPECT_EQ(runExperiment(prepareCase(config), resume).stateHash, expected.stateHash);
+  EXPECT_EQ(runExperiment(prepareCase(config), resume).summary.stateHash, expected.summary.stateHash);
   EXPECT_NE(readFile(dir + "/log.txt").find("checksum"), std::string::npos);
 }
 
@@ -282,11 +282,11 @@ TEST(Experiment, ResumingAFinishedRunRewritesTheSameSummary) {
   const RunConfig config = tinyConfig(scratch(""));
   const std::string dir = scratch("finished-resumed");
   fs::remove_all(dir);
-  ASSERT_EQ(runExperiment(prepareCase(config), quiet(dir)).status, RunStatus::Ok);
+  ASSERT_EQ(runExperiment(prepareCase(config), quiet(dir)).summary.status, RunStatus::Ok);
   const auto before = nlohmann::json::parse(readFile(dir + "/summary.json"));
   RunOptions resume = quiet(dir);
   resume.resume = true;
-  ASSERT_EQ(runExperiment(prepareCase(config), resume).status, RunStatus::Ok);
+  ASSERT_EQ(runExperiment(prepareCase(config), resume).summary.status, RunStatus::Ok);
   const auto after = nlohmann::json::parse(readFile(dir + "/summary.json"));
   EXPECT_GT(before["contacts"].get<int>(), 0);
   for (const char* key : {"contacts", "neighbour_pairs", "intruder_pairs", "state_hash", "vy", "warnings"})
@@ -298,7 +298,7 @@ TEST(Experiment, NoDumpsLeaveNoDumpFile) {
   config.run.dumpInterval = 0;
   const std::string dir = scratch("no-dumps");
   fs::remove_all(dir);
-  ASSERT_EQ(runExperiment(prepareCase(config), quiet(dir)).status, RunStatus::Ok);
+  ASSERT_EQ(runExperiment(prepareCase(config), quiet(dir)).summary.status, RunStatus::Ok);
   EXPECT_FALSE(fs::exists(dir + "/dumps/dump.lammpstrj"));
   EXPECT_FALSE(fs::exists(dir + "/dumps"));
 }
@@ -331,7 +331,7 @@ TEST(Experiment, UnreadableCheckpointsRestartFromTheBedWithAWarning) {
     for (const auto& w : warnings) n += std::string(w).find("restarted from the bed") != std::string::npos;
     return n;
   };
-  EXPECT_EQ(saysRestarted(outcome.warnings), 1);
+  EXPECT_EQ(saysRestarted(outcome.summary.warnings), 1);
   const auto summary = nlohmann::json::parse(readFile(dir + "/summary.json"));
   EXPECT_EQ(saysRestarted(summary["warnings"].get<std::vector<std::string>>()), 1) << summary["warnings"];
   // A new run in a fresh directory has no such history.
@@ -512,7 +512,7 @@ TEST(Experiment, PinnedBedServesAnotherFrictionAndRefusesAnotherGeometry) {
   EXPECT_EQ(pinned.key, made.key);
   EXPECT_NE(pinned.note.find("made for other parameters"), std::string::npos) << pinned.note;
   const RunOutcome run = runExperiment(prepareCase(other), quiet(root + "/pinned"));
-  EXPECT_NE(run.stateHash, reference.stateHash);  // the friction took effect
+  EXPECT_NE(run.summary.stateHash, reference.summary.stateHash);  // the friction took effect
   EXPECT_FALSE(fs::exists(root + "/empty-cache"));  // no bed was made
   const auto summary = nlohmann::json::parse(readFile(root + "/pinned/summary.json"));
   EXPECT_EQ(summary["bed_key"], made.key);
@@ -561,20 +561,20 @@ TEST(Experiment, ExportedBedReadBackRunsAsTheBedWithoutHistory) {
   RunConfig own = tinyConfig(scratch(""));  // the bed shared with the other tests
   own.run.keepBedHistory = false;
   const RunOutcome reference = runExperiment(prepareCase(own), quiet(root + "/own"));
-  ASSERT_EQ(reference.status, RunStatus::Ok);
+  ASSERT_EQ(reference.summary.status, RunStatus::Ok);
   exportLammps(prepareCase(own), root + "/deck", false);
   // The case beside the deck, so that `wiggle rate` reads the LAMMPS run's trajectory (here the
   // wiggle run's own stands in for it) by wiggle's rules.
   EXPECT_EQ(readFile(root + "/deck/config.toml"), toToml(own));
   fs::copy_file(root + "/own/trajectory.csv", root + "/deck/trajectory.csv");
-  EXPECT_NEAR(remeasureRun(root + "/deck", RemeasureRequest{}).rate.vy, reference.vy, 1e-8);
+  EXPECT_NEAR(remeasureRun(root + "/deck", RemeasureRequest{}).rate.vy, reference.summary.vy, 1e-8);
 
   RunConfig imported = own;
   imported.run.keepBedHistory = true;  // there is none to keep
   imported.bed.file = root + "/deck/data.lammps";
   imported.bed.cacheDir = root + "/empty-cache";  // nothing to be found or made there
   const RunOutcome run = runExperiment(prepareCase(imported), quiet(root + "/imported"));
-  EXPECT_EQ(run.stateHash, reference.stateHash);
+  EXPECT_EQ(run.summary.stateHash, reference.summary.stateHash);
   EXPECT_EQ(readFile(root + "/imported/trajectory.csv"), readFile(root + "/own/trajectory.csv"));
   EXPECT_FALSE(fs::exists(root + "/empty-cache"));  // no bed was made
   EXPECT_NE(readFile(root + "/imported/log.txt").find("every contact starts with zero shear"), std::string::npos);

@@ -29,8 +29,9 @@ TEST(ResultsTable, ThePaceIsTheMedianCaseNotThePausedOne) {
   auto ok = [](double wallSeconds, double particleSteps) {
     CaseResult r;
     r.status = CaseStatus::Ok;
-    r.runWallSeconds = wallSeconds;
-    r.particleSteps = particleSteps;
+    r.summary.runWallSeconds = wallSeconds;
+    r.summary.particles = 1;
+    r.summary.steps = static_cast<std::uint64_t>(particleSteps);
     return r;
   };
   CaseResult pending;
@@ -52,15 +53,15 @@ TEST(ResultsTable, RowsForPendingOkAndFailedCases) {
       parseSweepSpec("[[case]]\nname = \"deep\"\nintruder.y0 = 20\n[grid.drive]\nperiod = [1, 2, 3]\n", "t.toml");
   std::vector<CaseResult> results(3);
   results[0].status = CaseStatus::Ok;
-  results[0].vy = 0.125;
-  results[0].vySlope = -0.5;
-  results[0].vySettled = 0.25;
-  results[0].tSettled = 60;
-  results[0].wallSeconds = 3;
-  results[0].grains = 100;
-  results[0].steps = 2000;
-  results[0].stateHash = "abc";
-  results[0].warnings = {"one, with a comma", "two"};
+  results[0].summary.vy = 0.125;
+  results[0].summary.vySlope = -0.5;
+  results[0].summary.vySettled = 0.25;
+  results[0].summary.tSettled = 60;
+  results[0].summary.wallSeconds = 3;
+  results[0].summary.grains = 100;
+  results[0].summary.steps = 2000;
+  results[0].summary.stateHash = "abc";
+  results[0].summary.warnings = {"one, with a comma", "two"};
   results[1].status = CaseStatus::Failed;
   results[1].error = "box.width = 5 is too narrow, really";
   const std::string csv = resultsCsv(spec, {"cases/a", "cases/b", "cases/c"}, results);

@@ -87,8 +87,8 @@ TEST_F(TaskRunnerTest, ACaseThatEndsWellIsReadFromItsSummary) {
   const TaskOutcome o = runCase(1, "ok", runner);
   EXPECT_TRUE(o.ok) << o.error;
   EXPECT_EQ(o.result.status, CaseStatus::Ok);
-  EXPECT_EQ(o.result.vy, 0.5);
-  EXPECT_EQ(o.result.stateHash, "0123456789abcdef");
+  EXPECT_EQ(o.result.summary.vy, 0.5);
+  EXPECT_EQ(o.result.summary.stateHash, "0123456789abcdef");
   EXPECT_EQ(o.task, (SweepTask{SweepTask::Kind::Case, 1}));
   // The child was given the case's own config and directory, through the one internal entry.
   const std::string dir = (root_ / "cases" / spec_.cases[1].name).string();

@@ -377,28 +377,19 @@ RunOutcome writeRunOutputs(const Case& run, const std::string& dir, const World&
            ", vy_settled = " + formatNumber(settled.vy) + " (t_settled = " + formatNumber(settled.tSettled) + "), " +
            formatNumber(summary.nsPerParticleStep) + " ns/particle-step, state " + world.stateHash());
   for (const std::string& w : summary.warnings) log.line("warning: " + w);
-  RunOutcome outcome;
-  outcome.status = RunStatus::Ok;
-  outcome.vy = rate.vy;
-  outcome.vySlope = rate.slope;
-  outcome.vySettled = settled.vy;
-  outcome.tSettled = settled.tSettled;
-  outcome.settled = settled.settled;
-  outcome.warnings = summary.warnings;
-  outcome.stateHash = world.stateHash();
-  outcome.summaryPath = dir + "/summary.json";
-  return outcome;
+  return RunOutcome{summary, dir + "/summary.json"};
 }
 
 }  // namespace
 
 std::string RunOutcome::resultLine() const {
   char text[160];
-  std::snprintf(text, sizeof text, "V_y = %.6g (least-squares slope %.6g) d per sqrt(d/g)", vy, vySlope);
+  std::snprintf(text, sizeof text, "V_y = %.6g (least-squares slope %.6g) d per sqrt(d/g)", summary.vy,
+                summary.vySlope);
   std::string line = text;
-  if (settled) {
-    std::snprintf(text, sizeof text, "; settled at t = %.6g: V_y to then (the paper's t_f rule) = %.6g", tSettled,
-                  vySettled);
+  if (summary.settled) {
+    std::snprintf(text, sizeof text, "; settled at t = %.6g: V_y to then (the paper's t_f rule) = %.6g",
+                  summary.tSettled, summary.vySettled);
     line += text;
   }
   return line + "; summary in " + summaryPath;
@@ -535,7 +526,7 @@ RunOutcome runExperiment(const Case& run, const RunOptions& options) {
   stepping.steps = world.stepCount() - stepAtStart;
   if (!finished) {
     RunOutcome stopped;
-    stopped.status = RunStatus::Stopped;
+    stopped.summary.status = RunStatus::Stopped;
     return stopped;
   }
   writeCheckpoint(dir, configToml, world, state, fields);

@@ -27,13 +27,10 @@ struct RunOptions {
   bool checkpointAtStop = false;  // with stopAfterSteps: write a checkpoint at that step first
 };
 
+// What a run ends with: the summary it wrote (a stopped run: status Stopped and nothing else), read
+// as it is by the command's result line, and by a sweep from the file (sweep/ResultsTable.h).
 struct RunOutcome {
-  RunStatus status = RunStatus::Ok;
-  double vy = 0.0, vySlope = 0.0;
-  double vySettled = 0.0, tSettled = 0.0;  // the paper's t_f rule (analysis/RiseRate.h)
-  bool settled = false;
-  std::vector<std::string> warnings;  // what makes the result less than it seems (also in summary.json)
-  std::string stateHash;
+  RunSummary summary;
   std::string summaryPath;
 
   // "V_y = ... (least-squares slope ...) d per sqrt(d/g)[; settled at t = ...: ...]; summary in ...":
