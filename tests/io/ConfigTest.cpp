@@ -361,7 +361,10 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"[bed]\ncavity = \"dug\"\n", "bed.cavity = \"dug\": must be one of poured, carved"},
         BadCase{"[bed]\npour_fraction = 0\n", "bed.pour_fraction = 0: must be > 0 and <= 0.6"},
         BadCase{"[bed]\npour_fraction = 0.61\n", "bed.pour_fraction = 0.61: must be > 0 and <= 0.6"},
-        BadCase{"[bed]\npour_speed = -1\n", "bed.pour_speed = -1: must be >= 0"}));
+        BadCase{"[bed]\npour_speed = -1\n", "bed.pour_speed = -1: must be >= 0"}),
+    // Named by position: the default name would be the struct's bytes (pointers, different in every
+    // build), which CTest then uses as the test's name.
+    [](const ::testing::TestParamInfo<BadCase>& info) { return "case_" + std::to_string(info.index); });
 
 TEST(Config, BoundaryValuesThatAreAllowed) {
   EXPECT_NO_THROW(parseRunConfig("[drive]\namplitude = 0\n", "c.toml"));
