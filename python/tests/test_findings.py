@@ -97,6 +97,11 @@ class VerdictTest(unittest.TestCase):
         self.assertEqual(finding_verdict(SIGMA, []), "not measured")
         self.assertEqual(finding_verdict(SIGMA, [None, None]), "not measured")
 
+    def test_every_verdict_is_one_of_the_named_five(self):
+        cases = [[], [compare("a", [0.3], None, +1)], [compare("a", [0.3], None, -1)], [compare("a", [0.0], None, +1)]]
+        said = {finding_verdict(SIGMA, c) for c in cases} | {finding_verdict(SIGMA, [], "why")}
+        self.assertEqual(said, set(findings.VERDICTS))
+
     def test_missing_cells_are_left_out_of_a_verdict(self):
         self.assertEqual(finding_verdict(SIGMA, [None, compare("rises", [0.3], None, +1)]), "reproduced")
 

@@ -83,6 +83,9 @@ def z_from_zero(values, sig):
     return judged(Comparison(None, values, [], 1), sig)[1]
 
 
+VERDICTS = ("reproduced", "not reproduced", "not resolved", "not judged", "not measured")
+
+
 def verdict(outcomes):
     """A finding's verdict from its comparisons' outcomes."""
     if not outcomes:

@@ -1001,16 +1001,12 @@ def readme_answer(spec):
         else:
             differ.append(f"the {name} rises from {bracket_text(lo, hi, cells)} (paper: "
                           f"{paper_observed(shape)})")
-    verdicts = []
-    for _, _, by_scale in paper_findings():
-        sig, comparisons, *_ = by_scale.get("paper's clock", (0.0, []))
-        kinds = [findings.judged(c, sig)[2] for c in comparisons if c]
-        verdicts.append(findings.verdict(kinds) if kinds else "not judged")
-    counts = {v: verdicts.count(v) for v in ("reproduced", "not reproduced", "not resolved", "not judged")}
+    # the verdicts of docs/FINDINGS.md's table, by the same rule
+    verdicts = [findings.finding_verdict(*by_scale.get("paper's clock", (0.0, []))) for _, _, by_scale in paper_findings()]
     text = (f"Partly. By the paper's clock (t = 1000) at its depth, Table 1's T_rising is in the paper's range for "
             f"{len(agree)} of 5 shapes (" + ", ".join(agree) + "); " + " and ".join(differ) + ", causes not known. "
-            f"Of the seven findings by that clock: {counts['reproduced']} reproduced, {counts['not reproduced']} not "
-            f"reproduced, {counts['not resolved']} not resolved, {counts['not judged']} not judged. In full: "
+            "Of the seven findings by that clock: " + ", ".join(f"{verdicts.count(v)} {v}" for v in findings.VERDICTS)
+            + ". In full: "
             "[docs/VALIDATION.md](docs/VALIDATION.md#does-wiggle-reproduce-the-paper).")
     return textwrap.wrap(text, 104, break_on_hyphens=False, break_long_words=False), spec["sources"]
 
