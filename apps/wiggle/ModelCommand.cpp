@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -17,6 +16,7 @@
 #include "core/Error.h"
 #include "io/AtomicFile.h"
 #include "model/CavityModel.h"
+#include "model/PaperTable1.h"
 #include "scenario/geometry/Shape.h"
 
 namespace wiggle::cli {
@@ -41,22 +41,6 @@ ClumpOptions clumpOptionsOf(const ModelOptions& opt) {
   IntruderDef def;
   def.surface = opt.surface;
   return clumpOptionsFor(def);
-}
-
-// The paper's Table 1 as printed, shown beside the computed values only: its model columns (l and
-// T_rise, truncated, not rounded) and the T_rising its simulations observed at A = 5. The model is a
-// prediction; what wiggle's own simulations give is in docs/VALIDATION.md.
-struct PaperRow {
-  double l, tRise;
-  const char* observed;
-};
-const std::map<std::string, PaperRow>& paperTable() {
-  static const std::map<std::string, PaperRow> rows = {{"disk", {3.50, 2.82, "2.5-3.0"}},
-                                                       {"square", {6.50, 3.74, "3.0-4.0"}},
-                                                       {"rect_narrow", {9.50, 4.47, "3.0-4.0"}},
-                                                       {"rect_wide", {4.50, 3.16, "2.0-3.0"}},
-                                                       {"triangle", {8.22, 4.17, "4.0-5.0"}}};
-  return rows;
 }
 
 Outline parseVertices(const std::string& text) {
@@ -114,10 +98,10 @@ void printGeometryTable(const std::vector<Row>& rows, const ModelOptions& opt) {
                   r.side.tRise, r.geometry.h, r.geometry.tMax);
     return;
   }
-  // The paper's values stand beside unrotated paper shapes only.
+  // The paper's Table 1 (model/PaperTable1.h) stands beside unrotated paper shapes only: shown, never
+  // used to compute. The model is a prediction; what wiggle's own simulations give is in docs/VALIDATION.md.
   bool showPaper = false;
-  for (const Row& r : rows)
-    showPaper = showPaper || (opt.angle == 0.0 && r.wholeShape && paperTable().count(r.shapeName));
+  for (const Row& r : rows) showPaper = showPaper || (opt.angle == 0.0 && r.wholeShape && paperTable1Row(r.shapeName));
   std::printf("The cavity model's prediction (paper section 3.5) from each outline, d = 1, g = 1%s\n",
               opt.angle != 0.0 ? (", rotated by " + formatted("%g", opt.angle) + " deg").c_str()
                                : "");
@@ -127,9 +111,12 @@ void printGeometryTable(const std::vector<Row>& rows, const ModelOptions& opt) {
   for (const Row& r : rows) {
     std::printf("%-18s %8.3f %8.3f %8.3f %8.3f %8.3f", r.label.c_str(), r.side.l, r.side.lPrime,
                 r.side.tRise, r.geometry.h, r.geometry.tMax);
-    const auto paper = paperTable().find(r.shapeName);
-    if (showPaper && r.wholeShape && paper != paperTable().end())
-      std::printf("   %8.2f %8.2f %9s", paper->second.l, paper->second.tRise, paper->second.observed);
+    const PaperTable1Row* paper = paperTable1Row(r.shapeName);
+    if (showPaper && r.wholeShape && paper) {
+      // the observed range as the paper prints it: "2.5-3.0"
+      const std::string observed = formatted("%.1f", paper->observedLow) + "-" + formatted("%.1f", paper->observedHigh);
+      std::printf("   %8.2f %8.2f %9s", paper->l, paper->tRise, observed.c_str());
+    }
     std::printf("\n");
   }
   if (showPaper)

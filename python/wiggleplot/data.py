@@ -20,13 +20,14 @@ def _pandas():
 
 # The unit of each column the files hold (docs/OUTPUT-FORMATS.md), put on every DataFrame as
 # df.attrs["units"] (column -> unit; columns without a unit, like counts and names, are left out).
+# results.csv's own columns carry the units of docs/results-schema.json (readers.results_columns).
 LENGTH, TIME, SPEED, FORCE, STRESS = "d", "sqrt(d/g)", "sqrt(g d)", "rho d^3 g", "rho g d^2"
 UNITS = {
     "t": TIME, "x": LENGTH, "y": LENGTH, "vx": SPEED, "vy": SPEED, "fy": FORCE,
     "phase_center": "10 phi / pi", "vy_mean": SPEED,
     "phase": "10 phi / pi", "phi": "1 (area fraction)", "sxx": STRESS, "sxy": STRESS, "syy": STRESS,
     "pressure": STRESS,
-    "vy_slope": SPEED, "vy_settled": SPEED, "t_settled": TIME, "wall_s": "s", "ns_per_particle_step": "ns",
+    **{c["name"]: c["unit"] for c in readers.results_columns() if c["unit"]},
     "drive.amplitude": LENGTH, "drive.period": TIME, "contact.mu": "1", "intruder.y0": LENGTH,
     "box.width": LENGTH, "box.bed_height": LENGTH, "run.duration": TIME, "run.dt": TIME,
 }

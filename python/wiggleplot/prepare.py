@@ -6,14 +6,14 @@ import math
 import numpy as np
 from matplotlib.path import Path
 
+from wiggleplot import readers
+
 # Column names of results.csv (config keys) that the sweep figures know by meaning.
 SHAPE, AMPLITUDE, PERIOD, MU, SEED = (
     "intruder.shape", "drive.amplitude", "drive.period", "contact.mu", "box.seed")
 # Columns of results.csv that are outcomes or bookkeeping, never parameters: docs/results-schema.json's
-# (python/tests/test_data.py keeps them equal), and case_label, a [[case]]'s name, which the figures
-# label by already.
-NON_PARAMETERS = {"case", "run_dir", "status", "vy", "vy_slope", "vy_settled", "t_settled", "wall_s", "n_grains",
-                  "steps", "ns_per_particle_step", "state_hash", "error", "case_label", "warnings"}
+# own columns, and case_label, a [[case]]'s name, which the figures label by already.
+NON_PARAMETERS = {c["name"] for c in readers.results_columns()} | {"case_label"}
 
 
 # --- one run ------------------------------------------------------------------------------------

@@ -2,6 +2,7 @@
 dicts; nothing here computes physics. Missing optional files are the caller's business: readers
 raise FileNotFoundError, and the figure code turns that into a note."""
 import csv
+import functools
 import itertools
 import json
 import os
@@ -53,6 +54,17 @@ def _require(table, columns, path):
 def read_json(path):
     with open(path) as f:
         return json.load(f)
+
+
+@functools.lru_cache(maxsize=None)
+def results_columns():
+    """results.csv's own columns, those before the parameters then those after, as dicts of name,
+    unit and meaning: docs/results-schema.json, which a C++ test keeps equal to the table that
+    writes the file (src/sweep/ResultsTable.cpp). The package holds it as results-schema.json: in
+    the source tree a link to docs/, installed a copy (cmake --install, pip: the package's data)."""
+    here = os.path.dirname(os.path.abspath(__file__))
+    schema = read_json(os.path.join(here, "results-schema.json"))
+    return tuple(schema["before_parameters"] + schema["after_parameters"])
 
 
 def read_config(run_dir):

@@ -16,7 +16,8 @@ execute_process(COMMAND "${PREFIX}/bin/wiggle" model --shape disk OUTPUT_VARIABL
 if(NOT status EQUAL 0 OR NOT model MATCHES "disk")
   message(FATAL_ERROR "installed wiggle model --shape disk: status ${status}")
 endif()
-foreach(file share/wiggle/python/wiggleplot/__main__.py share/wiggle/configs/small.toml
+foreach(file share/wiggle/python/wiggleplot/__main__.py share/wiggle/python/wiggleplot/results-schema.json
+             share/wiggle/configs/small.toml
              share/wiggle/examples/figures.ipynb share/wiggle/results/paper_depth/fig5/results.csv
              share/wiggle/configs/paper.toml share/doc/wiggle/README.md share/doc/wiggle/CONFIG.md
              share/bash-completion/completions/wiggle share/man/man1/wiggle.1)

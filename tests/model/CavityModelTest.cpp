@@ -14,6 +14,7 @@
 #include <string>
 
 #include "core/Error.h"
+#include "model/PaperTable1.h"
 #include "scenario/geometry/Shape.h"
 
 namespace wiggle {
@@ -23,22 +24,20 @@ using Pts = std::vector<std::array<double, 2>>;
 constexpr double kPi = std::numbers::pi;
 
 TEST(CavityModel, ReproducesPaperTable1FromGeometry) {
-  // The paper's Table 1 (l, T_rise), printed truncated to two decimals.
-  struct Expected {
-    ShapeName shape;
-    double l, tRise;
-  };
-  const Expected table[] = {{ShapeName::Disk, 3.50, 2.82},        {ShapeName::Square, 6.50, 3.74},
-                            {ShapeName::RectNarrow, 9.50, 4.47}, {ShapeName::RectWide, 4.50, 3.16},
-                            {ShapeName::Triangle, 8.22, 4.17}};
-  for (const Expected& e : table) {
-    const CavityGeometry g = cavityGeometry(makeShape(e.shape).outline);
-    EXPECT_FALSE(g.sidesDiffer()) << choiceName(e.shape);
-    EXPECT_NEAR(g.left.l, e.l, 0.01) << choiceName(e.shape);
-    EXPECT_NEAR(g.left.tRise, e.tRise, 0.01) << choiceName(e.shape);
+  // The paper's Table 1 (l, T_rise; model/PaperTable1.h), printed truncated to two decimals: one row
+  // for each of the paper's shapes.
+  ASSERT_EQ(paperTable1().size(), paperShapes().size());
+  for (const ShapeName shape : paperShapes()) {
+    const PaperTable1Row* e = paperTable1Row(choiceName(shape));
+    ASSERT_NE(e, nullptr) << choiceName(shape);
+    const CavityGeometry g = cavityGeometry(makeShape(shape).outline);
+    EXPECT_FALSE(g.sidesDiffer()) << e->shape;
+    EXPECT_NEAR(g.left.l, e->l, 0.01) << e->shape;
+    EXPECT_NEAR(g.left.tRise, e->tRise, 0.01) << e->shape;
     // Truncation, not rounding: the computed value is at or above the printed one.
-    EXPECT_GE(g.left.tRise, e.tRise) << choiceName(e.shape);
-    EXPECT_LT(g.left.tRise - e.tRise, 0.01) << choiceName(e.shape);
+    EXPECT_GE(g.left.tRise, e->tRise) << e->shape;
+    EXPECT_LT(g.left.tRise - e->tRise, 0.01) << e->shape;
+    EXPECT_LT(e->observedLow, e->observedHigh) << e->shape;
   }
 }
 

@@ -41,10 +41,23 @@ ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)
 sys.path.insert(0, os.path.join(ROOT, "python"))
 from wiggleplot import prepare  # noqa: E402  (t_rising: the paper's reading of a crossing)
 import marked  # noqa: E402  (the generated blocks in the documents)
+from findings import RESOLVED, mean, stats  # noqa: E402  (the findings' statistics)
+import findings  # noqa: E402
 
 SHAPES = ["disk", "square", "rect_narrow", "rect_wide", "triangle"]
-PAPER_T_RISING = {"disk": "2.5-3.0", "square": "3.0-4.0", "rect_narrow": "3.0-4.0", "rect_wide": "2.0-3.0",
-                  "triangle": "4.0-5.0"}   # the paper's Table 1 (A = 5), observed
+# The paper's Table 1: docs/paper-table1.json, which `wiggle model` prints from too. Its observed
+# T_rising range (A = 5) per shape, (low, high), in the table's order.
+with open(os.path.join(ROOT, "docs", "paper-table1.json")) as _f:
+    PAPER_RANGE = {row["shape"]: tuple(row["T_rising_observed"]) for row in json.load(_f)["rows"]}
+
+
+def paper_observed(shape, printed=False):
+    """The paper's observed T_rising range of a shape as text: '2.5-3' (printed: as the paper prints
+    it, '2.5-3.0'); '' for a shape not in the paper's table."""
+    if shape not in PAPER_RANGE:
+        return ""
+    lo, hi = PAPER_RANGE[shape]
+    return f"{lo:.1f}-{hi:.1f}" if printed else f"{lo:g}-{hi:g}"
 
 
 # Keys added after some of the committed cases were run, with the value every earlier run had.
@@ -182,21 +195,6 @@ def beds(cases, where):
     return [by_seed[s] for s in sorted(by_seed)]
 
 
-def mean(values):
-    return sum(values) / len(values)
-
-
-def sd(values):
-    """The standard deviation of a sample (n - 1)."""
-    m = mean(values)
-    return math.sqrt(sum((v - m) ** 2 for v in values) / (len(values) - 1))
-
-
-def stats(values):
-    """mean, standard error of the mean (nan for one value)."""
-    return mean(values), sd(values) / math.sqrt(len(values)) if len(values) > 1 else float("nan")
-
-
 def cell_text(values, digits=3, each=False):
     """'+0.054 (1 bed)', '+0.041 +- 0.013 (2 beds)'; with each, the beds' values after the count."""
     if not values:
@@ -275,17 +273,16 @@ def paired_steps(spec):
             changes[r, (a, b)] = [by_value[b][s] - by_value[a][s] for s in both]
             row.append(cell_text(changes[r, (a, b)], each=True))
         lines.append("| " + " | ".join(row) + " |")
-    pooled = [d for (r, step), d in changes.items() if step != steps[-1] and len(d) >= 2]
-    dof = sum(len(d) - 1 for d in pooled)
-    spread = math.sqrt(sum((x - mean(d)) ** 2 for d in pooled for x in d) / dof) if dof else 0.0
+    # the last step (first to last value) repeats the others' beds: left out of the pooled scatter
+    spread, dof, groups = findings.pooled_sd([d for (r, step), d in changes.items() if step != steps[-1]])
     if spread > 0:   # none when no step has two beds, or (degenerate) every bed changed alike
         def named(r):   # "disk, T = 3": the row's labels after the first, each with its column head
             first, *rest = spec["row_label"](r)
             return first + "".join(f", {h} = {v}" for h, v in zip(spec["row_head"][1:], rest))
         resolved = [f"{named(r)}, {spec['label']} {a:g} -> {b:g} ({mean(d):+.3f}, "
                     f"{mean(d) / (spread / math.sqrt(len(d))):+.1f})"
-                    for (r, (a, b)), d in changes.items() if d and abs(mean(d)) >= RESOLVED * spread / math.sqrt(len(d))]
-        lines += ["", f"One bed's standard deviation of a change, pooled over the {len(pooled)} steps of two beds or "
+                    for (r, (a, b)), d in changes.items() if findings.change_resolved(d, spread)]
+        lines += ["", f"One bed's standard deviation of a change, pooled over the {groups} steps of two beds or "
                   f"more ({dof} degrees of freedom): {spread:.3f}. Changes at least {RESOLVED:g} standard errors from "
                   "zero by it (the mean change, then its standard errors): " + ("; ".join(resolved) or "none") + "."]
     return lines, spec["sources"]
@@ -305,16 +302,15 @@ def amplitude_threshold(spec):
         for t in spec["periods"]:
             measured = [(a, [value_of(c, "vy") for c in beds(grid[r][(a, t)], f"{spec['name']}: {r} {a} {t}")])
                         for a in spec["amplitudes"] if (a, t) in grid.get(r, {})]
-            # the findings' rule against zero (judged), whichever way V_y goes
-            resolved = [i for i, (a, vs) in enumerate(measured) if abs(judged((None, vs, [], 1), sig)[1]) >= RESOLVED]
+            # the findings' rule against zero, whichever way V_y goes
+            resolved = findings.first_resolved(measured, sig)
             if not measured:
                 text = ""
             elif not resolved:
                 text = f"above {measured[-1][0]:g}"
             else:
-                i = resolved[0]
-                a, vs = measured[i]
-                text = (f"{measured[i - 1][0]:g}-{a:g}" if i else f"<= {a:g}") + (" (rises)" if mean(vs) > 0 else " (sinks)")
+                below, a, sign = resolved
+                text = (f"{below:g}-{a:g}" if below is not None else f"<= {a:g}") + (" (rises)" if sign > 0 else " (sinks)")
             row.append(text)
         lines.append("| " + " | ".join(row) + " |")
     lines += ["", f"(the amplitudes measured: {', '.join(f'{a:g}' for a in spec['amplitudes'])}; "
@@ -379,7 +375,7 @@ def shape_by_period(name, sources, where, with_paper, value="vy"):
             "row_sort": lambda s: (SHAPES.index(s) if s in SHAPES else len(SHAPES), s),
             "row_head": ["shape"],
             "pre": [("model T_rise", model_cell("T_rise")), ("model T_max", model_cell("T_max"))]
-            + ([("paper (observed)", lambda s, values, cases: PAPER_T_RISING.get(s, ""))] if with_paper else []),
+            + ([("paper (observed)", lambda s, values, cases: paper_observed(s, printed=True))] if with_paper else []),
             "col_label": lambda t: f"T = {t:g}",
             "extra": table1_extra()}
 
@@ -591,16 +587,8 @@ TABLES = [
 
 # ---- the paper's findings (docs/PHYSICS.md §12), judged by a rule from comparisons of cells
 #
-# A comparison is a cell (the beds of one case: folders and a filter) against another cell or
-# against zero, with the direction the paper's finding predicts. Its difference is counted in
-# standard errors, se = sigma sqrt(1/n_a + 1/n_b) (n: beds; 1/n_b = 0 against zero), where sigma is
-# the standard deviation of one bed at that scale, measured (sigma() in paper_findings). The verdict
-# of a finding at a scale: "reproduced" if every comparison goes the paper's way by at least 2
-# standard errors (as printed, to 0.1);
-# "not reproduced" if one goes against it by at least 2; "not resolved" otherwise; "not measured"
-# if no committed result bears on it.
-
-RESOLVED = 2.0   # standard errors
+# The rule (comparisons in standard errors of one bed's sigma at a scale, the verdicts) is
+# tools/study/findings.py's; here the cells' values are gathered from the results and printed.
 
 
 class Cell:
@@ -616,7 +604,7 @@ class Cell:
 
 def sigma(cells):
     """One bed's standard deviation at a scale: the largest over the given cells, each of several beds."""
-    return max(sd(c.values()) for c in cells)
+    return findings.largest_sd([c.values() for c in cells])
 
 
 def cells_with_beds(sources):
@@ -634,42 +622,8 @@ def short(where):
     return ", ".join(parts)
 
 
-def compare(label, a, b, direction):
-    """(label, a's values, b's values or [], direction): direction +1 when the paper has a > b; None
-    when a cell has no results."""
-    va, vb = a.values(), (b.values() if b is not None else [])
-    return (label, va, vb, direction) if va and (vb or b is None) else None
-
-
-OWN_SCATTER_BEDS = 3   # a cell of this many beds or more also has a standard deviation of its own
-
-
-def side_sigma(values, sig):
-    """One bed's standard deviation for a cell: the scale's sigma, or the cell's own when it has
-    OWN_SCATTER_BEDS beds or more and they scatter more (a cell never counts as better known than
-    its own beds show)."""
-    return max(sig, sd(values)) if len(values) >= OWN_SCATTER_BEDS else sig
-
-
-def judged(comparison, sig):
-    """(difference a - b, standard errors in the paper's direction, 'for' / 'against' / 'within')."""
-    label, a, b, direction = comparison
-    diff = mean(a) - (mean(b) if b else 0.0)
-    se = math.sqrt(side_sigma(a, sig) ** 2 / len(a) + (side_sigma(b, sig) ** 2 / len(b) if b else 0.0))
-    z = round(direction * diff / se, 1)   # judged as printed, to 0.1
-    return diff, z, "for" if z >= RESOLVED else "against" if z <= -RESOLVED else "within"
-
-
 def mean_text(values):
     return cell_text(values) if values else "0"
-
-
-def verdict(outcomes):
-    if not outcomes:
-        return "not measured"
-    if "against" in outcomes:
-        return "not reproduced"
-    return "reproduced" if all(o == "for" for o in outcomes) else "not resolved"
 
 
 def evidence_table(spec):
@@ -679,7 +633,7 @@ def evidence_table(spec):
     for number, finding, scales in spec["findings"]():
         for scale, (sig, comparisons, *_) in scales.items():
             for c in filter(None, comparisons):
-                diff, z, _ = judged(c, sig)
+                diff, z, _ = findings.judged(c, sig)
                 lines.append("| " + " | ".join([str(number), scale, c[0], mean_text(c[1]), mean_text(c[2]),
                                                   f"{diff:+.3f}", f"{z:+.1f}"]) + " |")
     return lines, spec["sources"]
@@ -695,7 +649,7 @@ def findings_table(spec):
         for s in scales:
             sig, comparisons, *note = by_scale.get(s, (0.0, []))
             comparisons = [c for c in comparisons if c]
-            outcomes = [judged(c, sig) for c in comparisons]
+            outcomes = [findings.judged(c, sig) for c in comparisons]
             kinds = [o[2] for o in outcomes]
             against = [f"{c[0]} ({o[1]:+.1f})" for c, o in zip(comparisons, outcomes) if o[2] == "against"]
             n = sorted({len(c[1]) for c in comparisons} | {len(c[2]) for c in comparisons if c[2]})
@@ -706,7 +660,7 @@ def findings_table(spec):
                     + (": " + "; ".join(against) if against else "") + (f" ({note[0]})" if note else "")) \
                 if kinds else (note[0] if note else "no committed results")
             counts.append(text)
-            verdicts.append("not judged" if note and not kinds else verdict(kinds))
+            verdicts.append(findings.finding_verdict(sig, comparisons, *note))
         lines.append("| " + " | ".join([f"{number}. {finding}"] + counts + verdicts) + " |")
     sigmas = {s: v[0] for _, _, by_scale in spec["findings"]() for s, v in by_scale.items()}
     lines += ["", "One bed's standard deviation, sigma: " + ", ".join(f"{s} {sigmas[s]:.3f}" for s in scales) + "."]
@@ -726,8 +680,6 @@ SMALL_MAP_AMPLITUDES = [3.0, 4.0, 5.0]   # the findings for A >= 3
 SMALL_TODAY = SMALL_MAP + SMALL_POUR + SMALL_FRICTION
 SMALL_TODAY_WHERE = {"bed__pour": "lattice", "contact__mu": 0.1}
 PAPER_ORDER = ["disk", "rect_narrow", "square", "rect_wide", "triangle"]   # the paper's order of rise rates
-PAPER_RANGE = {"disk": (2.5, 3.0), "square": (3.0, 4.0), "rect_narrow": (3.0, 4.0), "rect_wide": (2.0, 3.0),
-               "triangle": (4.0, 5.0)}   # the paper's Table 1, observed (A = 5)
 
 
 def periods(sources, **where):
@@ -735,81 +687,44 @@ def periods(sources, **where):
     return sorted({c.get("drive.period") for c in select(sources, Cell(sources, **where).where)})
 
 
+def by_period(sources, **where):
+    """{T: the beds' V_y} at each period at which a cell of these sources and filter has results."""
+    return {t: Cell(sources, drive__period=t, **where).values() for t in periods(sources, **where)}
+
+
 def sinks_then_rises(sources, label, shapes, **where):
-    """Finding 1 for each shape: it sinks at its shortest period run and rises at the period of its
-    largest rate among the longer ones (the largest of several: a selection that favours rising)."""
-    out = []
-    for shape in shapes:
-        ts = periods(sources, intruder__shape=shape, **where)
-        if len(ts) < 2:
-            continue
-        cell = lambda t: Cell(sources, intruder__shape=shape, drive__period=t, **where)  # noqa: E731
-        top = max(ts[1:], key=lambda t: mean(cell(t).values()))
-        out.append(compare(f"{shape}, {label}: sinks at T = {ts[0]:g}, its shortest", cell(ts[0]), None, -1))
-        largest = f", its largest of T = {ts[1]:g}-{ts[-1]:g}" if len(ts) > 2 else ""
-        out.append(compare(f"{shape}, {label}: rises at T = {top:g}{largest}",
-                           cell(top), None, +1))
-    return out
+    """Finding 1 for each shape (findings.sinks_then_rises)."""
+    return [c for shape in shapes
+            for c in findings.sinks_then_rises(label, shape, by_period(sources, intruder__shape=shape, **where))]
 
 
 def has_maximum(sources, label, shapes, **where):
-    """Finding 2 for each shape that rises somewhere: its largest rate over the shorter periods above
-    its rate at the longest period run (when the longest has the largest rate, the comparison goes
-    against the finding, as it should, instead of comparing a cell with itself)."""
-    out = []
-    for shape in shapes:
-        ts = periods(sources, intruder__shape=shape, **where)
-        if len(ts) < 2:
-            continue
-        cell = lambda t: Cell(sources, intruder__shape=shape, drive__period=t, **where)  # noqa: E731
-        top = max(ts[:-1], key=lambda t: mean(cell(t).values()))
-        if max(mean(cell(t).values()) for t in ts) > 0:
-            out.append(compare(f"{shape}, {label}: largest of the shorter periods, at T = {top:g}, above T = {ts[-1]:g}, "
-                               "the longest", cell(top), cell(ts[-1]), +1))
-    return out
+    """Finding 2 for each shape that rises somewhere (findings.has_maximum)."""
+    return [c for shape in shapes
+            for c in findings.has_maximum(label, shape, by_period(sources, intruder__shape=shape, **where))]
 
 
 def in_order(sources, label, ts, **where):
     """Finding 4 at each period: every pair of neighbours in the paper's order that has results."""
-    out = []
-    for t in ts:
-        present = [s for s in PAPER_ORDER if Cell(sources, intruder__shape=s, drive__period=t, **where).values()]
-        for a, b in zip(present, present[1:]):
-            out.append(compare(f"{label}, T = {t:g}: {a} above {b}", Cell(sources, intruder__shape=a, drive__period=t, **where),
-                               Cell(sources, intruder__shape=b, drive__period=t, **where), +1))
-    return out
+    return [c for t in ts for c in findings.in_order(
+        label, t, {s: Cell(sources, intruder__shape=s, drive__period=t, **where).values() for s in PAPER_ORDER})]
 
 
 def sinks(sources, label, shape, **where):
-    return [compare(f"{shape}, {label}: sinks at T = {t:g}", Cell(sources, intruder__shape=shape, drive__period=t, **where),
-                    None, -1) for t in periods(sources, intruder__shape=shape, **where)]
+    return findings.sinks(label, shape, by_period(sources, intruder__shape=shape, **where))
 
 
 def friction(sources, label, shape, **where):
-    """Finding 6: each step up in mu raises the rate."""
+    """Finding 6: each step up in mu raises the rate, over every mu the shape was run at in these sources."""
     mus = sorted({c.get("contact.mu") for s in sources for c in load(s) if c.get("intruder.shape") == shape})
-    cell = lambda mu: Cell(sources, intruder__shape=shape, contact__mu=mu, **where)  # noqa: E731
-    return [compare(f"{label}: mu = {b:g} above mu = {a:g}", cell(b), cell(a), +1) for a, b in zip(mus, mus[1:])]
+    return findings.friction_steps(label, {mu: Cell(sources, intruder__shape=shape, contact__mu=mu, **where).values()
+                                           for mu in mus})
 
 
 def table1_range(sources, **where):
-    """Finding 7 for each shape: not rising at the paper's lower end, rising at its upper end; where a
-    scale did not run that period, the nearest period it ran on the far side of the range (below the
-    lower end, above the upper), where the paper's range says the same."""
-    out = []
-    for shape, (lo, hi) in PAPER_RANGE.items():
-        ts = periods(sources, intruder__shape=shape, **where)
-        cell = lambda t: Cell(sources, intruder__shape=shape, drive__period=t, **where)  # noqa: E731
-        below, above = [t for t in ts if t <= lo], [t for t in ts if t >= hi]
-        if below:
-            t = below[-1]
-            end = "the paper's lower end" if t == lo else f"below the paper's lower end, {lo:g}"
-            out.append(compare(f"{shape}: not rising at T = {t:g} ({end})", cell(t), None, -1))
-        if above:
-            t = above[0]
-            end = "the paper's upper end" if t == hi else f"above the paper's upper end, {hi:g}"
-            out.append(compare(f"{shape}: rising at T = {t:g} ({end})", cell(t), None, +1))
-    return out
+    """Finding 7 for each of the paper's shapes (findings.table1_range)."""
+    return [c for shape, paper_range in PAPER_RANGE.items()
+            for c in findings.table1_range(shape, by_period(sources, intruder__shape=shape, **where), paper_range)]
 
 
 def depth_sigma():
@@ -819,10 +734,9 @@ def depth_sigma():
 
 
 def small_amplitudes(sources, shape, t, direction, **where):
-    """Finding 3: A = 3 moves the intruder further than A = 1 and 0.5 do, the way it goes at A = 3 in the paper."""
-    cell = lambda a: Cell(sources, intruder__shape=shape, drive__amplitude=a, drive__period=t, **where)  # noqa: E731
-    way = "above" if direction > 0 else "below"
-    return [compare(f"{shape}, T = {t:g}: A = 3 {way} A = {a:g}", cell(3.0), cell(a), direction) for a in (1.0, 0.5)]
+    """Finding 3 (findings.small_amplitudes) for a shape at period t."""
+    return findings.small_amplitudes(shape, t, {a: Cell(sources, intruder__shape=shape, drive__amplitude=a, drive__period=t,
+                                                        **where).values() for a in (3.0, 1.0, 0.5)}, direction)
 
 
 _FINDINGS = []
@@ -941,7 +855,7 @@ def boundary_table(spec):
 # ---- the answer first: docs/VALIDATION.md's opening page, "Does wiggle reproduce the paper?"
 #
 # Table 1 read by the findings' rule: a period's V_y is "rising" when it is at least RESOLVED
-# standard errors above zero (the scale's sigma, as judged()); wiggle's bracket is the first period
+# standard errors above zero (the scale's sigma, findings.first_rise); wiggle's bracket is the first period
 # that rises and the period run below it.
 
 SHAPE_NAMES = {"disk": "disk (OS1)", "square": "square (OS2)", "rect_narrow": "narrow rectangle (OS3)",
@@ -961,12 +875,8 @@ def model_t_rise(shape):
 def first_rise(sources, shape, sig):
     """(T below, T above, [(T, values)]) of a shape's A = 5 cells: the first period whose V_y rises by
     the rule, and the period run below it (None when it is the shortest run, or when none rises)."""
-    cells = [(t, Cell(sources, intruder__shape=shape, drive__period=t, drive__amplitude=5.0).values())
-             for t in periods(sources, intruder__shape=shape, drive__amplitude=5.0)]
-    for i, (t, vs) in enumerate(cells):
-        if judged((None, vs, [], 1), sig)[1] >= RESOLVED:
-            return (cells[i - 1][0] if i else None), t, cells
-    return None, None, cells
+    cells = list(by_period(sources, intruder__shape=shape, drive__amplitude=5.0).items())
+    return (*findings.first_rise(cells, sig), cells)
 
 
 def beds_text(values):
@@ -974,18 +884,7 @@ def beds_text(values):
 
 
 def against_paper(lo, hi, shape):
-    plo, phi = PAPER_RANGE[shape]
-    if hi is None:
-        return "**no**: no rise at any period run"
-    if lo is None:
-        return "rises already at the shortest period run"
-    if (lo, hi) == (plo, phi):
-        return "**yes**: the paper's range"
-    if lo >= plo and hi <= phi:
-        return "**yes**: inside the paper's range"
-    if max(lo, plo) < min(hi, phi):
-        return "overlaps the paper's range"
-    return "**no**: below the paper's range" if hi <= plo else "**no**: above the paper's range"
+    return findings.against_range(lo, hi, PAPER_RANGE[shape])
 
 
 def bracket_text(lo, hi, cells):
@@ -1007,7 +906,7 @@ def answer_table1(spec):
         there = "; ".join(beds_text(values[t]) for t in (lo, hi) if t is not None) if hi is not None else \
             ", ".join(f"{beds_text(vs)} at T = {t:g}" for t, vs in cells)
         dlo, dhi, dcells = first_rise(DEPTH_A5, shape, depth)
-        lines.append("| " + " | ".join([SHAPE_NAMES[shape], PAPER_T_RISING[shape].replace(".0", ""),
+        lines.append("| " + " | ".join([SHAPE_NAMES[shape], paper_observed(shape),
                                           f"{model_t_rise(shape):.2f}", bracket_text(lo, hi, cells), there,
                                           against_paper(lo, hi, shape), bracket_text(dlo, dhi, dcells)]) + " |")
     lines += ["", f"(T in sqrt(d/g); A = 5 d. The paper's clock: V_y over t = 100-1000 of runs to t = 1000 on the "
@@ -1019,12 +918,13 @@ def answer_table1(spec):
 
 def verdict_cell(sig, comparisons, note):
     comparisons = [c for c in comparisons if c]
+    verdict = findings.finding_verdict(sig, comparisons, *note)
     if not comparisons:
-        return "not judged" if note else "not measured"
-    kinds = [judged(c, sig)[2] for c in comparisons]
+        return verdict
+    kinds = [findings.judged(c, sig)[2] for c in comparisons]
     n = sorted({len(c[1]) for c in comparisons} | {len(c[2]) for c in comparisons if c[2]})
     beds_range = f"{n[0]}" + (f"-{n[-1]}" if n[-1] > n[0] else "")
-    return (f"**{verdict(kinds)}** ({kinds.count('for')} for, {kinds.count('within')} within, "
+    return (f"**{verdict}** ({kinds.count('for')} for, {kinds.count('within')} within, "
             f"{kinds.count('against')} against; {beds_range} bed{'s' if n[-1] > 1 else ''})")
 
 
@@ -1057,13 +957,13 @@ def answer_differences(spec):
     _, _, tri_cells = first_rise(CLOCK_A5, "triangle", clock)
     small = SMALL_TODAY
     lines = [
-        f"- **The square starts rising below the paper's range** (T = {sq_lo:g}-{sq_hi:g} against 3-4): by the paper's clock "
+        f"- **The square starts rising below the paper's range** (T = {sq_lo:g}-{sq_hi:g} against {paper_observed('square')}): by the paper's clock "
         f"it rises at T = 3, {cell(CLOCK_A5, intruder__shape='square', drive__period=3.0)}, and not by one bed's accident "
         "(its two beds give " + ", ".join(f"{v:+.3f}" for v in Cell(CLOCK_A5, intruder__shape="square", drive__period=3.0).values())
         + "). Cause not known. Tried without a change of sign (t = 100, one bed): the paper's glued intruder (T = 3: "
         f"{cell(glued, intruder__shape='square', drive__period=3.0)}). Not yet measured: the 60 d box against the paper's "
         "300 d and the random pour at t = 1000 (issue 51, below).",
-        f"- **The triangle does not rise** (the paper: from T = 4-5): by the paper's clock it sinks at every period run, "
+        f"- **The triangle does not rise** (the paper: from T = {paper_observed('triangle')}): by the paper's clock it sinks at every period run, "
         + ", ".join(f"{beds_text(vs)} at T = {t:g}" for t, vs in tri_cells)
         + ". This is findings 1 and 7 not reproduced. Cause not known. Tried without a change of sign (t = 100, one bed "
         "each, T = 4; 6): "
@@ -1097,20 +997,16 @@ def readme_answer(spec):
             agree.append(f"{name} {bracket_text(lo, hi, cells)}")
         elif hi is None:
             differ.append(f"the {name} sinks at every period run (T = {cells[0][0]:g}-{cells[-1][0]:g}; paper: rises "
-                          f"from {PAPER_T_RISING[shape].replace('.0', '')})")
+                          f"from {paper_observed(shape)})")
         else:
             differ.append(f"the {name} rises from {bracket_text(lo, hi, cells)} (paper: "
-                          f"{PAPER_T_RISING[shape].replace('.0', '')})")
-    verdicts = []
-    for _, _, by_scale in paper_findings():
-        sig, comparisons, *_ = by_scale.get("paper's clock", (0.0, []))
-        kinds = [judged(c, sig)[2] for c in comparisons if c]
-        verdicts.append(verdict(kinds) if kinds else "not judged")
-    counts = {v: verdicts.count(v) for v in ("reproduced", "not reproduced", "not resolved", "not judged")}
+                          f"{paper_observed(shape)})")
+    # the verdicts of docs/FINDINGS.md's table, by the same rule
+    verdicts = [findings.finding_verdict(*by_scale.get("paper's clock", (0.0, []))) for _, _, by_scale in paper_findings()]
     text = (f"Partly. By the paper's clock (t = 1000) at its depth, Table 1's T_rising is in the paper's range for "
             f"{len(agree)} of 5 shapes (" + ", ".join(agree) + "); " + " and ".join(differ) + ", causes not known. "
-            f"Of the seven findings by that clock: {counts['reproduced']} reproduced, {counts['not reproduced']} not "
-            f"reproduced, {counts['not resolved']} not resolved, {counts['not judged']} not judged. In full: "
+            "Of the seven findings by that clock: " + ", ".join(f"{verdicts.count(v)} {v}" for v in findings.VERDICTS)
+            + ". In full: "
             "[docs/VALIDATION.md](docs/VALIDATION.md#does-wiggle-reproduce-the-paper).")
     return textwrap.wrap(text, 104, break_on_hyphens=False, break_long_words=False), spec["sources"]
 
@@ -1161,7 +1057,7 @@ def answer_protocol(spec):
             elif not keys:
                 cells.append(cell_text(values))
             else:
-                diff, z, _ = judged((label, values, base, paper_sign), sig)
+                diff, z, _ = findings.judged(findings.Comparison(label, values, base, paper_sign), sig)
                 toward = ("toward the paper" if z >= RESOLVED else "away from the paper" if z <= -RESOLVED
                           else "within the scatter")
                 cells.append(f"{cell_text(values)}; {diff:+.3f} ({abs(z):.1f} se, {toward})")

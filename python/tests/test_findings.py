@@ -1,0 +1,205 @@
+"""tools/study/findings.py, the statistics behind docs/FINDINGS.md's verdicts, on small made-up
+tables: cells of a few beds' V_y, one bed's sigma given."""
+import math
+import unittest
+
+from tests.test_study_tools import load_tool
+
+findings = load_tool("findings")
+compare, judged, finding_verdict = findings.compare, findings.judged, findings.finding_verdict
+
+SIGMA = 0.05   # one bed's standard deviation of these made-up scales
+
+
+class CellNumbersTest(unittest.TestCase):
+    def test_mean_sample_deviation_and_standard_error(self):
+        self.assertAlmostEqual(findings.sd([1.0, 2.0, 3.0]), 1.0)   # n - 1
+        m, se = findings.stats([1.0, 2.0, 3.0])
+        self.assertAlmostEqual(m, 2.0)
+        self.assertAlmostEqual(se, 1 / math.sqrt(3))
+
+    def test_one_bed_has_a_mean_and_no_standard_error(self):
+        m, se = findings.stats([0.2])
+        self.assertEqual(m, 0.2)
+        self.assertTrue(math.isnan(se))
+
+    def test_a_scales_sigma_is_its_most_scattered_cell(self):
+        self.assertAlmostEqual(findings.largest_sd([[0.0, 0.1], [0.0, 0.3], [1.0, 1.0, 1.0]]), 0.3 / math.sqrt(2))
+
+
+class ScatterRuleTest(unittest.TestCase):
+    """Which sigma a cell is judged by (side_sigma)."""
+
+    def test_fewer_beds_than_the_rule_take_the_scales_sigma_however_they_scatter(self):
+        self.assertEqual(findings.side_sigma([0.0, 1.0], SIGMA), SIGMA)
+
+    def test_three_beds_that_scatter_more_take_their_own(self):
+        values = [0.0, 0.5, 1.0]
+        self.assertEqual(findings.OWN_SCATTER_BEDS, 3)
+        self.assertAlmostEqual(findings.side_sigma(values, SIGMA), 0.5)
+
+    def test_three_beds_that_scatter_less_keep_the_scales(self):
+        self.assertEqual(findings.side_sigma([0.10, 0.11, 0.12], SIGMA), SIGMA)
+
+    def test_own_scatter_turns_a_resolved_difference_into_one_within(self):
+        tight = compare("a", [0.2, 0.2], None, +1)                # se = 0.05 / sqrt(2): 5.7 se
+        loose = compare("a", [-0.3, 0.2, 0.7], None, +1)          # same mean, sd 0.5: 0.7 se
+        self.assertEqual(judged(tight, SIGMA)[2], "for")
+        self.assertEqual(judged(loose, SIGMA)[1], 0.7)
+        self.assertEqual(judged(loose, SIGMA)[2], "within")
+
+
+class ComparisonTest(unittest.TestCase):
+    def test_against_zero_counts_the_mean_in_standard_errors_the_papers_way(self):
+        diff, z, outcome = judged(compare("sinks", [-0.1], None, -1), SIGMA)
+        self.assertAlmostEqual(diff, -0.1)
+        self.assertEqual((z, outcome), (2.0, "for"))
+        self.assertEqual(judged(compare("rises", [-0.1], None, +1), SIGMA)[1:], (-2.0, "against"))
+
+    def test_two_cells_add_their_standard_errors(self):
+        # se = 0.05 sqrt(1/2 + 1/1) = 0.0612; difference 0.1: 1.6 se, within
+        diff, z, outcome = judged(compare("a above b", [0.15, 0.15], [0.05], +1), SIGMA)
+        self.assertAlmostEqual(diff, 0.1)
+        self.assertEqual((z, outcome), (1.6, "within"))
+
+    def test_judged_as_printed_to_a_tenth(self):
+        # 1.96 standard errors prints as 2.0, and is judged as what it prints
+        self.assertEqual(judged(compare("a", [1.96 * SIGMA], None, +1), SIGMA)[1:], (2.0, "for"))
+        self.assertEqual(judged(compare("a", [1.94 * SIGMA], None, +1), SIGMA)[1:], (1.9, "within"))
+
+    def test_a_cell_without_results_makes_no_comparison(self):
+        self.assertIsNone(compare("a", [], None, +1))
+        self.assertIsNone(compare("a", [0.1], [], +1))
+        self.assertEqual(compare("a", [0.1], None, +1).b, [])
+
+
+class VerdictTest(unittest.TestCase):
+    """A finding's verdict at one scale, from made-up cells."""
+
+    def test_reproduced_every_comparison_the_papers_way(self):
+        comparisons = [compare("sinks", [-0.20, -0.22], None, -1), compare("rises", [0.3], None, +1)]
+        self.assertEqual(finding_verdict(SIGMA, comparisons), "reproduced")
+
+    def test_not_reproduced_one_against_outweighs_any_number_for(self):
+        comparisons = [compare("rises", [0.3], None, +1)] * 5 + [compare("sinks", [0.2], None, -1)]
+        self.assertEqual(finding_verdict(SIGMA, comparisons), "not reproduced")
+
+    def test_not_resolved_when_the_scatter_is_larger_than_the_difference(self):
+        comparisons = [compare("rises", [0.3], None, +1), compare("a above b", [0.12], [0.10], +1)]
+        self.assertEqual(judged(comparisons[1], SIGMA)[2], "within")
+        self.assertEqual(finding_verdict(SIGMA, comparisons), "not resolved")
+
+    def test_not_judged_when_missing_data_leaves_no_comparison_and_a_note_says_why(self):
+        missing = [compare("rises", [], None, +1), compare("a above b", [0.2], [], +1)]
+        self.assertEqual(finding_verdict(SIGMA, missing, "not judged: its periods stop below the maxima"), "not judged")
+
+    def test_not_measured_when_nothing_bears_on_it(self):
+        self.assertEqual(finding_verdict(SIGMA, []), "not measured")
+        self.assertEqual(finding_verdict(SIGMA, [None, None]), "not measured")
+
+    def test_every_verdict_is_one_of_the_named_five(self):
+        cases = [[], [compare("a", [0.3], None, +1)], [compare("a", [0.3], None, -1)], [compare("a", [0.0], None, +1)]]
+        said = {finding_verdict(SIGMA, c) for c in cases} | {finding_verdict(SIGMA, [], "why")}
+        self.assertEqual(said, set(findings.VERDICTS))
+
+    def test_missing_cells_are_left_out_of_a_verdict(self):
+        self.assertEqual(finding_verdict(SIGMA, [None, compare("rises", [0.3], None, +1)]), "reproduced")
+
+
+class FindingsComparisonsTest(unittest.TestCase):
+    """The comparisons each finding makes from a shape's cells by period."""
+
+    def test_sinks_then_rises_takes_the_shortest_and_the_largest_of_the_longer(self):
+        by_period = {2.0: [-0.1], 3.0: [0.05], 4.0: [0.2, 0.22], 5.0: [0.1]}
+        sinks, rises = findings.sinks_then_rises("A = 5", "disk", by_period)
+        self.assertEqual((sinks.label, sinks.a, sinks.direction), ("disk, A = 5: sinks at T = 2, its shortest", [-0.1], -1))
+        self.assertEqual(rises.label, "disk, A = 5: rises at T = 4, its largest of T = 3-5")
+        self.assertEqual(rises.a, [0.2, 0.22])
+
+    def test_one_period_only_makes_no_comparison(self):
+        self.assertEqual(findings.sinks_then_rises("A = 5", "disk", {3.0: [0.1]}), [])
+        self.assertEqual(findings.has_maximum("A = 5", "disk", {3.0: [0.1]}), [])
+
+    def test_has_maximum_only_where_it_rises_and_against_when_the_longest_is_largest(self):
+        self.assertEqual(findings.has_maximum("A = 5", "triangle", {3.0: [-0.1], 5.0: [-0.05]}), [])
+        (c,) = findings.has_maximum("A = 5", "disk", {3.0: [0.1], 5.0: [0.3]})
+        self.assertEqual((c.a, c.b), ([0.1], [0.3]))
+        self.assertEqual(judged(c, SIGMA)[2], "against")
+
+    def test_in_order_compares_neighbours_that_have_results(self):
+        by_shape = {"disk": [0.3], "rect_narrow": [], "square": [0.1], "triangle": [-0.1]}
+        labels = [c.label for c in findings.in_order("A = 5", 3.0, by_shape)]
+        self.assertEqual(labels, ["A = 5, T = 3: disk above square", "A = 5, T = 3: square above triangle"])
+
+    def test_friction_steps_leave_a_missing_mu_out(self):
+        steps = findings.friction_steps("disk", {0.0: [0.1], 0.1: [], 0.3: [0.2]})
+        self.assertEqual(steps, [None, None])
+        (c,) = findings.friction_steps("disk", {0.1: [0.1], 0.3: [0.2]})
+        self.assertEqual((c.label, c.a, c.b), ("disk: mu = 0.3 above mu = 0.1", [0.2], [0.1]))
+
+    def test_small_amplitudes_compare_a3_with_1_and_half(self):
+        cs = findings.small_amplitudes("disk", 5.0, {3.0: [0.2], 1.0: [0.0]}, +1)
+        self.assertEqual(cs[0].label, "disk, T = 5: A = 3 above A = 1")
+        self.assertIsNone(cs[1])   # A = 0.5 not run
+
+    def test_table1_range_takes_the_ends_or_the_nearest_period_beyond(self):
+        cs = findings.table1_range("square", {2.5: [-0.1], 3.5: [0.0], 5.0: [0.2]}, (3.0, 4.0))
+        self.assertEqual([(c.label, c.direction) for c in cs],
+                         [("square: not rising at T = 2.5 (below the paper's lower end, 3)", -1),
+                          ("square: rising at T = 5 (above the paper's upper end, 4)", +1)])
+        cs = findings.table1_range("disk", {2.5: [-0.1], 3.0: [0.2]}, (2.5, 3.0))
+        self.assertEqual([c.label for c in cs], ["disk: not rising at T = 2.5 (the paper's lower end)",
+                                                 "disk: rising at T = 3 (the paper's upper end)"])
+        # no period at or below the lower end: only the rising side
+        self.assertEqual(findings.table1_range("disk", {3.5: [0.2]}, (2.0, 3.0)),
+                         [compare("disk: rising at T = 3.5 (above the paper's upper end, 3)", [0.2], None, +1)])
+
+
+class BracketTest(unittest.TestCase):
+    """Where V_y leaves zero, and how that stands against the paper's range."""
+
+    def test_first_rise_is_the_first_period_resolved_above_zero(self):
+        cells = [(2.0, [-0.2]), (2.5, [0.05]), (3.0, [0.15, 0.16]), (4.0, [0.3])]
+        self.assertEqual(findings.first_rise(cells, SIGMA), (2.5, 3.0))
+
+    def test_a_zero_crossing_inside_the_error_is_not_a_rise(self):
+        # the mean crosses zero between T = 2.5 and 3, but +0.06 on one bed is 1.2 se: not rising
+        cells = [(2.5, [-0.02]), (3.0, [0.06])]
+        self.assertEqual(findings.first_rise(cells, SIGMA), (None, None))
+        self.assertIsNone(findings.first_resolved(cells, SIGMA))
+
+    def test_rising_at_the_shortest_period_has_no_lower_end(self):
+        self.assertEqual(findings.first_rise([(2.0, [0.2]), (3.0, [0.3])], SIGMA), (None, 2.0))
+
+    def test_first_resolved_goes_either_way_and_says_which(self):
+        cells = [(0.5, [0.01]), (1.0, [-0.02]), (3.0, [-0.2]), (5.0, [0.3])]
+        self.assertEqual(findings.first_resolved(cells, SIGMA), (1.0, 3.0, -1))
+        self.assertEqual(findings.first_resolved([(3.0, [0.2])], SIGMA), (None, 3.0, +1))
+
+    def test_against_the_papers_range(self):
+        paper = (3.0, 4.0)
+        self.assertEqual(findings.against_range(3.0, 4.0, paper), "**yes**: the paper's range")
+        self.assertEqual(findings.against_range(3.0, 3.5, paper), "**yes**: inside the paper's range")
+        self.assertEqual(findings.against_range(3.5, 5.0, paper), "overlaps the paper's range")
+        self.assertEqual(findings.against_range(2.5, 3.0, paper), "**no**: below the paper's range")
+        self.assertEqual(findings.against_range(4.0, 5.0, paper), "**no**: above the paper's range")
+        self.assertEqual(findings.against_range(None, None, paper), "**no**: no rise at any period run")
+        self.assertEqual(findings.against_range(None, 2.0, paper), "rises already at the shortest period run")
+
+
+class PairedChangesTest(unittest.TestCase):
+    def test_pooled_deviation_of_changes_uses_groups_of_two_beds_or_more(self):
+        spread, dof, groups = findings.pooled_sd([[0.1, 0.3], [0.0, 0.2, 0.4], [5.0]])
+        # sum of squares 0.02 + 0.08 over (1 + 2) degrees of freedom; the one-bed group left out
+        self.assertEqual((dof, groups), (3, 2))
+        self.assertAlmostEqual(spread, math.sqrt(0.1 / 3))
+        self.assertEqual(findings.pooled_sd([[0.1], [0.2]]), (0.0, 0, 0))
+
+    def test_a_change_is_resolved_at_two_standard_errors_of_the_pooled_deviation(self):
+        self.assertTrue(findings.change_resolved([0.1, 0.1], 0.07))      # 0.1 >= 2 x 0.0495
+        self.assertFalse(findings.change_resolved([0.1, 0.1], 0.08))     # 0.1 <  2 x 0.0566
+        self.assertFalse(findings.change_resolved([], 0.05))
+
+
+if __name__ == "__main__":
+    unittest.main()

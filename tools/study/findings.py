@@ -1,0 +1,228 @@
+"""The statistics behind the paper's findings (docs/PHYSICS.md §12, docs/FINDINGS.md): pure functions
+of the beds' V_y values, no files read. tools/study/vy_tables.py gathers the values from results/
+and prints what these decide; python/tests/test_findings.py tests them on small made-up tables.
+
+A cell is the beds of one case, a list of V_y values (one per bed). A comparison is a cell against
+another cell or against zero, with the direction the paper's finding predicts. Its difference is
+counted in standard errors, se = sigma sqrt(1/n_a + 1/n_b) (n: beds; 1/n_b = 0 against zero), where
+sigma is one bed's standard deviation at that scale (largest_sd over the scale's cells of several
+beds), or a cell's own when it has OWN_SCATTER_BEDS beds or more and they scatter more. A comparison
+goes "for" the paper at >= RESOLVED standard errors its way (as printed, to 0.1), "against" at
+>= RESOLVED the other way, else "within". A finding at a scale is "reproduced" when every comparison
+goes for it, "not reproduced" when one goes against, "not resolved" otherwise, "not judged" when a
+note says why it has no comparisons, "not measured" when nothing bears on it.
+
+    comparison = compare(label, a, b, direction)      # b None: against zero; None when a cell is empty
+    difference, z, outcome = judged(comparison, sigma)
+    finding_verdict(sigma, [comparison, ...], note)   # 'reproduced', 'not reproduced', ...
+"""
+import math
+from typing import NamedTuple
+
+RESOLVED = 2.0          # standard errors
+OWN_SCATTER_BEDS = 3    # a cell of this many beds or more also has a standard deviation of its own
+
+
+# ---- a cell's numbers
+
+def mean(values):
+    return sum(values) / len(values)
+
+
+def sd(values):
+    """The standard deviation of a sample (n - 1)."""
+    m = mean(values)
+    return math.sqrt(sum((v - m) ** 2 for v in values) / (len(values) - 1))
+
+
+def stats(values):
+    """mean, standard error of the mean (nan for one value)."""
+    return mean(values), sd(values) / math.sqrt(len(values)) if len(values) > 1 else float("nan")
+
+
+def largest_sd(cells):
+    """One bed's standard deviation at a scale: the largest over the given cells, each of several beds."""
+    return max(sd(values) for values in cells)
+
+
+def side_sigma(values, sig):
+    """One bed's standard deviation for a cell: the scale's sigma, or the cell's own when it has
+    OWN_SCATTER_BEDS beds or more and they scatter more (a cell never counts as better known than
+    its own beds show)."""
+    return max(sig, sd(values)) if len(values) >= OWN_SCATTER_BEDS else sig
+
+
+# ---- comparisons and their outcomes
+
+class Comparison(NamedTuple):
+    """a's beds against b's (b empty: against zero); direction +1 when the paper has a > b."""
+    label: str
+    a: list
+    b: list
+    direction: int
+
+
+def compare(label, a, b, direction):
+    """A comparison of cell a with cell b (b None: with zero); None when a cell has no results."""
+    if not a or (b is not None and not b):
+        return None
+    return Comparison(label, list(a), list(b) if b is not None else [], direction)
+
+
+def judged(comparison, sig):
+    """(difference a - b, standard errors in the paper's direction, 'for' / 'against' / 'within')."""
+    _, a, b, direction = comparison
+    diff = mean(a) - (mean(b) if b else 0.0)
+    se = math.sqrt(side_sigma(a, sig) ** 2 / len(a) + (side_sigma(b, sig) ** 2 / len(b) if b else 0.0))
+    z = round(direction * diff / se, 1)   # judged as printed, to 0.1
+    return diff, z, "for" if z >= RESOLVED else "against" if z <= -RESOLVED else "within"
+
+
+def z_from_zero(values, sig):
+    """A cell's mean in standard errors from zero (positive: rising), as judged() prints it."""
+    return judged(Comparison(None, values, [], 1), sig)[1]
+
+
+VERDICTS = ("reproduced", "not reproduced", "not resolved", "not judged", "not measured")
+
+
+def verdict(outcomes):
+    """A finding's verdict from its comparisons' outcomes."""
+    if not outcomes:
+        return "not measured"
+    if "against" in outcomes:
+        return "not reproduced"
+    return "reproduced" if all(o == "for" for o in outcomes) else "not resolved"
+
+
+def finding_verdict(sig, comparisons, note=None):
+    """The verdict of a finding at one scale: its comparisons (None for a cell without results is
+    left out) judged with that scale's sigma; "not judged" when it has none and a note says why."""
+    outcomes = [judged(c, sig)[2] for c in comparisons if c]
+    return "not judged" if note and not outcomes else verdict(outcomes)
+
+
+# ---- the findings' comparisons, from a shape's cells by period ({T: values}, T ascending)
+
+def sinks_then_rises(label, shape, by_period):
+    """Finding 1: it sinks at its shortest period run and rises at the period of its largest rate
+    among the longer ones (the largest of several: a selection that favours rising)."""
+    ts = sorted(by_period)
+    if len(ts) < 2:
+        return []
+    top = max(ts[1:], key=lambda t: mean(by_period[t]))
+    largest = f", its largest of T = {ts[1]:g}-{ts[-1]:g}" if len(ts) > 2 else ""
+    return [compare(f"{shape}, {label}: sinks at T = {ts[0]:g}, its shortest", by_period[ts[0]], None, -1),
+            compare(f"{shape}, {label}: rises at T = {top:g}{largest}", by_period[top], None, +1)]
+
+
+def has_maximum(label, shape, by_period):
+    """Finding 2, for a shape that rises somewhere: its largest rate over the shorter periods above
+    its rate at the longest period run (when the longest has the largest rate, the comparison goes
+    against the finding, as it should, instead of comparing a cell with itself)."""
+    ts = sorted(by_period)
+    if len(ts) < 2 or not max(mean(by_period[t]) for t in ts) > 0:
+        return []
+    top = max(ts[:-1], key=lambda t: mean(by_period[t]))
+    return [compare(f"{shape}, {label}: largest of the shorter periods, at T = {top:g}, above T = {ts[-1]:g}, "
+                    "the longest", by_period[top], by_period[ts[-1]], +1)]
+
+
+def small_amplitudes(shape, t, by_amplitude, direction):
+    """Finding 3: A = 3 moves the intruder further than A = 1 and 0.5 do, the way (direction) it goes
+    at A = 3 in the paper; by_amplitude {A: values} at period t."""
+    way = "above" if direction > 0 else "below"
+    return [compare(f"{shape}, T = {t:g}: A = 3 {way} A = {a:g}", by_amplitude.get(3.0, []), by_amplitude.get(a, []),
+                    direction) for a in (1.0, 0.5)]
+
+
+def in_order(label, t, by_shape):
+    """Finding 4 at one period: every pair of neighbours that has results, by_shape {shape: values}
+    in the paper's order of rise rates."""
+    present = [s for s, values in by_shape.items() if values]
+    return [compare(f"{label}, T = {t:g}: {a} above {b}", by_shape[a], by_shape[b], +1)
+            for a, b in zip(present, present[1:])]
+
+
+def sinks(label, shape, by_period):
+    """Finding 5: it sinks at every period run."""
+    return [compare(f"{shape}, {label}: sinks at T = {t:g}", by_period[t], None, -1) for t in sorted(by_period)]
+
+
+def friction_steps(label, by_mu):
+    """Finding 6: each step up in mu raises the rate; by_mu {mu: values} (empty where not run)."""
+    mus = sorted(by_mu)
+    return [compare(f"{label}: mu = {b:g} above mu = {a:g}", by_mu[b], by_mu[a], +1) for a, b in zip(mus, mus[1:])]
+
+
+def table1_range(shape, by_period, paper_range):
+    """Finding 7: not rising at the paper's lower end, rising at its upper end (paper_range (lo, hi));
+    where a scale did not run that period, the nearest period it ran on the far side of the range
+    (below the lower end, above the upper), where the paper's range says the same."""
+    lo, hi = paper_range
+    ts = sorted(by_period)
+    below, above = [t for t in ts if t <= lo], [t for t in ts if t >= hi]
+    out = []
+    if below:
+        t = below[-1]
+        end = "the paper's lower end" if t == lo else f"below the paper's lower end, {lo:g}"
+        out.append(compare(f"{shape}: not rising at T = {t:g} ({end})", by_period[t], None, -1))
+    if above:
+        t = above[0]
+        end = "the paper's upper end" if t == hi else f"above the paper's upper end, {hi:g}"
+        out.append(compare(f"{shape}: rising at T = {t:g} ({end})", by_period[t], None, +1))
+    return out
+
+
+# ---- brackets: where V_y leaves zero, against the paper's range
+
+def first_rise(cells, sig):
+    """(T below, T) for cells [(T, values)] in ascending T: the first period whose V_y is >= RESOLVED
+    standard errors above zero and the period run below it (None when it is the shortest run);
+    (None, None) when none rises."""
+    for i, (t, values) in enumerate(cells):
+        if z_from_zero(values, sig) >= RESOLVED:
+            return (cells[i - 1][0] if i else None), t
+    return None, None
+
+
+def first_resolved(cells, sig):
+    """(key below, key, +1 rising / -1 sinking) for cells [(key, values)] in ascending key: the first
+    whose V_y is >= RESOLVED standard errors from zero either way, and the key measured below it (None
+    when it is the first); None when none is."""
+    for i, (key, values) in enumerate(cells):
+        if abs(z_from_zero(values, sig)) >= RESOLVED:
+            return (cells[i - 1][0] if i else None), key, (+1 if mean(values) > 0 else -1)
+    return None
+
+
+def against_range(lo, hi, paper_range):
+    """How a bracket (lo, hi) of first_rise stands against the paper's range: text, "**yes**..." when
+    it agrees, "**no**..." when it does not."""
+    plo, phi = paper_range
+    if hi is None:
+        return "**no**: no rise at any period run"
+    if lo is None:
+        return "rises already at the shortest period run"
+    if (lo, hi) == (plo, phi):
+        return "**yes**: the paper's range"
+    if lo >= plo and hi <= phi:
+        return "**yes**: inside the paper's range"
+    if max(lo, plo) < min(hi, phi):
+        return "overlaps the paper's range"
+    return "**no**: below the paper's range" if hi <= plo else "**no**: above the paper's range"
+
+
+# ---- paired changes (the same bed at two values of a key)
+
+def pooled_sd(changes):
+    """(one bed's standard deviation of a change pooled over the groups of two or more changes, its
+    degrees of freedom, the number of such groups); the deviation is 0.0 when no group has two."""
+    groups = [d for d in changes if len(d) >= 2]
+    dof = sum(len(d) - 1 for d in groups)
+    return (math.sqrt(sum((x - mean(d)) ** 2 for d in groups for x in d) / dof) if dof else 0.0), dof, len(groups)
+
+
+def change_resolved(changes, spread):
+    """Whether a cell's mean change is >= RESOLVED standard errors (spread / sqrt(beds)) from zero."""
+    return bool(changes) and abs(mean(changes)) >= RESOLVED * spread / math.sqrt(len(changes))
