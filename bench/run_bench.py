@@ -24,6 +24,9 @@ Timings are the run phase only: wiggle's summary.json `run_wall_s` (bed excluded
 Then each case's `wiggle run --check` estimate (ns per particle-step, from this machine's speed log)
 against wiggle's measured one-thread median.
 
+The thread-scaling case (1, 2, 4, 8, 16 threads, with the step's profile) is bench/scaling.py, also
+run as `bench/run_bench.sh --scaling [its options]`.
+
 Usage: bench/run_bench.sh [--quick] [--cases small,preset,paper] [--codes wiggle,lammps,lammps-opt]
                           [--rounds N] [--threads 1,2] [--no-floor] [--lammps-opt PATH] ...
   --quick   the ~3,000-grain bed only (the 63,000-grain paper bed takes hours to make the first time)
@@ -246,6 +249,9 @@ def check_same_physics(rows, case, atoms, steps, tol):
 
 
 def main():
+    if "--scaling" in sys.argv[1:]:  # the thread-scaling case: bench/scaling.py, which builds nothing
+        args = [a for a in sys.argv[1:] if a != "--scaling"]
+        os.execv(sys.executable, [sys.executable, os.path.join(REPO, "bench", "scaling.py")] + args)
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--quick", action="store_true", help="small bed only")
     ap.add_argument("--rounds", type=int, default=3)

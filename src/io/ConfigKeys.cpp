@@ -217,6 +217,10 @@ const std::vector<KeyInfo>& keyTable() {
       boolean("run.bed_history", [](C& c) -> bool& { return c.run.keepBedHistory; },
               "start from the bed's contact history (false: every tangential spring unloaded, as an exported "
               "LAMMPS deck starts; for comparisons with LAMMPS)"),
+      boolean("run.profile", [](C& c) -> bool& { return c.run.profile; },
+              "time each stage of the step, and each thread's work and wait in its parallel regions: "
+              "summary.json's step_profile (docs/PERFORMANCE.md, \"The step's profile\"); the same bits, and "
+              "a clock read per stage per step"),
       // [fields]
       boolean("fields.enabled", [](C& c) -> bool& { return c.fields.enabled; },
               "measure the coarse-grained fields (area fraction, velocity, stress)"),

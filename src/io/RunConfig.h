@@ -106,6 +106,7 @@ struct RunDef {
   double dumpInterval = 9.7;       // run.dump_interval: LAMMPS dump frames every ... (0 = none) [sqrt(d/g)]
   bool plot = true;                // run.plot: draw the run's figures at the end
   bool keepBedHistory = true;      // run.bed_history: start with the bed's tangential springs (false: unloaded)
+  bool profile = false;            // run.profile: time the step's stages (summary.json's step_profile)
 };
 
 struct FieldsDef {

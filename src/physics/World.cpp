@@ -316,14 +316,20 @@ void World::step() { advance(false); }
 // values, so the same bits. The step after such a pass starts with its grains already moved
 // (grainsStarted_); the last step of run() ends whole, as step() always does.
 void World::advance(bool startNextStep) {
+  profile_.beginStep();
   if (!prepared_) prepare();
   if (!grainsStarted_) startGrains();
   grainsStarted_ = false;
   startIntruder();
   ++step_;
   placeIntruder();
-  if (listsStale_ || maxDisplacementSq_ > 0.25 * def_.skin * def_.skin) rebuildNeighbours();
-  else if (hasIntruder_ && intruderPairsStale()) rebuildIntruderPairs({});
+  const bool rebuild = listsStale_ || maxDisplacementSq_ > 0.25 * def_.skin * def_.skin;
+  const bool rebuildIntruder = !rebuild && hasIntruder_ && intruderPairsStale();
+  profile_.lap(StepStage::IntruderMotion);
+  if (rebuild)
+    rebuildNeighbours();
+  else if (rebuildIntruder)
+    rebuildIntruderPairs({});
   computeContactForces(true);
   // The full check is a scan of every particle: every healthInterval steps, and at once when the
   // force loop saw an overlap beyond the bound (a blow-up can open and close between two scans).
@@ -331,7 +337,18 @@ void World::advance(bool startNextStep) {
   const bool scan = overlapAlarm_ || step_ % def_.healthInterval == 0;
   grainsStarted_ = startNextStep && !scan;
   completeForces(true, grainsStarted_);
-  if (scan) checkHealth();
+  if (scan) {
+    checkHealth();
+    profile_.lap(StepStage::HealthScan);
+  }
+  profile_.endStep();
+}
+
+void World::enableStepProfile(bool on) {
+  if (on)
+    profile_.enable();
+  else
+    profile_.disable();
 }
 
 void World::prepare() {
@@ -354,7 +371,10 @@ void World::placeIntruder() {
   clumpState_.vx = p.vx;
 }
 
-void World::startGrains() { maxDisplacementSq_ = passOverGrains(GrainPass{.start = true, .track = !listsStale_}); }
+void World::startGrains() {
+  maxDisplacementSq_ = passOverGrains(GrainPass{.start = true, .track = !listsStale_});
+  profile_.lap(StepStage::StartGrains);
+}
 
 double World::passOverGrains(GrainPass pass) {
   ParticleStore& s = store_;
@@ -394,8 +414,12 @@ double World::passOverGrains(GrainPass pass) {
   // Each thread the grains of its strip (NeighbourList::strip), whose force blocks it has just
   // evaluated; before the first list build, an even share.
   const bool byStrip = list_.rowCount() == n;
+  const bool profiling = profile_.inStep();  // each thread's work, for the profile's wait (StepProfile)
+  if (profiling) profile_.beginRegion(omp_get_max_threads());
 #pragma omp parallel reduction(max : maxSq)
   {
+    const StepProfile::Clock::time_point start =
+        profiling ? StepProfile::Clock::now() : StepProfile::Clock::time_point{};
     const auto threads = static_cast<std::uint32_t>(omp_get_num_threads());
     const auto t = static_cast<std::uint32_t>(omp_get_thread_num());
     if (byStrip) {
@@ -405,6 +429,7 @@ double World::passOverGrains(GrainPass pass) {
       maxSq = range(a, static_cast<std::uint32_t>(std::uint64_t{n} * t / threads),
                     static_cast<std::uint32_t>(std::uint64_t{n} * (t + 1) / threads), dt, gravity);
     }
+    if (profiling) profile_.threadWorked(static_cast<int>(t), static_cast<int>(threads), start);
   }
   return maxSq;
 }
@@ -458,16 +483,19 @@ void World::rebuildNeighbours() {
     newToOld.swap(composed);
     lastSortStep_ = step_;
   }
+  profile_.lap(StepStage::ListSort);
 
   NeighbourList fresh;
   fresh.build(s, width, def_.skin, list_, newToOld);
   list_ = std::move(fresh);
+  profile_.lap(StepStage::ListBuild);
   xAtBuild_.assign(s.x.begin(), s.x.begin() + s.grainCount);
   yAtBuild_.assign(s.y.begin(), s.y.begin() + s.grainCount);
   maxDisplacementSq_ = 0.0;
   listsStale_ = false;
   ++rebuilds_;
   refreshKinematics();  // x was wrapped, grains may be re-sorted
+  profile_.lap(StepStage::ListRefresh);
   if (hasIntruder_) rebuildIntruderPairs(newToOld);
 }
 
@@ -538,6 +566,7 @@ void World::rebuildIntruderPairs(const std::vector<std::uint32_t>& newToOld) {
   clumpXAtBuild_ = cx;
   clumpYAtBuild_ = cy;
   grainDisplacementAtIntruderBuild_ = std::sqrt(maxDisplacementSq_);
+  profile_.lap(StepStage::IntruderPairs);
 }
 
 void World::computeContactForces(bool updateShear) {
@@ -555,8 +584,12 @@ void World::computeContactForces(bool updateShear) {
   //    intruder's pairs: they read only positions and velocities, which no block writes, and write
   //    only their own slots. The largest overlap excess is a max: no dependence on the threads.
   double worstExcess = -std::numeric_limits<double>::infinity();
+  const bool profiling = profile_.inStep();  // each thread's work, for the profile's wait (StepProfile)
+  if (profiling) profile_.beginRegion(omp_get_max_threads());
 #pragma omp parallel reduction(max : worstExcess)
   {
+    const StepProfile::Clock::time_point start =
+        profiling ? StepProfile::Clock::now() : StepProfile::Clock::time_point{};
     const auto threads = static_cast<std::uint32_t>(omp_get_num_threads());
     const auto t = static_cast<std::uint32_t>(omp_get_thread_num());
     if (t == 0 && hasIntruder_)
@@ -566,12 +599,15 @@ void World::computeContactForces(bool updateShear) {
     for (std::uint32_t b = strip.firstBlock; b < strip.lastBlock; ++b)
       worstExcess = std::max(worstExcess, kernels_->forceBlock(b, s, kinematics_.data(), list, params, dt, width,
                                                                updateShear, overlapRatio));
+    if (profiling) profile_.threadWorked(static_cast<int>(t), static_cast<int>(threads), start);
   }
+  profile_.lap(StepStage::ContactForces);
 
   // 2. The intruder's pair forces onto its grains and the clump, serially in list order (after the
   //    blocks, which start their grains' sums from zero), so that no sum depends on the thread count.
   if (hasIntruder_) addIntruderPairForces(s, clumpState_, intruderPairs_);
   overlapAlarm_ = worstExcess > 0.0;
+  profile_.lap(StepStage::IntruderSums);
 }
 
 void World::completeForces(bool kick, bool startNextStep) {
@@ -582,6 +618,7 @@ void World::completeForces(bool kick, bool startNextStep) {
       GrainPass{.finishForces = true, .kick = kick, .start = startNextStep, .track = startNextStep && !listsStale_});
   if (startNextStep) maxDisplacementSq_ = maxSq;
   if (kick && hasIntruder_ && motion_.verticalFree) kickIntruder();
+  profile_.lap(StepStage::CompleteForces);
 }
 
 }  // namespace wiggle

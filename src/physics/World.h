@@ -17,6 +17,7 @@
 #include "physics/NeighbourList.h"
 #include "physics/PairKernel.h"
 #include "physics/ParticleStore.h"
+#include "physics/StepProfile.h"
 
 namespace wiggle {
 
@@ -106,6 +107,10 @@ class World {
   // The force kernels' instruction set (ForceKernels.h; default: the widest the CPU runs). Every
   // level gives the same bits; only the speed differs. Throws if the CPU lacks it.
   void useSimdLevel(SimdLevel level) { kernels_ = &forceKernels(level, def_.contact.law); }
+  // The step's profile (physics/StepProfile.h): on from zero, or off. Not saved, never in the hash:
+  // it reads clocks only.
+  void enableStepProfile(bool on = true);
+  const StepProfile& stepProfile() const { return profile_; }
 
   // --- stepping ---
   void step();
@@ -213,6 +218,7 @@ class World {
   bool grainsStarted_ = false;  // inside run(): this step's first half kick and drift are done already
   bool overlapAlarm_ = false;  // the last force evaluation saw an overlap beyond the detector's bound
   HealthMargins margins_;
+  StepProfile profile_;  // off unless enableStepProfile
   // Neighbour-list validity: positions at the last build, the largest squared displacement since.
   std::vector<double> xAtBuild_, yAtBuild_;
   double maxDisplacementSq_ = 0.0;

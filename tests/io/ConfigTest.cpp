@@ -85,6 +85,7 @@ std::vector<std::string> differingFields(const RunConfig& a, const RunConfig& b)
   num("run.dumpInterval", a.run.dumpInterval, b.run.dumpInterval);
   other("run.plot", a.run.plot == b.run.plot);
   other("run.keepBedHistory", a.run.keepBedHistory == b.run.keepBedHistory);
+  other("run.profile", a.run.profile == b.run.profile);
   other("fields.enabled", a.fields.enabled == b.fields.enabled);
   bool samePhases = a.fields.phases.size() == b.fields.phases.size();
   for (std::size_t i = 0; samePhases && i < a.fields.phases.size(); ++i) {
@@ -148,6 +149,7 @@ const std::vector<std::tuple<std::string, std::string, std::string>>& everyKey()
       {"run.dump_interval", "0", "run.dumpInterval"},
       {"run.plot", "false", "run.plot"},
       {"run.bed_history", "false", "run.keepBedHistory"},
+      {"run.profile", "true", "run.profile"},
       {"fields.enabled", "false", "fields.enabled"},
       {"fields.phases", "[0, 5]", "fields.phases"},
       {"fields.radius", "10", "fields.radius"},
@@ -171,7 +173,7 @@ TEST(Config, KeyListIsExactlyTheSpecKeys) {
   std::set<std::string> expected;
   for (const auto& [key, value, field] : everyKey()) expected.insert(key);
   const std::vector<std::string> keys = configKeys();
-  EXPECT_EQ(keys.size(), 53u);
+  EXPECT_EQ(keys.size(), 54u);
   EXPECT_EQ(std::set<std::string>(keys.begin(), keys.end()), expected);
 }
 

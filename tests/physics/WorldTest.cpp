@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <numbers>
 #include <set>
@@ -227,11 +228,12 @@ TEST(World, HistorySurvivesRebuildAndResort) {
   EXPECT_GE(rebuildsSeen, 3);
 }
 
-std::string runPileWithThreads(int threads, int steps, SimdLevel simd = defaultSimdLevel()) {
+std::string runPileWithThreads(int threads, int steps, SimdLevel simd = defaultSimdLevel(), bool profile = false) {
   const int saved = omp_get_max_threads();
   omp_set_num_threads(threads);
   World w = makePile(20, 15, 3, 12.0, 9.0, 1.8);
   w.useSimdLevel(simd);
+  w.enableStepProfile(profile);
   ClumpDef clump;
   for (int a = 0; a < 12; ++a) {
     clump.offsetX.push_back(0.75 * std::cos(a * 0.5236));
@@ -251,6 +253,49 @@ TEST(World, BitwiseIdenticalForAnyThreadCount) {
   const std::string one = runPileWithThreads(1, 4000);
   EXPECT_EQ(runPileWithThreads(2, 4000), one);
   EXPECT_EQ(runPileWithThreads(3, 4000), one);
+}
+
+// The step's profile (physics/StepProfile.h) reads clocks only: the same bits with it on, at 1 and 2
+// threads.
+TEST(World, StepProfileKeepsTheBits) {
+  const std::string one = runPileWithThreads(1, 4000);
+  EXPECT_EQ(runPileWithThreads(1, 4000, defaultSimdLevel(), true), one);
+  EXPECT_EQ(runPileWithThreads(2, 4000, defaultSimdLevel(), true), one);
+}
+
+// Off by default; on, its stages sum to the steps' wall time, which lies within the wall time of the
+// run around them; each stage is counted where it ran.
+TEST(World, StepProfileStagesSumToTheStepsWallTime) {
+  World off = makePile(10, 6, 11);
+  off.run(10);
+  EXPECT_FALSE(off.stepProfile().on());
+  EXPECT_EQ(off.stepProfile().steps(), 0u);
+  for (const int threads : {1, 2}) {
+    const int saved = omp_get_max_threads();
+    omp_set_num_threads(threads);
+    World w = makePile(20, 15, 3);
+    w.enableStepProfile();
+    const auto start = std::chrono::steady_clock::now();
+    w.run(2000);
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    omp_set_num_threads(saved);
+    const StepProfile& p = w.stepProfile();
+    EXPECT_EQ(p.steps(), 2000u);
+    EXPECT_EQ(p.threads(), threads);
+    EXPECT_NEAR(p.stagedSeconds(), p.stepSeconds(), 1e-9 * p.stepSeconds());
+    EXPECT_LE(p.stepSeconds(), wall);
+    EXPECT_GT(p.stepSeconds(), 0.5 * wall);  // the rest: the loop between the steps
+    // Once a step, and once more for the first force evaluation (World::prepare, in the first step).
+    EXPECT_EQ(p.stage(StepStage::ContactForces).calls, 2000u + 1);
+    EXPECT_EQ(p.stage(StepStage::CompleteForces).calls, 2000u + 1);
+    EXPECT_GE(p.stage(StepStage::HealthScan).calls, 2000u / w.def().healthInterval);
+    EXPECT_EQ(p.stage(StepStage::ListBuild).calls, w.rebuildCount());
+    const StepProfile::StageTotals& forces = p.stage(StepStage::ContactForces);
+    EXPECT_NEAR(forces.workSeconds + forces.waitSeconds, forces.threadSeconds, 1e-9 * forces.threadSeconds);
+    EXPECT_NEAR(forces.threadSeconds, threads * forces.seconds, 1e-9 * forces.threadSeconds);
+    EXPECT_GE(p.serialShare(), 0.0);
+    EXPECT_LE(p.serialShare() + p.waitShare(), 1.0 + 1e-12);
+  }
 }
 
 // The force kernels of every instruction set this CPU runs (ForceKernels.h) give the same bits,

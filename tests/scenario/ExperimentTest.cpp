@@ -101,10 +101,12 @@ TEST(Experiment, ResumedRunIsBitwiseIdenticalToAnUninterruptedOne) {
   EXPECT_EQ(summary["steps"], 4000);
   EXPECT_EQ(summary["state_hash"], reference.summary.stateHash);
   EXPECT_GT(summary["n_grains"].get<int>(), 100);
-  // The file holds exactly the schema's keys, and reads back into the struct that wrote it.
+  // The file holds exactly the schema's keys (step_profile only with run.profile), and reads back into
+  // the struct that wrote it.
   std::vector<std::string> keys, schema;
   for (const auto& [key, value] : summary.items()) keys.push_back(key);
-  for (const SummaryField& f : summaryFields()) schema.push_back(f.name);
+  for (const SummaryField& f : summaryFields())
+    if (std::string(f.name) != "step_profile") schema.push_back(f.name);
   std::sort(schema.begin(), schema.end());
   EXPECT_EQ(keys, schema);
   EXPECT_EQ(toJson(summaryFromJson(summary)), summary);
@@ -114,6 +116,41 @@ TEST(Experiment, ResumedRunIsBitwiseIdenticalToAnUninterruptedOne) {
   int rows = -1;
   while (std::getline(rates, line)) ++rows;
   EXPECT_EQ(rows, 20);
+}
+
+// run.profile: summary.json's step_profile, whose stages sum to its step_s, within the run's wall
+// time; the same bits as without it, and no step_profile without it.
+TEST(Experiment, StepProfileOnlyWhenAskedWithTheSameBits) {
+  RunConfig plain = tinyConfig(scratch(""));
+  RunConfig profiled = plain;
+  profiled.run.profile = true;
+  const std::string without = scratch("profile-off"), with = scratch("profile-on");
+  const RunOutcome a = runExperiment(prepareCase(plain), quiet(without));
+  const RunOutcome b = runExperiment(prepareCase(profiled), quiet(with));
+  ASSERT_EQ(b.summary.status, RunStatus::Ok);
+  EXPECT_EQ(b.summary.stateHash, a.summary.stateHash);
+  EXPECT_FALSE(nlohmann::json::parse(readFile(without + "/summary.json")).contains("step_profile"));
+  const auto summary = nlohmann::json::parse(readFile(with + "/summary.json"));
+  ASSERT_TRUE(summary.contains("step_profile"));
+  const nlohmann::json& p = summary["step_profile"];
+  EXPECT_EQ(p["steps"], summary["steps"]);
+  const double step = p["step_s"].get<double>();
+  EXPECT_GT(step, 0.0);
+  EXPECT_LE(step, summary["run_wall_s"].get<double>());
+  double seconds = 0.0, shares = 0.0;
+  for (const auto& [name, stage] : p["stages"].items()) {
+    seconds += stage["s"].get<double>();
+    shares += stage["share"].get<double>();
+  }
+  EXPECT_NEAR(seconds, step, 1e-9 * step + 1e-12);
+  EXPECT_NEAR(shares, 1.0, 1e-9);
+  EXPECT_EQ(p["stages"]["contact_forces"]["calls"], summary["steps"]);
+  EXPECT_EQ(p["stages"].size(), 10u);
+  for (const char* share : {"serial_share", "wait_share"}) {
+    EXPECT_GE(p[share].get<double>(), 0.0) << share;
+    EXPECT_LE(p[share].get<double>(), 1.0) << share;
+  }
+  EXPECT_EQ(toJson(summaryFromJson(summary)), summary);
 }
 
 TEST(Experiment, FinishedRunExtendedIsTheLongerRunFromTheStart) {

@@ -50,10 +50,11 @@ void writeCheckpoint(const std::string& runDir, const std::string& configToml, c
 }
 
 std::string whyRunCannotContinue(const RunConfig& past, const RunConfig& now) {
-  const std::string key = firstDifferingKey(past, now, {"run.duration", "run.plot", "run.checkpoint_interval"});
+  const std::string key =
+      firstDifferingKey(past, now, {"run.duration", "run.plot", "run.checkpoint_interval", "run.profile"});
   if (!key.empty())
     return key + " is " + configValueString(now, key) + " here but " + configValueString(past, key) +
-           " in the run (only run.duration, longer, run.plot and run.checkpoint_interval may change)";
+           " in the run (only run.duration, longer, run.plot, run.checkpoint_interval and run.profile may change)";
   if (now.run.duration < past.run.duration)
     return "run.duration = " + configValueString(now, "run.duration") + " is shorter than the run's " +
            configValueString(past, "run.duration") + " (a run can be extended, not cut)";

@@ -270,6 +270,7 @@ RunSummary summarise(const Case& run, const std::string& dir, const World& world
   summary.contacts = world.touchingPairs();
   summary.intruderPairs = world.intruderPairs().size();
   summary.stateBytesPerGrain = static_cast<double>(world.stateBytes()) / std::max(1u, world.grainCount());
+  if (world.stepProfile().on()) summary.stepProfile = stepProfileJson(world.stepProfile());
   summary.shape = std::string(choiceName(config.intruder.shape));
   summary.amplitude = config.drive.amplitude;
   summary.period = config.drive.period;
@@ -492,6 +493,7 @@ RunOutcome runExperiment(const Case& run, const RunOptions& options) {
     if (ec) throw Error("cannot truncate " + dumpPath + ": " + ec.message());
   }
   World& world = *loaded;
+  world.enableStepProfile(config.run.profile);  // this process's stepping (a resumed run: since the resume)
   RunObservers observers(run, state, fields, dumpPath);
   if (world.stepCount() == 0 && state.samples.empty()) {
     // The forces of the start (drive on, bed history as configured), which the first step would

@@ -3,6 +3,7 @@
 #include <optional>
 
 #include "core/Error.h"
+#include "physics/StepProfile.h"
 
 namespace wiggle {
 
@@ -56,6 +57,9 @@ const std::vector<SummaryField>& summaryFields() {
       {"contacts", "", "listed pairs that touch at the last step", &S::contacts},
       {"intruder_pairs", "", "grain-atom pairs listed for the intruder at the end", &S::intruderPairs},
       {"state_bytes_per_grain", "B", "the simulation state's arrays per grain", &S::stateBytesPerGrain},
+      {"step_profile", "",
+       "only with run.profile: the step's wall time by stage, this process's stepping (docs/OUTPUT-FORMATS.md)",
+       &S::stepProfile},
       {"shape", "", "intruder.shape", &S::shape},
       {"amplitude", "d", "drive.amplitude", &S::amplitude},
       {"period", "sqrt(d/g)", "drive.period", &S::period},
@@ -74,7 +78,9 @@ nlohmann::json toJson(const RunSummary& summary) {
         [&](auto member) {
           if constexpr (std::is_same_v<decltype(member), RunStatus S::*>)
             j[f.name] = choiceName(summary.*member);  // the word, never the enum's number
-          else
+          else if constexpr (std::is_same_v<decltype(member), nlohmann::json S::*>) {
+            if (!(summary.*member).is_null()) j[f.name] = summary.*member;  // an optional object: absent when off
+          } else
             j[f.name] = summary.*member;
         },
         f.member);
@@ -97,6 +103,10 @@ RunSummary summaryFromJson(const nlohmann::json& json) {
                 throw Error(std::string("summary: key '") + f.name + "' is '" + word + "', none of " +
                             joinedNames(choiceNameList<RunStatus>()));
               summary.*member = *status;
+            } else if constexpr (std::is_same_v<decltype(member), nlohmann::json S::*>) {
+              if (!it->is_object() && !it->is_null())
+                throw Error(std::string("summary: key '") + f.name + "' has the wrong type");
+              summary.*member = *it;
             } else {
               it->get_to(summary.*member);
             }
@@ -107,6 +117,33 @@ RunSummary summaryFromJson(const nlohmann::json& json) {
         f.member);
   }
   return summary;
+}
+
+nlohmann::json stepProfileJson(const StepProfile& profile) {
+  const double step = profile.stepSeconds();
+  auto share = [step](double seconds) { return step > 0 ? seconds / step : 0.0; };
+  nlohmann::json stages = nlohmann::json::object();
+  for (std::size_t k = 0; k < StepProfile::kStages; ++k) {
+    const auto stage = static_cast<StepStage>(k);
+    const StepProfile::StageTotals& t = profile.stage(stage);
+    const StageInfo& info = stageInfo(stage);
+    nlohmann::json entry = {
+        {"kind", stageKindName(info.kind)}, {"s", t.seconds}, {"share", share(t.seconds)}, {"calls", t.calls}};
+    if (info.kind == StageKind::Parallel) {
+      entry["work_s"] = t.workSeconds;
+      entry["wait_s"] = t.waitSeconds;
+      entry["wait_share"] = t.threadSeconds > 0 ? t.waitSeconds / t.threadSeconds : 0.0;
+    }
+    stages[std::string(info.name)] = entry;
+  }
+  const double serial = profile.serialShare(), wait = profile.waitShare();
+  return {{"threads", profile.threads()},
+          {"steps", profile.steps()},
+          {"step_s", step},
+          {"serial_share", serial},
+          {"wait_share", wait},
+          {"serial_and_wait_share", serial + wait},
+          {"stages", stages}};
 }
 
 nlohmann::json summarySchema() {
@@ -120,6 +157,8 @@ nlohmann::json summarySchema() {
           else if constexpr (std::is_same_v<T, std::uint64_t>) return "integer";
           else if constexpr (std::is_same_v<T, std::string> || std::is_same_v<T, RunStatus>) return "string";
           else if constexpr (std::is_same_v<T, std::vector<std::string>>) return "list of strings";
+          else if constexpr (std::is_same_v<T, nlohmann::json>)
+            return "object";
           else return "list of integers";
         },
         f.member);

@@ -48,6 +48,7 @@ struct RunSummary {
   // engine diagnostics at the end of the run
   std::uint64_t neighbourPairs = 0, contacts = 0, intruderPairs = 0;
   double stateBytesPerGrain = 0.0;
+  nlohmann::json stepProfile;  // run.profile: stepProfileJson; null (absent from the file) when off
   // the case's parameters again, for convenience
   std::string shape;
   double amplitude = 0.0, period = 0.0, mu = 0.0;
@@ -60,7 +61,8 @@ struct SummaryField {
   const char* unit;     // "" for none
   const char* meaning;  // one line
   std::variant<double RunSummary::*, bool RunSummary::*, std::uint64_t RunSummary::*, std::string RunSummary::*,
-               std::vector<std::string> RunSummary::*, std::vector<std::uint64_t> RunSummary::*, RunStatus RunSummary::*>
+               std::vector<std::string> RunSummary::*, std::vector<std::uint64_t> RunSummary::*,
+               RunStatus RunSummary::*, nlohmann::json RunSummary::*>
       member;
 };
 
@@ -72,6 +74,12 @@ nlohmann::json toJson(const RunSummary& summary);
 // Reads a summary.json object; a key that is missing keeps its default (files written by an older
 // wiggle), a key of the wrong type throws wiggle::Error naming it.
 RunSummary summaryFromJson(const nlohmann::json& json);
+
+class StepProfile;
+// summary.json's step_profile (docs/OUTPUT-FORMATS.md): threads, steps, step_s, serial_share,
+// wait_share, serial_and_wait_share and per stage its kind, seconds, share and calls (with the
+// parallel stages' work_s, wait_s and wait_share).
+nlohmann::json stepProfileJson(const StepProfile& profile);
 
 // The schema as JSON: [{"name", "type", "unit", "meaning"}, ...] (docs/summary-schema.json).
 nlohmann::json summarySchema();
