@@ -11,6 +11,7 @@
 #include <random>
 #include <vector>
 
+#include "physics/ContactLaws.h"
 #include "physics/PairKernel.h"
 
 namespace wiggle {

@@ -168,7 +168,7 @@ TEST(LammpsExport, DeckHoldsTheCaseParameters) {
 
   World hooke = smallWorld(MassModel::Sphere);  // the deck takes the law from the world it exports
   WorldDef def = hooke.def();
-  def.contact.law = ContactLaw::Hooke;
+  def.contact.law = contactLaw<HookeLaw>;
   hooke.setParameters(def);
   const std::string inHooke = makeLammpsDeck(hooke, prepareCase(config)).input;
   EXPECT_NE(inHooke.find("pair_style gran/hooke/history 2000000 2460000 2500 2500 0.10000000000000001 1\n"),
