@@ -14,6 +14,7 @@
 #include "core/Choice.h"
 #include "physics/ContactLaw.h"
 #include "physics/HertzLaw.h"
+#include "physics/HertzLimitDampingLaw.h"
 #include "physics/HookeLaw.h"
 
 namespace wiggle {
@@ -27,7 +28,8 @@ inline namespace WIGGLE_ISA_NAMESPACE {
 // bed files hold and bed keys hash: append, never reorder. The first is the default.
 // clang-format off
 using ContactLaws = LawList<HertzLaw,
-                            HookeLaw>;
+                            HookeLaw,
+                            HertzLimitDampingLaw>;
 // clang-format on
 
 template <class Law, class... Laws>
