@@ -361,6 +361,10 @@ TEST(World, TimeStepCheckUsesTheLawsContactTime) {
   }
   const ContactParams hooke{2e6, 2.46e6, 2500, 2500, 0.1, contactLaw<HookeLaw>};
   const double mass = 4.0 / 3.0 * std::numbers::pi * 0.45 * 0.45 * 0.45;
+  // limit_damping clamps the damping's pull only: the undamped contact is Hertz's.
+  const ContactParams hertz, limited{2e6, 2.46e6, 2500, 2500, 0.1, contactLaw<HertzLimitDampingLaw>};
+  EXPECT_EQ(contactLawTraits(limited.law).contactTime(limited, 0.45, mass, 1.0),
+            contactLawTraits(hertz.law).contactTime(hertz, 0.45, mass, 1.0));
   EXPECT_NEAR(contactLawTraits(hooke.law).contactTime(hooke, 0.45, mass, 1.0),
               std::numbers::pi * std::sqrt(0.5 * mass / 2e6), 1e-15);
 }

@@ -134,7 +134,9 @@ def with_law(case, law, style, keywords=""):
 
 CASES = {"oblique": case_oblique, "bounce": case_bounce, "pile": case_pile, "clump": case_clump,
          "pile_hooke": with_law(case_pile, "hooke", "hooke"),
-         "clump_hooke": with_law(case_clump, "hooke", "hooke")}
+         "clump_hooke": with_law(case_clump, "hooke", "hooke"),
+         "pile_hertz_limit_damping": with_law(case_pile, "hertz_limit_damping", "hertz", "limit_damping"),
+         "clump_hertz_limit_damping": with_law(case_clump, "hertz_limit_damping", "hertz", "limit_damping")}
 
 # --------------------------------------------------------------------------------------------
 
