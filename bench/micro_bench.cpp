@@ -21,7 +21,7 @@
 
 #include "analysis/FieldObserver.h"
 #include "io/RunConfig.h"
-#include "physics/ContactLaw.h"
+#include "physics/HertzLaw.h"
 #include "physics/PairKernel.h"
 #include "physics/World.h"
 #include "scenario/bed/BedMaker.h"

@@ -59,11 +59,35 @@ KeyInfo shapesBed(KeyInfo k) {
   return k;
 }
 
+// contact.law's help: what each law is, as the law types say (physics/ContactLaws.h).
+std::string contactLawHelp() {
+  std::string help = "the force law of every contact (docs/PHYSICS.md section 4): ";
+  for (const ContactLawTraits& law : contactLawList())
+    help += (&law == contactLawList().data() ? "" : "; ") + std::string(law.name) + " = " + std::string(law.summary);
+  return help;
+}
+
+// A stiffness's help, naming its unit under each law whose unit is not the default law's (the key's
+// unit column).
+std::string stiffnessHelp(std::string_view what) {
+  std::string others;
+  for (const ContactLawTraits& law : contactLawList())
+    if (law.stiffnessUnit != contactLawList().front().stiffnessUnit)
+      others += (others.empty() ? "" : "; ") + std::string("contact.law = \"") + std::string(law.name) +
+                "\": " + std::string(law.stiffnessUnit);
+  return std::string(what) + (others.empty() ? "" : " (with " + others + ")");
+}
+
 }  // namespace
 
 using C = RunConfig;
 
 const std::vector<KeyInfo>& keyTable() {
+  // The table holds views of its texts: the ones made here live as long as it does.
+  static const std::string lawHelp = contactLawHelp();
+  static const std::string knHelp = stiffnessHelp("normal stiffness K_n");
+  static const std::string ktHelp = stiffnessHelp("tangential stiffness K_t");
+  const std::string_view stiffnessUnit = contactLawList().front().stiffnessUnit;
   static const std::vector<KeyInfo> table = {
       // [box]
       shapesBed(number("box.width", [](C& c) -> double& { return c.box.width; }, above(0), noBound, "d",
@@ -88,13 +112,11 @@ const std::vector<KeyInfo>& keyTable() {
                     "contact.law", choiceNameList<ContactLaw>(),
                     [](const C& c) -> std::string { return std::string(choiceName(c.contact.law)); },
                     [](C& c, const std::string& v) { c.contact.law = *choiceNamed<ContactLaw>(v); },
-                    "the force law of every contact: hertz = LAMMPS's gran/hertz/history, the paper's; hooke = "
-                    "gran/hooke/history, the same law without its sqrt(overlap Reff) factor (a linear spring-dashpot; "
-                    "kn and kt are then forces per length, m g / d; docs/PHYSICS.md section 4)")),
+                    lawHelp)),
       shapesBed(number("contact.kn", [](C& c) -> double& { return c.contact.kn; }, above(0), noBound,
-                       "m g / d^2", "normal stiffness K_n (with contact.law = \"hooke\": m g / d)")),
+                       stiffnessUnit, knHelp)),
       shapesBed(number("contact.kt", [](C& c) -> double& { return c.contact.kt; }, above(0), noBound,
-                       "m g / d^2", "tangential stiffness K_t (with contact.law = \"hooke\": m g / d)")),
+                       stiffnessUnit, ktHelp)),
       shapesBed(number("contact.gamma_n", [](C& c) -> double& { return c.contact.gammaN; }, atLeast(0),
                        noBound, "1/(d sqrt(d/g))", "normal viscoelastic damping gamma_n")),
       shapesBed(number("contact.gamma_t", [](C& c) -> double& { return c.contact.gammaT; }, atLeast(0),

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "physics/ContactLaw.h"
+#include "physics/ContactLaws.h"
 #include "physics/ParticleStore.h"
 
 namespace wiggle {

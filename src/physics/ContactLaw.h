@@ -1,14 +1,17 @@
 #pragma once
-// The contact laws of LAMMPS `pair_style gran/hertz/history` (the default) and
-// `pair_style gran/hooke/history` (docs/PHYSICS.md §4), restricted to 2D.
+// The granular contact law of LAMMPS's `pair_style gran/*/history` family (docs/PHYSICS.md §4),
+// restricted to 2D: what every law shares, and what a law is (a policy type). The laws themselves
+// are one header each (HertzLaw.h, HookeLaw.h, ...) and are listed in ContactLaws.h, the one place
+// a law is registered.
 //
 // Source: LAMMPS src/GRANULAR/pair_gran_hertz_history.cpp, PairGranHertzHistory::compute(), and
-// pair_gran_hooke_history.cpp, PairGranHookeHistory::compute() (version 29 Sep 2021). The two
-// routines are the same but for one factor: Hertz scales the normal force and the tangential force
-// (spring and damping alike) by sqrt(delta Reff); Hooke does not (its stiffnesses are then forces per
-// length). So one law is written here, with that factor from a policy type (HertzLaw, HookeLaw)
-// chosen at compile time: each law's pair loops are compiled on their own, and the Hertz path is
-// the same code, with the same bits, as before the Hooke law existed.
+// pair_gran_hooke_history.cpp, PairGranHookeHistory::compute() (version 29 Sep 2021). The routines
+// differ only in what a law policy supplies below: Hertz scales the normal force and the tangential
+// force (spring and damping alike) by sqrt(delta Reff), Hooke does not (its stiffnesses are then
+// forces per length), and the `limit_damping` keyword clamps the normal force at zero. So the law is
+// written once here, templated over the policy: each law's pair loops are compiled on their own, and
+// a policy whose functions are identities costs nothing (the Hertz path is the same code, with the
+// same bits, as before any other law existed).
 //
 // The arithmetic follows those routines' formulas with the z terms dropped (in 2D each is an exact
 // zero: delz, vr3, omega_x, omega_y). It is not LAMMPS's operation order everywhere: LAMMPS divides
@@ -22,28 +25,38 @@
 //   kn, kt     normal and tangential stiffness         gammaN/T   viscoelastic damping
 //   mu         Coulomb friction coefficient               dt         time step
 //   shearX/Y   stored tangential displacement (history) of the pair, in i's frame
-//   scale      sqrt(delta Reff) for Hertz, 1 for Hooke (delta = Ri + Rj - r, the overlap)
-// Normal force: Fn = scale (kn delta - meff gammaN vn), not clamped at zero.
-// Tangential: s += vt dt, s projected on the tangent plane (length not restored), then
-// Ft = -scale (kt s + meff gammaT vt), capped at mu |Fn| with s rescaled so that spring
-// plus damping give exactly the capped force.
+//   scale      the law's factor of both forces: sqrt(delta Reff) for Hertz, 1 for Hooke
+//              (delta = Ri + Rj - r, the overlap)
+// Normal force: Fn = scale (kn delta - meff gammaN vn), then the law's normalForce (the identity, or
+// a clamp at zero). Tangential: s += vt dt, s projected on the tangent plane (length not restored),
+// then Ft = -scale (kt s + meff gammaT vt), capped at mu |Fn| with s rescaled so that spring plus
+// damping give exactly the capped force.
 // Outputs: (fx, fy) is the force on i (j gets the opposite); the torques are
 // torque_i -= radI * torqueArm, torque_j -= radJ * torqueArm.
-#include <array>
+//
+// A law is a type that the engine, the checks, the help and the
+// LAMMPS export ask instead of switching on its name:
+//   kName            contact.law's word for it (config, checkpoints by position in ContactLaws.h)
+//   kSummary         what it is, for the help of contact.law
+//   kStiffnessUnit   the unit of contact.kn and contact.kt under it
+//   kHistoryValues   doubles of per-pair history it keeps: 2 (the shear displacement s, the
+//                    pair slots' shearX/Y) for every law so far
+//   scale(delta, reff), normalForce(ccel)   its force, templated over V (double or lanes) and
+//                    branch-free, used by contactTrial below
+//   contactTime(contact, radius, mass, speed)   a head-on contact's duration, for the step check
+//   lammpsPairStyle(contact)   the `pair_style` and `pair_coeff` lines of the LAMMPS deck
 #include <cstdint>
+#include <string>
 #include <string_view>
 
-#include "core/Choice.h"
+#include "core/Format.h"
 #include "core/Simd.h"
 
 namespace wiggle {
 
-// contact.law: which force law the pairs follow.
-enum class ContactLaw : std::uint8_t { Hertz, Hooke };
-template <>
-struct ChoiceNames<ContactLaw> {
-  static constexpr std::array<std::string_view, 2> names{"hertz", "hooke"};
-};
+// contact.law: which force law the pairs follow, as its position in ContactLaws (ContactLaws.h,
+// which also names the values: ChoiceNames<ContactLaw>). The zero value is the first law, Hertz.
+enum class ContactLaw : std::uint8_t {};
 
 struct ContactParams {
   double kn = 2e6;        // normal stiffness [rho d g]... Kn of docs/PHYSICS.md §4 (units of the paper)
@@ -51,28 +64,28 @@ struct ContactParams {
   double gammaN = 2500;   // normal damping [sqrt(g/d)]
   double gammaT = 2500;   // tangential damping [sqrt(g/d)]
   double mu = 0.1;        // Coulomb friction coefficient
-  ContactLaw law = ContactLaw::Hertz;  // the same numbers serve both laws; kn, kt mean other units in each
+  ContactLaw law{};       // the same numbers serve every law; kn, kt mean other units in some (kStiffnessUnit)
 };
+
+// The doubles of history a pair slot holds (PairSlots, NeighbourList, IntruderPairs: shearX, shearY);
+// a law that keeps more needs those widened first (PairKernel.h checks each law against it).
+inline constexpr int kPairHistoryValues = 2;
 
 // The law's functions are compiled once per instruction set (core/Simd.h: the inline namespace).
 inline namespace WIGGLE_ISA_NAMESPACE {
 
-// The laws' one difference, as policies of the pair kernels: the factor of both forces.
-struct HertzLaw {
-  static constexpr ContactLaw kLaw = ContactLaw::Hertz;
-  template <class V>
-  static V scale(V overlap, V reff) {
-    using simd::sqrt;
-    return sqrt(overlap * reff);
-  }
-};
-struct HookeLaw {
-  static constexpr ContactLaw kLaw = ContactLaw::Hooke;
-  template <class V>
-  static V scale(V, V) {
-    return V(1.0);  // x * 1 is x exactly, so the compiler drops the products
-  }
-};
+// The `pair_style gran/<style>/history` line a law of this family writes into a LAMMPS deck, with
+// its coefficients to 17 digits, dampflag 1 (tangential damping on) and the law's keywords, if any,
+// and the `pair_coeff` line that applies it to every pair of types.
+inline std::string granularPairStyle(std::string_view style, const ContactParams& p, std::string_view keywords = {}) {
+  std::string text = "pair_style ";
+  text += style;
+  for (const double v : {p.kn, p.kt, p.gammaN, p.gammaT, p.mu}) (text += ' ') += formatNumber(v, 17);
+  text += " 1";
+  if (!keywords.empty()) (text += ' ') += keywords;
+  text += "\npair_coeff * *\n";
+  return text;
+}
 
 template <class V>  // double, or lanes of doubles (core/Simd.h)
 struct ContactForceOf {
@@ -133,10 +146,11 @@ inline ContactTrial<V> contactTrial(const ContactParams& p, double dt, V dx, V d
   const V vt2 = dvy - vn2;
   const V wr3 = (radI * omegaI + radJ * omegaJ) * rinv;
 
-  // Normal force: spring plus velocity damping, scaled by the law (Hertz: sqrt(delta Reff)).
+  // Normal force: spring plus velocity damping, scaled by the law (Hertz: sqrt(delta Reff)), then
+  // as the law applies it (clamped at zero under limit_damping, before the Coulomb cap reads it).
   const V damp = meff * p.gammaN * vnnr * rsqinv;
   const V polyhertz = Law::scale(radsum - r, reff);
-  const V ccel = (p.kn * (radsum - r) * rinv - damp) * polyhertz;
+  const V ccel = Law::normalForce((p.kn * (radsum - r) * rinv - damp) * polyhertz);
 
   // Relative tangential velocity at the contact point, rotation included.
   const V vtr1 = vt1 + dy * wr3;

@@ -3,6 +3,8 @@
 // (scalar, avx2, avx512) and WIGGLE_KERNEL_LANES the lanes it must have; everything here has
 // internal linkage but the one function that hands out the variant's table.
 #include <algorithm>
+#include <array>
+#include <cstddef>
 #include <limits>
 #include <type_traits>
 
@@ -122,17 +124,22 @@ constexpr SimdLevel kLevel = WIGGLE_KERNEL_LANES == 8   ? SimdLevel::Avx512
                                                         : SimdLevel::Scalar;
 
 template <class Law>
-constexpr ForceKernels kKernels{kLevel, WIGGLE_KERNEL_LANES, Law::kLaw, &forceBlock<Law>, &intruderPairForces<Law>};
+constexpr ForceKernels kKernels{kLevel, WIGGLE_KERNEL_LANES, contactLaw<Law>, &forceBlock<Law>,
+                                &intruderPairForces<Law>};
+
+// Every law's kernels (ContactLaws.h), indexed by its ContactLaw value.
+template <class... Laws>
+constexpr std::array<const ForceKernels*, sizeof...(Laws)> kernelsOf(LawList<Laws...>) {
+  return {&kKernels<Laws>...};
+}
+constexpr auto kKernelsByLaw = kernelsOf(ContactLaws{});
 
 }  // namespace
 
-// Declared (and called only on a CPU that has the instruction set) in ForceKernels.cpp.
+// Declared (and called only on a CPU that has the instruction set, for a law that exists) in
+// ForceKernels.cpp.
 const ForceKernels& WIGGLE_KERNEL_TABLE_NAME(WIGGLE_KERNEL_VARIANT)(ContactLaw law) {
-  switch (law) {
-    case ContactLaw::Hooke: return kKernels<HookeLaw>;
-    case ContactLaw::Hertz: break;
-  }
-  return kKernels<HertzLaw>;
+  return *kKernelsByLaw[static_cast<std::size_t>(law)];
 }
 
 }  // namespace wiggle

@@ -58,6 +58,7 @@ std::string simdLevelName(SimdLevel level) {
 
 const ForceKernels& forceKernels(SimdLevel level, ContactLaw law) {
   if (!cpuRuns(level)) throw Error("this CPU cannot run the " + simdLevelName(level) + " force kernels");
+  if (!isChoice<ContactLaw>(law)) throw Error("no force kernels for an unknown contact law");
   switch (level) {
 #if WIGGLE_X86_KERNELS
     case SimdLevel::Avx512: return forceKernels_avx512(law);

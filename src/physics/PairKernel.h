@@ -44,7 +44,7 @@ inline V minimumImage(V dx, double width) {
   return select(dx > V(halfWidth), dx - V(width), select(dx < V(-halfWidth), dx + V(width), dx));
 }
 
-// The contact law Law (ContactLaw.h: HertzLaw or HookeLaw) for the pairs in `in` (one, or lanes of
+// The contact law Law (a law of ContactLaws.h) for the pairs in `in` (one, or lanes of
 // four), whose slots start at k: history read from and written to shearX/Y[k..], force and torque
 // arm written to forceX/Y and torqueArm.
 // Returns, per lane, (radI + radJ - allowed)^2 - r^2, allowed being `overlapRatio` x alarmRadius:
@@ -53,6 +53,7 @@ inline V minimumImage(V dx, double width) {
 template <class Law, class V>
 inline V evaluatePairs(const PairInputs<V>& in, std::uint32_t k, PairSlots slots, const ContactParams params, double dt,
                        bool updateShear, double overlapRatio) {
+  static_assert(Law::kHistoryValues == kPairHistoryValues, "the pair slots hold the shear displacement s alone");
   using simd::load;
   using simd::store;
   const ContactForceOf<V> c =

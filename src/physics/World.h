@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "core/BinaryStream.h"
-#include "physics/ContactLaw.h"
+#include "physics/ContactLaws.h"
 #include "physics/ForceKernels.h"
 #include "physics/Intruder.h"
 #include "physics/NeighbourList.h"
@@ -39,7 +39,7 @@ struct WorldDef {
   double referenceImpactSpeed = 1.0;   // the fastest a grain moves without the drive (a fall from the top of the
                                        // pour) [sqrt(g d)]: the time-step check and the speed bound use it
   double maxSpeedFactor = 10.0;        // blow-up: a grain faster than this x max(referenceImpactSpeed, drive's peak)
-  double minStepsPerContact = 5.0;     // refuse dt above (contact time, contactTime below) / this
+  double minStepsPerContact = 5.0;     // refuse dt above (the law's contactTime, ContactLaws.h) / this
 };
 
 // What the blow-up detector has seen so far, at its full scans: the deepest overlap as a fraction of
@@ -55,12 +55,6 @@ class SimulationError : public Error {
  public:
   using Error::Error;
 };
-
-// Duration of a head-on contact of two grains of radius `radius` and mass `mass` meeting at `speed`,
-// without damping (damping only lengthens it), meff = m/2, Reff = r/2. Hertz, F = kn sqrt(Reff)
-// delta^(3/2): t_c = 2.9433 delta_max / speed, delta_max = (5 meff v^2 / (4 kn sqrt(Reff)))^(2/5).
-// Hooke, F = kn delta: half a period of the spring, t_c = pi sqrt(meff / kn), whatever the speed.
-double contactTime(const ContactParams& contact, double radius, double mass, double speed);
 
 // The intruder's pair forces (in its pair slots, ForceKernels::intruderPairForces) added to its
 // grains (base particles get none) and summed into the clump's contact force, in list order.

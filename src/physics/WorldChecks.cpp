@@ -3,7 +3,6 @@
 // the state's size and its hash.
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <string>
 #include <type_traits>
 
@@ -12,18 +11,6 @@
 #include "physics/World.h"
 
 namespace wiggle {
-
-double contactTime(const ContactParams& contact, double radius, double mass, double speed) {
-  const double meff = 0.5 * mass;
-  switch (contact.law) {
-    case ContactLaw::Hooke: return std::numbers::pi * std::sqrt(meff / contact.kn);
-    case ContactLaw::Hertz: break;
-  }
-  const double reff = 0.5 * radius;
-  const double k = contact.kn * std::sqrt(reff);
-  const double deltaMax = std::pow(5.0 * meff * speed * speed / (4.0 * k), 0.4);
-  return 2.9433 * deltaMax / speed;
-}
 
 // ---------------------------------------------------------------- checks
 
@@ -52,7 +39,8 @@ void World::checkTimeStep() const {
   for (std::uint32_t i = 1; i < s.grainCount; ++i)
     if (s.mass[i] < s.mass[lightest]) lightest = i;
   const double speed = std::max(def_.referenceImpactSpeed, peakDriveSpeed());
-  const double duration = contactTime(def_.contact, s.radius[lightest], s.mass[lightest], speed);
+  const double duration =
+      contactLawTraits(def_.contact.law).contactTime(def_.contact, s.radius[lightest], s.mass[lightest], speed);
   const double limit = duration / def_.minStepsPerContact;
   if (def_.dt > limit)
     throw Error("run.dt = " + formatNumber(def_.dt) + " is too large: a " + std::string(choiceName(def_.contact.law)) +

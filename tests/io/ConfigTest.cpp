@@ -187,6 +187,15 @@ TEST(Config, EveryKeyReachesItsOwnFieldAndNoOther) {
   }
 }
 
+// contact.law takes every registered law's word (physics/ContactLaws.h), the third one included.
+TEST(Config, ContactLawTakesEveryLawsWord) {
+  EXPECT_EQ(choiceNameList<ContactLaw>(), (std::vector<std::string_view>{"hertz", "hooke", "hertz_limit_damping"}));
+  for (const std::string_view name : choiceNameList<ContactLaw>())
+    EXPECT_EQ(choiceName(loadRunConfig(std::nullopt, {"contact.law=" + std::string(name)}).contact.law), name);
+  EXPECT_EQ(loadRunConfig(std::nullopt, {"contact.law=hertz_limit_damping"}).contact.law,
+            contactLaw<HertzLimitDampingLaw>);
+}
+
 TEST(Config, DefaultsAreValidAndNoPathMeansDefaults) {
   EXPECT_NO_THROW(validateRunConfig(RunConfig{}));
   const RunConfig c = loadRunConfig(std::nullopt, {});

@@ -35,6 +35,7 @@
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -138,16 +139,34 @@ AtomState atomState(const World& w, const Built& b, const std::vector<std::uint3
           i >= p.grainCount, false};
 }
 
+// A deck's `pair_style` line: the style and the keywords after its six coefficients.
+struct PairStyle {
+  std::string style;
+  std::vector<std::string> keywords;
+  bool operator==(const PairStyle&) const = default;
+};
+PairStyle pairStyleIn(const std::string& deck) {
+  std::istringstream lines(deck);
+  for (std::string line; std::getline(lines, line);) {
+    std::istringstream in(line);
+    std::vector<std::string> words;
+    for (std::string w; in >> w;) words.push_back(w);
+    if (words.size() >= 8 && words[0] == "pair_style") return {words[1], {words.begin() + 8, words.end()}};
+  }
+  throw Error("no pair_style line in the deck");
+}
+
 // LAMMPS PairGranHertzHistory::single() and PairGranHookeHistory::single() (29 Sep 2021) in 2D
-// (the same but for Hertz's factor polyhertz): the shear force on atom 1 from the
-// stored history (shearX, shearY in atom 1's frame) and the current velocities, capped at mu |Fn|
-// without touching the history. Returns {ccel r, fs1, fs2}: the normal force (ccel r, as compute
+// (the same but for Hertz's factor polyhertz), as the reference deck's pair style asks: the shear
+// force on atom 1 from the stored history (shearX, shearY in atom 1's frame) and the current
+// velocities, capped at mu |Fn| without touching the history; with `limit_damping` the normal force
+// is first clamped at zero. Returns {ccel r, fs1, fs2}: the normal force (ccel r, as compute
 // pair/local's `force` output) and the shear force on atom 1.
 struct SingleOut {
   double ccel, fs1, fs2;
 };
-SingleOut lammpsSingle(const ContactParams& p, double width, const AtomState& a, const AtomState& b,
-                       double shearX, double shearY) {
+SingleOut lammpsSingle(const ContactParams& p, const PairStyle& style, double width, const AtomState& a,
+                       const AtomState& b, double shearX, double shearY) {
   double delx = a.x - b.x;
   delx -= width * std::round(delx / width);
   const double dely = a.y - b.y;
@@ -164,8 +183,11 @@ SingleOut lammpsSingle(const ContactParams& p, double width, const AtomState& a,
   if (b.frozen) meff = a.mass;
   const double damp = meff * p.gammaN * vnnr * rsqinv;
   double ccel = p.kn * (radsum - r) * rinv - damp;
-  const double polyhertz = p.law == ContactLaw::Hertz ? std::sqrt((radsum - r) * a.radius * b.radius / radsum) : 1.0;
+  const double polyhertz =
+      style.style == "gran/hertz/history" ? std::sqrt((radsum - r) * a.radius * b.radius / radsum) : 1.0;
   ccel *= polyhertz;
+  const auto& k = style.keywords;
+  if (std::find(k.begin(), k.end(), "limit_damping") != k.end() && ccel < 0.0) ccel = 0.0;
   const double vtr1 = vt1 + dely * wr3, vtr2 = vt2 - delx * wr3;
   const double shrmag = std::sqrt(shearX * shearX + shearY * shearY);
   double fs1 = -polyhertz * (p.kt * shearX + meff * p.gammaT * vtr1);
@@ -233,6 +255,8 @@ struct Comparison {
   int contactsCompared = 0;
   int contactsCapped = 0;   // wiggle pairs whose tangential force sat on the Coulomb cap
   int contactsSticking = 0;
+  int lammpsPulling = 0;  // LAMMPS contact rows whose normal force is negative (the damping pulls)
+  int lammpsClamped = 0;  // ... and exactly zero (limit_damping clamped it)
   double clumpYTravel = 0.0;
 };
 
@@ -263,6 +287,10 @@ Comparison compareCase(const std::string& name) {
   World probe = buildWorld(c, bp, 1);
   const double width = c["box_width"];
   const ContactParams& params = w.def().contact;
+  // The law wiggle runs writes the pair style LAMMPS ran (the export's deck, ContactLaws.h).
+  const PairStyle style = pairStyleIn(c["deck"]);
+  EXPECT_EQ(pairStyleIn(contactLawTraits(params.law).lammpsPairStyle(params)), style)
+      << name << ": wiggle's law " << choiceName(params.law) << " is not the deck's " << style.style;
   Comparison cmp;
   double clumpYMin = 1e300, clumpYMax = -1e300;
   auto wrapped = [width](double d) { return d - width * std::round(d / width); };
@@ -352,10 +380,12 @@ Comparison compareCase(const std::string& name) {
       const bool ghost = std::fabs(lammpsX.at(id1) - lammpsX.at(id2)) > 0.5 * width;
       const AtomState s1 = atomState(w, b, idx, id1), s2 = atomState(w, b, idx, id2, ghost);
       const std::string where = "pair " + std::to_string(id1) + "-" + std::to_string(id2);
-      const SingleOut o = lammpsSingle(params, width, s1, s2, sx, sy);
-      const SingleOut po = lammpsSingle(params, width, atomState(probe, bp, pidx, id1),
+      const SingleOut o = lammpsSingle(params, style, width, s1, s2, sx, sy);
+      const SingleOut po = lammpsSingle(params, style, width, atomState(probe, bp, pidx, id1),
                                         atomState(probe, bp, pidx, id2, ghost), psx, psy);
       record(cmp, "contact fn", o.ccel, ct["fn"][k], po.ccel, step, where);
+      if (double(ct["fn"][k]) < 0.0) ++cmp.lammpsPulling;
+      if (double(ct["fn"][k]) == 0.0) ++cmp.lammpsClamped;
       record(cmp, "contact fs1", o.fs1, ct["fs1"][k], po.fs1, step, where);
       record(cmp, "contact fs2", o.fs2, ct["fs2"][k], po.fs2, step, where);
       ++cmp.contactsCompared;
@@ -437,6 +467,40 @@ TEST(LammpsComparison, RigidClumpPushesGrainsUnderHooke) {
   checkAndReport("clump_hooke", cmp);
   EXPECT_GT(cmp.contactsCompared, 50);
   EXPECT_GT(cmp.clumpYTravel, 0.05);
+}
+
+// The third law (contact.law = "hertz_limit_damping", LAMMPS's gran/hertz/history with
+// limit_damping) on the pile and the clump. Their Hertz runs have pulling contacts at stored steps
+// (`pile` 6, `clump` 8 rows); under the clamp LAMMPS reports none, and clamped ones instead.
+// A case under limit_damping, compared as any other; LAMMPS's contacts there never pull, and some
+// sit at exactly zero.
+Comparison compareClampedCase(const std::string& name) {
+  const Comparison cmp = compareCase(name);
+  checkAndReport(name, cmp);
+  EXPECT_GT(cmp.contactsCompared, 50);
+  EXPECT_EQ(cmp.lammpsPulling, 0) << name;
+  EXPECT_GT(cmp.lammpsClamped, 0) << name;
+  return cmp;
+}
+
+TEST(LammpsComparison, PolydispersePileSettlesUnderHertzLimitDamping) {
+  compareClampedCase("pile_hertz_limit_damping");
+}
+
+TEST(LammpsComparison, RigidClumpPushesGrainsUnderHertzLimitDamping) {
+  EXPECT_GT(compareClampedCase("clump_hertz_limit_damping").clumpYTravel, 0.05);
+}
+
+// So that the clamp above is tested: the Hertz runs of the same cases do pull at stored steps.
+TEST(LammpsComparison, HertzReferenceRunsHavePullingContacts) {
+  for (const std::string name : {"pile", "clump"}) {
+    int pulling = 0;
+    const json c = loadCase(name);  // held: a temporary's member would not outlive the loop's start
+    for (const json& frame : c["frames"])
+      if (frame.contains("contacts"))
+        for (const json& fn : frame["contacts"]["fn"]) pulling += double(fn) < 0.0;
+    EXPECT_GT(pulling, 0) << name;
+  }
 }
 
 }  // namespace

@@ -1,8 +1,8 @@
 // The contact law in SIMD lanes gives the scalar law's bits (ARCHITECTURE.md's claim, on which
 // determinism across builds and the LAMMPS comparisons rest), on pairs chosen to take every branch:
 // apart, grazing, deep, sticking, slipping past the Coulomb cap, a capped pair with no history,
-// zero history, a frozen partner, and random pairs around contact; for both laws (ContactLaw.h). And
-// the two laws against their formulas on a head-on pair.
+// zero history, a frozen partner, a pair the damping pulls, and random pairs around contact; for every
+// law (ContactLaws.h). And the laws against their formulas on a head-on pair.
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -11,6 +11,7 @@
 #include <random>
 #include <vector>
 
+#include "physics/ContactLaws.h"
 #include "physics/PairKernel.h"
 
 namespace wiggle {
@@ -38,6 +39,7 @@ std::vector<Case> adversarialPairs() {
       pair(0.94, 0.0, 0.0, 2.0, 0.0, 0.0, 0.0, 0.0, both),          // capped with zero history
       pair(0.0, 0.93, 0.2, -0.3, 0.5, 0.0, 0.01, 0.0, frozen),      // frozen partner below
       pair(-0.6, -0.6, 0.0, 0.0, 0.0, 0.0, -0.02, 0.02, both),      // oblique, loaded spring
+      pair(0.949, 0.0, 5.0, 0.5, 1.0, 0.0, 0.0, 1e-3, both),        // separating fast: the damping pulls
   };
   std::mt19937_64 rng(2026);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
@@ -115,6 +117,9 @@ void expectLanesGiveScalarBits() {
 
 TEST(PairKernel, LanesGiveTheScalarLawsBitsOnAdversarialPairs) { expectLanesGiveScalarBits<HertzLaw>(); }
 TEST(PairKernel, LanesGiveTheScalarLawsBitsOnAdversarialPairsForHooke) { expectLanesGiveScalarBits<HookeLaw>(); }
+TEST(PairKernel, LanesGiveTheScalarLawsBitsOnAdversarialPairsForHertzLimitDamping) {
+  expectLanesGiveScalarBits<HertzLimitDampingLaw>();
+}
 
 // Head-on, i to the right of j, overlapping by delta and approaching at speed u, no spin, no
 // history: the normal force on i is kn delta + meff gammaN u for Hooke and sqrt(delta Reff) times
@@ -136,6 +141,31 @@ TEST(PairKernel, HeadOnForceIsEachLawsFormula) {
     EXPECT_EQ(c.fy, 0.0);
     EXPECT_EQ(c.torqueArm, 0.0);
   }
+}
+
+// Head-on, as above, but separating at speed u fast enough that the damping outweighs the spring:
+// Hertz pulls (Fn < 0, LAMMPS without limit_damping), the limit_damping law gives exactly no force,
+// and the history of a capped pair is rescaled to cancel the damping (s = -meff gammaT vt / kt, as
+// LAMMPS does). While the pair approaches, the two laws give the same bits.
+TEST(PairKernel, LimitDampingClampsAPullingNormalForceAtZero) {
+  const double ri = 0.5, rj = 0.45, delta = 1e-3, u = 5.0, mi = 0.5, mj = 0.6;
+  const double r = ri + rj - delta, meff = mi * mj / (mi + mj);
+  const ContactParams p;
+  auto force = [&](auto law, double dvx) {
+    using Law = decltype(law);
+    return historyContact<Law>(p, 1e-4, r, 0.0, dvx, 0.3, ri, rj, 0.0, 0.0, 1 / mi + 1 / mj, 0.0, 1e-3, true);
+  };
+  const ContactForce hertz = force(HertzLaw{}, u), clamped = force(HertzLimitDampingLaw{}, u);
+  ASSERT_LT(hertz.fx, 0.0);  // the damping pulls
+  EXPECT_EQ(clamped.fx, 0.0);
+  EXPECT_EQ(clamped.fy, 0.0);
+  EXPECT_EQ(clamped.torqueArm, 0.0);
+  EXPECT_NEAR(clamped.shearY, -meff * p.gammaT * 0.3 / p.kt, 1e-12 * meff * p.gammaT * 0.3 / p.kt);
+  const ContactForce hertzIn = force(HertzLaw{}, -u), clampedIn = force(HertzLimitDampingLaw{}, -u);
+  EXPECT_GT(hertzIn.fx, 0.0);
+  EXPECT_EQ(std::bit_cast<std::uint64_t>(hertzIn.fx), std::bit_cast<std::uint64_t>(clampedIn.fx));
+  EXPECT_EQ(std::bit_cast<std::uint64_t>(hertzIn.fy), std::bit_cast<std::uint64_t>(clampedIn.fy));
+  EXPECT_EQ(std::bit_cast<std::uint64_t>(hertzIn.shearY), std::bit_cast<std::uint64_t>(clampedIn.shearY));
 }
 
 }  // namespace

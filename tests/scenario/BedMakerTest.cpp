@@ -135,7 +135,7 @@ TEST(BedMaker, LatticeBedKeyIsUnchangedAndRandomKeysDiffer) {
   EXPECT_NE(bedKey(damped, disk), dampedKey);
   // The contact law: Hertz (the default) keeps the key, Hooke has its own.
   RunConfig hooke = defaults;
-  hooke.contact.law = ContactLaw::Hooke;
+  hooke.contact.law = contactLaw<HookeLaw>;
   EXPECT_NE(bedKey(hooke, disk), "b8ece11933d4975e");
   EXPECT_NE(baseBedKey(hooke), baseBedKey(defaults));
 }

@@ -168,10 +168,16 @@ TEST(LammpsExport, DeckHoldsTheCaseParameters) {
 
   World hooke = smallWorld(MassModel::Sphere);  // the deck takes the law from the world it exports
   WorldDef def = hooke.def();
-  def.contact.law = ContactLaw::Hooke;
+  def.contact.law = contactLaw<HookeLaw>;
   hooke.setParameters(def);
   const std::string inHooke = makeLammpsDeck(hooke, prepareCase(config)).input;
   EXPECT_NE(inHooke.find("pair_style gran/hooke/history 2000000 2460000 2500 2500 0.10000000000000001 1\n"),
+            std::string::npos);
+  def.contact.law = contactLaw<HertzLimitDampingLaw>;
+  hooke.setParameters(def);
+  const std::string inLimited = makeLammpsDeck(hooke, prepareCase(config)).input;
+  EXPECT_NE(inLimited.find("pair_style gran/hertz/history 2000000 2460000 2500 2500 0.10000000000000001 1 "
+                           "limit_damping\npair_coeff * *\n"),
             std::string::npos);
 }
 
@@ -366,6 +372,11 @@ TEST(LammpsExport, SlowLammpsRunOfAVelocityDriveFollowsWiggle) {
 TEST(LammpsExport, SlowLammpsRunOfAHookeBedFollowsWiggle) {
   if (!haveLammps()) GTEST_SKIP() << "lmp (LAMMPS) not found: apt-get install lammps to run this comparison";
   expectLammpsFollowsWiggle("0", "displacement", "hooke");  // a bed poured and driven under gran/hooke/history
+}
+
+TEST(LammpsExport, SlowLammpsRunOfAHertzLimitDampingBedFollowsWiggle) {
+  if (!haveLammps()) GTEST_SKIP() << "lmp (LAMMPS) not found: apt-get install lammps to run this comparison";
+  expectLammpsFollowsWiggle("0", "displacement", "hertz_limit_damping");  // gran/hertz/history ... limit_damping
 }
 
 }  // namespace

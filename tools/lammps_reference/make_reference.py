@@ -7,7 +7,7 @@ repository so that anyone can rerun them by hand), run with `lmp`, and its dumps
 JSON file holding: the case description the C++ test builds the wiggle World from (box, dt, contact
 parameters, particles in LAMMPS id order, clump), the LAMMPS version, the exact deck and data file,
 and per dumped step the per-atom state (x y vx vy omegaz fx fy tqz) and the per-contact output of
-`compute pair/local` (gran/hertz/history or gran/hooke/history single(): `force` = r * ccel, the normal force, and the
+`compute pair/local` (the pair style's single(): `force` = r * ccel, the normal force, and the
 shear force fs1 fs2 fs on the first atom, evaluated from the stored shear history with the
 current velocities; for pairs across the periodic boundary the second atom is a ghost whose
 velocity is still the half-step one).
@@ -121,16 +121,22 @@ def case_clump():
                    description="disk clump at vx = 2 (y free, no rotation) pushing grains on the base")
 
 
-def with_hooke(case):
-    """The same case under gran/hooke/history (contact.law = "hooke"), with the same numbers."""
-    def hooke_case():
+def with_law(case, law, style, keywords=""):
+    """The same case under another law of wiggle (contact.law = law), with the same numbers: LAMMPS's
+    pair_style gran/<style>/history with the keywords after its coefficients."""
+    def law_case():
         p, s = case()
-        return p, dict(s, law="hooke", description=s["description"] + "; gran/hooke/history")
-    return hooke_case
+        pair_style = f"gran/{style}/history" + (f" {keywords}" if keywords else "")
+        return p, dict(s, law=law, style=style, keywords=keywords,
+                       description=s["description"] + "; " + pair_style)
+    return law_case
 
 
 CASES = {"oblique": case_oblique, "bounce": case_bounce, "pile": case_pile, "clump": case_clump,
-         "pile_hooke": with_hooke(case_pile), "clump_hooke": with_hooke(case_clump)}
+         "pile_hooke": with_law(case_pile, "hooke", "hooke"),
+         "clump_hooke": with_law(case_clump, "hooke", "hooke"),
+         "pile_hertz_limit_damping": with_law(case_pile, "hertz_limit_damping", "hertz", "limit_damping"),
+         "clump_hertz_limit_damping": with_law(case_clump, "hertz_limit_damping", "hertz", "limit_damping")}
 
 # --------------------------------------------------------------------------------------------
 
@@ -163,7 +169,9 @@ def write_deck(path, name, particles, s):
         clump_atoms = [q for q in particles if q["type"] == CLUMP]
         d.append(f"set group clump mass {clump_atoms[0]['mass']!r}")
         d.append(f"velocity clump set {s['clump']['vx']!r} 0 0")
-    d += ["", f"pair_style gran/{s.get('law', 'hertz')}/history {KN:g} {KT:g} {GAMMA_N:g} {GAMMA_T:g} {s['mu']!r} 1",
+    keywords = f" {s['keywords']}" if s.get("keywords") else ""
+    d += ["", f"pair_style gran/{s.get('style', 'hertz')}/history {KN:g} {KT:g} {GAMMA_N:g} {GAMMA_T:g} {s['mu']!r} 1"
+              f"{keywords}",
           "pair_coeff * *", "neighbor 0.2 bin", "neigh_modify delay 0 every 1 check yes"]
     excl = []
     if has_base:

@@ -72,7 +72,7 @@ std::string pouredBedKey(const RunConfig& c, const ClumpDef& clump) {
     h.addBytes("relax_damping", 13);
     h.addValue(c.bed.relaxDamping);
   }
-  if (c.contact.law != ContactLaw::Hertz) {  // likewise: a Hertz bed keeps its key
+  if (c.contact.law != contactLaw<HertzLaw>) {  // likewise: a Hertz bed keeps its key
     h.addBytes("law", 3);
     h.addValue(c.contact.law);
   }

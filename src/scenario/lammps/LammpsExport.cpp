@@ -129,9 +129,7 @@ std::string lammpsInput(const World& world, const RunConfig& config, const RunSc
   if (disc) in += "set group grains density/disc " + num(def.density) + "\nset group base density/disc " + num(def.density) + "\n";
   in += "# Every intruder atom carries the clump's total mass M: meff = m M / (m + M) as in wiggle.\n";
   in += "set group intruder mass " + num(clump.mass) + "\n\n";
-  in += "pair_style gran/" + std::string(choiceName(p.law)) + "/history " + num(p.kn) + " " + num(p.kt) + " " +
-        num(p.gammaN) + " " + num(p.gammaT) + " " + num(p.mu) + " 1\n";
-  in += "pair_coeff * *\n";
+  in += contactLawTraits(p.law).lammpsPairStyle(p);
   in += "neighbor " + num(def.skin) + " bin\n";
   in += "neigh_modify delay 0 every 1 check yes\n";
   in += "neigh_modify exclude type 2 2 exclude type 3 3\n";
