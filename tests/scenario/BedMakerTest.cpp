@@ -263,7 +263,7 @@ TEST(BedMaker, TinyRandomBedComesToRestAndContinuesToTheSameBits) {
     int reports = 0;
     EXPECT_THROW(obtainBed(stopped, clump,
                            [&](const BedStatus& st) {
-                             if (st.stage == "pouring" && st.batch == 1 && ++reports == 3) std::raise(SIGTERM);
+                             if (st.stage == BedStage::Pouring && st.batch == 1 && ++reports == 3) std::raise(SIGTERM);
                            }),
                  Error);
   }
@@ -296,7 +296,7 @@ TEST(BedMaker, DampedRelaxationRestsSoonerAndContinuesToTheSameBits) {
   damped.bed.relaxDamping = 5.0;
   double relaxStart = 0.0;
   const World bed = makeBed(damped, clump, [&](const BedStatus& s) {
-    if (s.stage == "pouring") relaxStart = s.time;
+    if (s.stage == BedStage::Pouring) relaxStart = s.time;
   });
   std::printf("tiny lattice bed: at rest at t = %.2f undamped, %.2f damped (relaxation from t = %.2f)\n", plain.time(),
               bed.time(), relaxStart);
@@ -320,7 +320,7 @@ TEST(BedMaker, DampedRelaxationRestsSoonerAndContinuesToTheSameBits) {
     int reports = 0;
     EXPECT_THROW(obtainBed(damped, clump,
                            [&](const BedStatus& st) {
-                             if (st.stage == "relaxing" && ++reports == 3) std::raise(SIGTERM);
+                             if (st.stage == BedStage::Relaxing && ++reports == 3) std::raise(SIGTERM);
                            }),
                  Error);
   }
@@ -392,7 +392,7 @@ TEST(BedMaker, CarvedBedsShareOneBaseBedAndRestAroundTheirIntruder) {
     int reports = 0;
     EXPECT_THROW(obtainBed(config, square,
                            [&](const BedStatus& st) {
-                             if (st.stage == "relaxing" && ++reports == 2) std::raise(SIGTERM);
+                             if (st.stage == BedStage::Relaxing && ++reports == 2) std::raise(SIGTERM);
                            }),
                  Error);
   }

@@ -469,9 +469,9 @@ TEST(Experiment, BedMakingStoppedBySignalContinuesToTheSameBits) {
   const RunConfig base = tinyConfig(scratch("bed-signal-reference"));
   const ClumpDef clump = prepareCase(base).clump;
   const std::string hash = tinyBedHash();
-  for (const std::string stage : {"pouring", "relaxing"}) {
+  for (const BedStage stage : {BedStage::Pouring, BedStage::Relaxing}) {
     RunConfig config = base;
-    config.bed.cacheDir = scratch("bed-signal-" + stage);
+    config.bed.cacheDir = scratch("bed-signal-" + std::string(choiceName(stage)));
     const std::string key = bedKey(config, clump);
     int reports = 0;
     {
@@ -480,21 +480,21 @@ TEST(Experiment, BedMakingStoppedBySignalContinuesToTheSameBits) {
         obtainBed(config, clump, [&](const BedStatus& s) {
           if (s.stage == stage && ++reports == 3) std::raise(SIGTERM);
         });
-        ADD_FAILURE() << "not interrupted while " << stage;
+        ADD_FAILURE() << "not interrupted while " << choiceName(stage);
       } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("interrupted by signal 15"), std::string::npos) << e.what();
         EXPECT_NE(std::string(e.what()).find(bedPartialPath(config, key)), std::string::npos) << e.what();
       }
     }
-    ASSERT_TRUE(fs::exists(bedPartialPath(config, key))) << stage;
-    EXPECT_FALSE(fs::exists(bedCachePath(config, key))) << stage;
+    ASSERT_TRUE(fs::exists(bedPartialPath(config, key))) << choiceName(stage);
+    EXPECT_FALSE(fs::exists(bedCachePath(config, key))) << choiceName(stage);
     int reportsAfter = 0;
     const CachedBed continued = obtainBed(config, clump, [&](const BedStatus&) { ++reportsAfter; });
     EXPECT_FALSE(continued.fromCache);
     EXPECT_TRUE(continued.note.empty()) << continued.note;
-    EXPECT_EQ(continued.world.stateHash(), hash) << "continued while " << stage;
+    EXPECT_EQ(continued.world.stateHash(), hash) << "continued while " << choiceName(stage);
     EXPECT_FALSE(fs::exists(bedPartialPath(config, key))) << "the partial file outlived the bed";
-    if (stage == "relaxing") {  // it continued rather than started again: only the relaxing was left
+    if (stage == BedStage::Relaxing) {  // it continued rather than started again: only the relaxing was left
       EXPECT_GT(reportsAfter, 0);
       writeFileAtomically(bedPartialPath(config, key), "WIGGLE\x1a\njunk");
       fs::remove(bedCachePath(config, key));

@@ -137,7 +137,6 @@ double freeSurfaceHeight(const World& world) {
 
 namespace {
 
-enum class BedStage : std::uint8_t { Pouring, Settling, Relaxing };
 
 // A bed in the making: the World and the maker's bookkeeping at a point where the maker can stop
 // and later continue with the same bits as if it never had (the end of a settling or relaxing
@@ -264,7 +263,7 @@ World finishBed(const RunConfig& config, const ClumpDef& clump, PartialBed p, co
   const double dt = config.run.dt;
   const auto maxSteps = static_cast<std::uint64_t>(config.bed.maxTime / dt);
   BedStatus status;
-  auto report = [&](const char* stage) {
+  auto report = [&](BedStage stage) {
     if (!progress) return;
     status.stage = stage;
     status.batch = p.batch;
@@ -310,12 +309,12 @@ World finishBed(const RunConfig& config, const ClumpDef& clump, PartialBed p, co
         }
         if (!settled) {
           status.progress = std::min(0.9, 0.9 * p.surface / target);
-          report("pouring");
+          report(BedStage::Pouring);
           save(p);
           break;
         }
         p.surface = freeSurfaceHeight(p.world);
-        report("pouring");
+        report(BedStage::Pouring);
         if (p.steps >= maxSteps)
           throw Error("bed making did not reach box.bed_height = " + std::to_string(target) +
                       " within bed.max_time = " + std::to_string(config.bed.maxTime) + " (surface at " +
@@ -332,7 +331,7 @@ World finishBed(const RunConfig& config, const ClumpDef& clump, PartialBed p, co
         status.kineticPerGrain = perGrain;
         status.progress = 0.9 + 0.1 * std::clamp(std::log10(1e-2 / std::max(perGrain, 1e-300)) /
                                                      std::log10(1e-2 / config.bed.restEnergy), 0.0, 1.0);
-        report("relaxing");
+        report(BedStage::Relaxing);
         if (p.recent.size() == window && perGrain < config.bed.restEnergy) return std::move(p.world);
         if (p.steps >= maxSteps)
           throw Error("the bed did not come to rest (kinetic energy per grain " + std::to_string(perGrain) +
@@ -351,9 +350,9 @@ World finishBed(const RunConfig& config, const ClumpDef& clump, PartialBed p, co
 }  // namespace
 
 std::string bedStatusLine(const BedStatus& s, double targetHeight) {
-  return "[bed] " + s.stage + " batch " + std::to_string(s.batch) + ", " + std::to_string(s.grains) +
+  return "[bed] " + std::string(choiceName(s.stage)) + " batch " + std::to_string(s.batch) + ", " + std::to_string(s.grains) +
          " grains, surface " + formatNumber(s.surface) + " / " + formatNumber(targetHeight) + ", t = " +
-         formatNumber(s.time) + (s.stage == "relaxing" ? ", KE/grain " + formatNumber(s.kineticPerGrain) : "");
+         formatNumber(s.time) + (s.stage == BedStage::Relaxing ? ", KE/grain " + formatNumber(s.kineticPerGrain) : "");
 }
 
 namespace {

@@ -6,19 +6,30 @@
 // intruder's bed is cut from it: the grains the intruder touches removed, then relaxed to rest.
 // A bed depends only on its own parameters, so it is cached on disk under a key that hashes exactly
 // those (bedKey); one bed serves every amplitude and period of a shape.
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
+#include "core/Choice.h"
 #include "io/RunConfig.h"
 #include "physics/World.h"
 #include "scenario/bed/RandomPour.h"
 
 namespace wiggle {
 
+// The bed maker's stages: a batch poured, then left to settle, until the surface is reached; then
+// the whole relaxed to rest. A partial bed's file stores the stage as its index: append only.
+enum class BedStage : std::uint8_t { Pouring, Settling, Relaxing };
+template <>
+struct ChoiceNames<BedStage> {
+  static constexpr std::array<std::string_view, 3> names{"pouring", "settling", "relaxing"};
+};
+
 struct BedStatus {
-  std::string stage;         // "pouring" | "relaxing"
+  BedStage stage = BedStage::Pouring;  // as reported: pouring (with its settling) or relaxing
   int batch = 0;             // batches poured so far
   std::uint32_t grains = 0;
   double surface = 0.0;      // free-surface height [d]
