@@ -1,6 +1,7 @@
 // `wiggle model`: the cavity model's geometry (l, l', T_rise, h, T_max) and V_y(T) for the paper's
 // shapes or a user polygon, the clump's atom statistics, and a JSON file with the outline and atoms
 // for the plotting package (paper figure 13). docs/MODEL.md documents the output.
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -9,6 +10,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "Arguments.h"
@@ -23,11 +25,27 @@ namespace wiggle::cli {
 
 namespace {
 
+// What `wiggle model` prints: the table for people, or CSV.
+enum class ModelFormat { Text, Csv };
+
+}  // namespace
+}  // namespace wiggle::cli
+
+namespace wiggle {
+template <>
+struct ChoiceNames<cli::ModelFormat> {
+  static constexpr std::array<std::string_view, 2> names{"text", "csv"};
+};
+}  // namespace wiggle
+
+namespace wiggle::cli {
+namespace {
+
 struct ModelOptions {
   std::string shape;
   std::string vertices;
   double angle = 0.0;           // [degrees]
-  std::string format = "text";
+  ModelFormat format = ModelFormat::Text;
   std::string periods;
   double amplitude = 5.0;       // [d] the paper's Table 1 is for A/d = 5
   std::string geometryPath;
@@ -91,7 +109,7 @@ std::string formatted(const char* format, double value) {
 }
 
 void printGeometryTable(const std::vector<Row>& rows, const ModelOptions& opt) {
-  if (opt.format == "csv") {
+  if (opt.format == ModelFormat::Csv) {
     std::printf("shape,l,l_prime,T_rise,h,T_max\n");
     for (const Row& r : rows)
       std::printf("%s,%.6f,%.6f,%.6f,%.6f,%.6f\n", r.label.c_str(), r.side.l, r.side.lPrime,
@@ -127,7 +145,7 @@ void printGeometryTable(const std::vector<Row>& rows, const ModelOptions& opt) {
 
 void printRateTable(const std::vector<Row>& rows, const std::vector<double>& periods,
                     const ModelOptions& opt) {
-  if (opt.format == "csv") {
+  if (opt.format == ModelFormat::Csv) {
     std::printf("shape,T,vy\n");
     for (const Row& r : rows)
       for (double t : periods)
@@ -148,7 +166,7 @@ void printRateTable(const std::vector<Row>& rows, const std::vector<double>& per
 }
 
 void printClumpTable(const std::vector<Shape>& shapes, const ModelOptions& opt) {
-  const bool csv = opt.format == "csv";
+  const bool csv = opt.format == ModelFormat::Csv;
   if (csv)
     std::printf("shape,atoms,surface_atoms,guard_atoms,max_overshoot,max_outline_gap,"
                 "max_envelope_depth,max_surface_spacing,max_lodge_depth,min_corner_deg\n");
@@ -230,7 +248,7 @@ void runModel(const ModelOptions& opt) {
 
   if (opt.clump) {
     printClumpTable(shapes, opt);
-  } else if (opt.format == "csv" && !periods.empty()) {
+  } else if (opt.format == ModelFormat::Csv && !periods.empty()) {
     printRateTable(rows, periods, opt);  // one csv table per invocation: the rates replace Table 1
   } else {
     printGeometryTable(rows, opt);
@@ -255,8 +273,15 @@ void addModelCommand(CLI::App& app) {
   cmd->add_option("--vertices", opt->vertices,
                   "polygon outline \"x1,y1;x2,y2;...\" [d], either orientation, convex or concave");
   cmd->add_option("--angle", opt->angle, "rotation about the centroid, counter-clockwise [degrees]");
-  cmd->add_option("--format", opt->format, "text (default) or csv")
-      ->check(CLI::IsMember({"text", "csv"}));
+  const std::string formats = joinedNames(choiceNameList<ModelFormat>(), " | ");
+  cmd->add_option_function<std::string>(
+      "--format",
+      [opt, formats](const std::string& name) {
+        const std::optional<ModelFormat> format = choiceNamed<ModelFormat>(name);
+        if (!format) throw CLI::ValidationError("--format", "'" + name + "' is not one of " + formats);
+        opt->format = *format;
+      },
+      formats + " (default text)");
   cmd->add_option("--periods", opt->periods,
                   "also print V_y(T) at these periods \"0.5,1,2,...\" [sqrt(d/g)]; with csv, "
                   "only the V_y table (columns shape,T,vy)");
