@@ -259,6 +259,24 @@ void runModel(const ModelOptions& opt) {
 
 }  // namespace
 
+// An option whose value is one of an enum's words (its ChoiceNames table); `help` holds one %s for
+// the list of words. `owner` keeps `target` alive as long as the command.
+template <class E>
+void addChoiceOption(CLI::App* cmd, const std::string& flag, E* target, std::shared_ptr<ModelOptions> owner,
+                     const std::string& help) {
+  const std::string words = joinedNames(choiceNameList<E>(), " | ");
+  std::string text = help;
+  text.replace(text.find("%s"), 2, words);
+  cmd->add_option_function<std::string>(
+      flag,
+      [flag, target, owner, words](const std::string& name) {
+        const std::optional<E> value = choiceNamed<E>(name);
+        if (!value) throw CLI::ValidationError(flag, "'" + name + "' is not one of " + words);
+        *target = *value;
+      },
+      text);
+}
+
 void addModelCommand(CLI::App& app) {
   auto opt = std::make_shared<ModelOptions>();
   auto* cmd = app.add_subcommand(
@@ -273,15 +291,7 @@ void addModelCommand(CLI::App& app) {
   cmd->add_option("--vertices", opt->vertices,
                   "polygon outline \"x1,y1;x2,y2;...\" [d], either orientation, convex or concave");
   cmd->add_option("--angle", opt->angle, "rotation about the centroid, counter-clockwise [degrees]");
-  const std::string formats = joinedNames(choiceNameList<ModelFormat>(), " | ");
-  cmd->add_option_function<std::string>(
-      "--format",
-      [opt, formats](const std::string& name) {
-        const std::optional<ModelFormat> format = choiceNamed<ModelFormat>(name);
-        if (!format) throw CLI::ValidationError("--format", "'" + name + "' is not one of " + formats);
-        opt->format = *format;
-      },
-      formats + " (default text)");
+  addChoiceOption(cmd, "--format", &opt->format, opt, "%s (default text)");
   cmd->add_option("--periods", opt->periods,
                   "also print V_y(T) at these periods \"0.5,1,2,...\" [sqrt(d/g)]; with csv, "
                   "only the V_y table (columns shape,T,vy)");
@@ -289,15 +299,8 @@ void addModelCommand(CLI::App& app) {
                   "amplitude A for --periods [d] (default 5; V_y = 0 for A <= A_min = 0.5)");
   cmd->add_option("--geometry", opt->geometryPath,
                   "write the chosen shape's outline, atoms and model points to this JSON file");
-  const std::string surfaces = joinedNames(choiceNameList<IntruderSurface>(), " | ");
-  cmd->add_option_function<std::string>(
-      "--surface",
-      [opt, surfaces](const std::string& name) {
-        const std::optional<IntruderSurface> surface = choiceNamed<IntruderSurface>(name);
-        if (!surface) throw CLI::ValidationError("--surface", "'" + name + "' is not one of " + surfaces);
-        opt->surface = *surface;
-      },
-      "how the atoms are placed, as intruder.surface: " + surfaces + " (default smooth); for --geometry and --clump");
+  addChoiceOption(cmd, "--surface", &opt->surface, opt,
+                  "how the atoms are placed, as intruder.surface: %s (default smooth); for --geometry and --clump");
   cmd->add_flag("--clump", opt->clump,
                 "print the atom clump's statistics (counts, envelope deviation, lodge depth) "
                 "instead of the model table");
