@@ -2,7 +2,8 @@
 # One entry point for a fresh Debian 12 machine (run as root, or with sudo available):
 #   tools/bootstrap.sh run  [wiggle run args...]   install what is missing, build, run the default case
 #   tools/bootstrap.sh test [ctest args...]        install what is missing, build, run the fast tests
-# Environment: WIGGLE_PRESET (default "release"; CI uses "ci": warnings as errors).
+# Environment: WIGGLE_PRESET (default "release"; CI sets WIGGLE_WERROR=ON for the first configure of
+# build/release instead, so its one release tree has warnings as errors; and runs "asan-ubsan").
 set -euo pipefail
 cd "$(dirname "$0")/.."
 

@@ -2,14 +2,15 @@
 # Fuzzing with libFuzzer (docs/RELIABILITY.md):
 #   tools/fuzz.sh TARGET SECONDS [libFuzzer options...]
 # TARGET: run_config | sweep_file | checkpoint | bed_cache | all (each for SECONDS).
-# Builds the "fuzz" preset (clang-14, ASan + UBSan) into build/fuzz, seeds each target from the
+# Builds the targets in the "asan-ubsan" preset's tree (clang-14, ASan + UBSan, asserts on; the same
+# tree CI's sanitized unit tests run in) at build/asan-ubsan, seeds each target from the
 # shipped configs, the bad-input corpora and small state files made by a tiny run, and fuzzes with
 # a 2 GB memory limit and 60 s per input (wall clock: generous, as a loaded
-# machine can slow a nice-d fuzzer 30-fold). The growing corpus stays in build/fuzz/corpus/TARGET;
-# findings are written to build/fuzz/findings/. Prints executions and findings per target; exits
+# machine can slow a nice-d fuzzer 30-fold). The growing corpus stays in build/asan-ubsan/corpus/TARGET;
+# findings are written to build/asan-ubsan/findings/. Prints executions and findings per target; exits
 # non-zero when a target found a crash, a hang or an allocation past the limit.
 # Environment: WIGGLE_JOBS (build parallelism, default: nproc); WIGGLE_SEED_BINARY (a wiggle binary
-# that makes the seed state files, e.g. build/ci/wiggle; default: build/fuzz/wiggle, built here).
+# that makes the seed state files, e.g. build/release/wiggle; default: build/asan-ubsan/wiggle, built here).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$(pwd)
@@ -26,15 +27,15 @@ binary_of() {
     checkpoint) echo fuzz_Checkpoint ;; bed_cache) echo fuzz_BedCache ;; esac
 }
 
-B=build/fuzz
-cmake --preset fuzz > /dev/null
+B=build/asan-ubsan
+cmake --preset asan-ubsan > /dev/null
 seeder=${WIGGLE_SEED_BINARY:-}
 names=()
 [ -n "$seeder" ] || { names+=(wiggle); seeder=$B/wiggle; }
 for t in "${targets[@]}"; do names+=("$(binary_of "$t")"); done
 mkdir -p "$B"
 for n in "${names[@]}"; do
-  cmake --build --preset fuzz -j "${WIGGLE_JOBS:-$(nproc)}" --target "$n" > "$B/build.log" 2>&1 || { cat "$B/build.log" >&2; exit 1; }
+  cmake --build --preset asan-ubsan -j "${WIGGLE_JOBS:-$(nproc)}" --target "$n" > "$B/build.log" 2>&1 || { cat "$B/build.log" >&2; exit 1; }
 done
 
 # Seed state files: a checkpoint and a cached bed of a tiny run (made once).

@@ -3,7 +3,6 @@
 // (scalar, avx2, avx512) and WIGGLE_KERNEL_LANES the lanes it must have; everything here has
 // internal linkage but the one function that hands out the variant's table.
 #include <algorithm>
-#include <array>
 #include <cstddef>
 #include <limits>
 #include <type_traits>
@@ -25,11 +24,15 @@ static_assert(simd::kLaneCount<simd::WidestLanes> == WIGGLE_KERNEL_LANES,
 template <class Law>
 double forceBlock(std::uint32_t b, ParticleStore& s, const Kinematics* kin, NeighbourList& list,
                   const ContactParams params, double dt, double width, bool updateShear, double overlapRatio) {
+  // Raw pointers and the rows' count read here, not the containers' inline members: an unoptimised
+  // build (the sanitizers' -O1) would otherwise emit those members out of line in this object, under
+  // this instruction set, where the linker could pick them for every caller (kernel_symbols.py).
+  const auto rows = static_cast<std::uint32_t>(list.rowStart.size() - 1);
   const std::uint32_t r0 = b * list.blockRows;
-  const std::uint32_t r1 = std::min(r0 + list.blockRows, list.rowCount());
-  std::fill(s.fx.begin() + r0, s.fx.begin() + r1, 0.0);
-  std::fill(s.fy.begin() + r0, s.fy.begin() + r1, 0.0);
-  std::fill(s.torque.begin() + r0, s.torque.begin() + r1, 0.0);
+  const std::uint32_t r1 = std::min(r0 + list.blockRows, rows);
+  std::fill(s.fx.data() + r0, s.fx.data() + r1, 0.0);
+  std::fill(s.fy.data() + r0, s.fy.data() + r1, 0.0);
+  std::fill(s.torque.data() + r0, s.torque.data() + r1, 0.0);
   const PairSlots slots{list.shearX.data(), list.shearY.data(), list.forceX.data(), list.forceY.data(),
                         list.torqueArm.data()};
   const std::uint32_t* owner = list.owner.data();
@@ -127,19 +130,21 @@ template <class Law>
 constexpr ForceKernels kKernels{kLevel, WIGGLE_KERNEL_LANES, contactLaw<Law>, &forceBlock<Law>,
                                 &intruderPairForces<Law>};
 
-// Every law's kernels (ContactLaws.h), indexed by its ContactLaw value.
+// Every law's kernels (ContactLaws.h), indexed by its ContactLaw value (a built-in array: see
+// forceBlock on containers' members).
+template <class List>
+struct KernelTable;
 template <class... Laws>
-constexpr std::array<const ForceKernels*, sizeof...(Laws)> kernelsOf(LawList<Laws...>) {
-  return {&kKernels<Laws>...};
-}
-constexpr auto kKernelsByLaw = kernelsOf(ContactLaws{});
+struct KernelTable<LawList<Laws...>> {
+  static constexpr const ForceKernels* byLaw[] = {&kKernels<Laws>...};
+};
 
 }  // namespace
 
 // Declared (and called only on a CPU that has the instruction set, for a law that exists) in
 // ForceKernels.cpp.
 const ForceKernels& WIGGLE_KERNEL_TABLE_NAME(WIGGLE_KERNEL_VARIANT)(ContactLaw law) {
-  return *kKernelsByLaw[static_cast<std::size_t>(law)];
+  return *KernelTable<ContactLaws>::byLaw[static_cast<std::size_t>(law)];
 }
 
 }  // namespace wiggle

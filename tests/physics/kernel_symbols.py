@@ -9,8 +9,10 @@ global or weak symbol a variant defines must be its table function or name an en
 variant's own instruction-set namespace (core/Simd.h, WIGGLE_ISA_NAMESPACE): such a name, a
 function of that namespace or a template instantiated with one of its types, exists in that
 variant only. (Optimised builds inline everything and export the table alone; the sanitizer build,
-at -O1, exports its namespace's helpers too.) The one exception is the linker's DW.ref.* data, a
-pointer to the exception personality routine: the same bytes in every object, no code.
+at -O1, exports its namespace's helpers too.) The exceptions are data, the same bytes in every
+object and no code: the linker's DW.ref.* (a pointer to the exception personality routine), and the
+type information that clang's UBSan (-fsanitize=function) emits for the types of the functions whose
+address is taken ("typeinfo for", "typeinfo name for").
 
 usage: kernel_symbols.py NAME=OBJECT ... (NAME: scalar, avx2, avx512)
 """
@@ -18,6 +20,7 @@ import subprocess
 import sys
 
 NAMESPACE = {"scalar": "isa_baseline", "avx2": "isa_avx", "avx512": "isa_avx512"}
+DATA = ("DW.ref.", "typeinfo for ", "typeinfo name for ")  # data only, the same bytes in every object
 
 
 def exported(obj):
@@ -38,7 +41,7 @@ def main(args):
         symbols = list(exported(obj))
         if table not in symbols:
             bad.append(f"{name}: its table function {table} is missing from {obj}")
-        bad += [f"{name}: {s}" for s in symbols if s != table and own not in s and not s.startswith("DW.ref.")]
+        bad += [f"{name}: {s}" for s in symbols if s != table and own not in s and not s.startswith(DATA)]
     if bad:
         print("force kernel objects export symbols outside their instruction set's namespace:", *bad, sep="\n  ")
         return 1
