@@ -163,15 +163,17 @@ void NeighbourList::build(const ParticleStore& s, double boxWidth, double skin,
   deriveIndex(forceBlockRows(boxWidth));
 }
 
-NeighbourList::Strip NeighbourList::strip(std::uint32_t t, std::uint32_t threads) const {
+NeighbourList::Strip NeighbourList::strip(std::uint32_t t, std::uint32_t threads, std::uint32_t firstThreadPairs) const {
   WIGGLE_ASSERT(t < threads);
   const std::uint32_t blocks = blockCount(), rows = rowCount();
-  const std::uint64_t pairs = pairCount();
+  const std::uint64_t extra = firstThreadPairs, work = pairCount() + extra;
   // The first block whose first pair is at or past the share's start (the last strip ends at the
-  // last block, so that blocks without pairs at the end still belong to one).
+  // last block, so that blocks without pairs at the end still belong to one). The shares are of the
+  // work, the first thread's extra pairs ahead of the list's.
   auto boundary = [&](std::uint32_t share) -> std::uint32_t {
     if (share == threads) return blocks;
-    const std::uint64_t start = pairs * share / threads;
+    const std::uint64_t workStart = work * share / threads;
+    const std::uint64_t start = workStart > extra ? workStart - extra : 0;
     std::uint32_t lo = 0, hi = blocks;
     while (lo < hi) {
       const std::uint32_t mid = lo + (hi - lo) / 2;
@@ -184,6 +186,17 @@ NeighbourList::Strip NeighbourList::strip(std::uint32_t t, std::uint32_t threads
   };
   const std::uint32_t first = boundary(t), last = boundary(t + 1);
   return {first, last, std::min(first * blockRows, rows), std::min(last * blockRows, rows)};
+}
+
+double NeighbourList::stripImbalance(std::uint32_t threads, std::uint32_t firstThreadPairs) const {
+  const std::uint64_t work = pairCount() + std::uint64_t{firstThreadPairs};
+  if (rowCount() == 0 || work == 0) return 1.0;
+  std::uint64_t heaviest = 0;
+  for (std::uint32_t t = 0; t < threads; ++t) {
+    const Strip s = strip(t, threads, firstThreadPairs);
+    heaviest = std::max<std::uint64_t>(heaviest, rowStart[s.lastRow] - rowStart[s.firstRow] + (t == 0 ? firstThreadPairs : 0));
+  }
+  return static_cast<double>(heaviest) * threads / static_cast<double>(work);
 }
 
 std::uint32_t forceBlockRows(double boxWidth) {
