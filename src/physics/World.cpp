@@ -452,7 +452,9 @@ void World::startIntruder() {
 void World::rebuildNeighbours() {
   ParticleStore& s = store_;
   const double width = def_.boxWidth;
-  for (std::uint32_t i = 0; i < s.grainCount; ++i) {
+  const auto grains = static_cast<std::int64_t>(s.grainCount);
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < grains; ++i) {
     // Grains move far less than a box width between rebuilds; the loops only guard blow-ups.
     while (s.x[i] < 0.0) s.x[i] += width;
     while (s.x[i] >= width) s.x[i] -= width;
@@ -489,9 +491,10 @@ void World::rebuildNeighbours() {
   }
   profile_.lap(StepStage::ListSort);
 
-  NeighbourList fresh;
-  fresh.build(s, width, def_.skin, list_, newToOld);
-  list_ = std::move(fresh);
+  // Built into the previous list's memory (its arrays keep their capacity): no allocation, no page
+  // faults and no release of the old arrays on the one thread that would do them.
+  spareList_.build(s, width, def_.skin, list_, newToOld);
+  std::swap(list_, spareList_);
   profile_.lap(StepStage::ListBuild);
   xAtBuild_.assign(s.x.begin(), s.x.begin() + s.grainCount);
   yAtBuild_.assign(s.y.begin(), s.y.begin() + s.grainCount);
@@ -506,7 +509,9 @@ void World::rebuildNeighbours() {
 void World::refreshKinematics() {
   const ParticleStore& s = store_;
   kinematics_.resize(s.size());
-  for (std::uint32_t i = 0; i < s.size(); ++i) kinematics_[i] = Kinematics{s.x[i], s.y[i], s.vx[i], s.vy[i]};
+  const auto particles = static_cast<std::int64_t>(s.size());
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < particles; ++i) kinematics_[i] = Kinematics{s.x[i], s.y[i], s.vx[i], s.vy[i]};
 }
 
 bool World::intruderPairsStale() const {

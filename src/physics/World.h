@@ -199,6 +199,7 @@ class World {
   ParticleStore store_;
   std::vector<Kinematics> kinematics_;  // mirror of the store's x, y, vx, vy
   NeighbourList list_;
+  NeighbourList spareList_;  // the list before the last rebuild: the next one is built into its memory
   IntruderPairs intruderPairs_;
   bool hasIntruder_ = false;
   ClumpDef clump_;

@@ -170,6 +170,8 @@ TEST(NeighbourList, SameListForAnyThreadCount) {
   omp_set_num_threads(threads);
   EXPECT_EQ(one.rowStart, three.rowStart);
   EXPECT_EQ(one.partner, three.partner);
+  EXPECT_EQ(one.owner, three.owner);
+  EXPECT_EQ(one.crossStart, three.crossStart);
   EXPECT_EQ(one.crossPair, three.crossPair);
 }
 
