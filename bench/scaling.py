@@ -6,14 +6,18 @@ threads, capped by the CPUs this process may use, `--rounds` times each (the thr
 interleaved), with `run.profile = true`, and prints per thread count: ns per particle-step of the
 run phase (median of the rounds), the speed-up over one thread, the step's serial share and wait
 share (summary.json's step_profile), and Amdahl's prediction from the one-thread serial and wait share:
-speed-up(n) = 1 / (s + (1 - s) / n). It checks that every run ends in the same state hash.
+speed-up(n) = 1 / (s + (1 - s) / n). It checks that every run ends in the same state hash. Then the
+prediction with the strips' imbalance (step_profile's strip_imbalance, b(n): the heaviest thread's
+share of the force stage's pairs over the mean, fixed by the list's blocks, for n = 2-32 whatever the
+machine has): speed-up(n) = 1 / (s + (1 - s) b(n) / n), the divided work as slow as its heaviest strip.
 
 It builds nothing: give it a wiggle binary (--wiggle; default build/release/wiggle) and, on a machine
 without the bed, a bed cache that holds it (--cache, or $WIGGLE_CACHE): so a prepared binary and
 bed can be carried to a many-core node. The bed is made on the first run when the cache lacks it.
 
-Usage: bench/scaling.py [--wiggle PATH] [--config configs/paper_depth.toml] [--threads 1,2,4,8,16]
-                        [--steps 2000] [--rounds 3] [--cache DIR] [--work-dir DIR] [--csv FILE]
+Usage: bench/scaling.py [--wiggle PATH] [--config configs/paper_depth.toml] [--set KEY=VALUE ...]
+                        [--threads 1,2,4,8,16] [--steps 2000] [--rounds 3] [--cache DIR]
+                        [--work-dir DIR] [--csv FILE]
        (or bench/run_bench.sh --scaling ...)
 """
 import argparse
@@ -42,9 +46,9 @@ def median(v):
     return v[n // 2] if n % 2 else 0.5 * (v[n // 2 - 1] + v[n // 2])
 
 
-def run_case(wiggle, config, steps, dt, threads, out_dir, env):
+def run_case(wiggle, config, extra, steps, dt, threads, out_dir, env):
     shutil.rmtree(out_dir, ignore_errors=True)
-    sets = COMMON + ["run.duration=%r" % (steps * dt), "run.sample_interval=%r" % (max(1, steps // 4) * dt)]
+    sets = COMMON + extra + ["run.duration=%r" % (steps * dt), "run.sample_interval=%r" % (max(1, steps // 4) * dt)]
     cmd = [wiggle, "run", config, "--out", out_dir, "--threads", str(threads)]
     for s in sets:
         cmd += ["--set", s]
@@ -60,6 +64,8 @@ def main():
     ap.add_argument("--wiggle", default=os.path.join(REPO, "build", "release", "wiggle"), help="the binary to run")
     ap.add_argument("--config", default=os.path.join(REPO, "configs", "paper_depth.toml"),
                     help="the case (its bed and engine keys); configs/paper.toml for the paper bed")
+    ap.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
+                    help="a config key for every run, as wiggle run --set (e.g. intruder.shape=square)")
     ap.add_argument("--threads", default="1,2,4,8,16", help="thread counts; those above the usable CPUs are dropped")
     ap.add_argument("--steps", type=int, default=4000, help="steps of each run, a multiple of 4 (at least ~2,000)")
     ap.add_argument("--dt", type=float, default=1e-4, help="the config's run.dt (the steps' duration)")
@@ -88,13 +94,13 @@ def main():
     os.makedirs(args.work_dir, exist_ok=True)
     # The bed first (made and cached when missing): no run below times it.
     log("bed: made once and cached (that can take long) ...")
-    run_case(args.wiggle, args.config, 400, args.dt, 1, os.path.join(args.work_dir, "bed"), env)
+    run_case(args.wiggle, args.config, args.set, 400, args.dt, 1, os.path.join(args.work_dir, "bed"), env)
 
     runs = {t: [] for t in threads}
     for r in range(args.rounds):
         order = threads[r % len(threads):] + threads[:r % len(threads)]  # which count goes first rotates
         for t in order:
-            s = run_case(args.wiggle, args.config, args.steps, args.dt, t, os.path.join(args.work_dir, "t%d" % t), env)
+            s = run_case(args.wiggle, args.config, args.set, args.steps, args.dt, t, os.path.join(args.work_dir, "t%d" % t), env)
             runs[t].append(s)
             p = s["step_profile"]
             log("  round %d, %2d threads: %.2f ns/particle-step, serial %.3f, wait %.3f" %
@@ -124,6 +130,15 @@ def main():
                          serial_share=serial[t], wait_share=wait[t], load=load[0]))
         log("| %d | %.2f | %.2f | %.2f | %.3f | %.3f |" % (t, ns[t], ns[1] / ns[t], amdahl, serial[t], wait[t]))
     log("(speed-up below Amdahl's prediction is the wait share's: threads idle at a region's end)")
+    imbalance = runs[1][0]["step_profile"].get("strip_imbalance", {})
+    if imbalance:
+        log("")
+        log("Prediction with the strips' imbalance b(n) (the list's blocks), s = %.3f:" % s1)
+        log("| threads | b(n) | Amdahl | with b(n): 1/(s+(1-s)b/n) |")
+        log("|---|---|---|---|")
+        for n in sorted(imbalance, key=int):
+            b, t = imbalance[n], int(n)
+            log("| %d | %.3f | %.2f | %.2f |" % (t, b, 1.0 / (s1 + (1.0 - s1) / t), 1.0 / (s1 + (1.0 - s1) * b / t)))
     if args.csv:
         new = not os.path.exists(args.csv)
         with open(args.csv, "a", newline="") as f:

@@ -121,17 +121,23 @@ void NeighbourList::build(const ParticleStore& s, double boxWidth, double skin,
       sizes.push_back(static_cast<std::uint32_t>(local.size() - before));
     }
   }
-  rowStart.assign(rows + 1, 0);
-  partner.clear();
-  std::uint32_t row = 0;
-  for (std::size_t t = 0; t < partnersOf.size(); ++t) {
-    partner.insert(partner.end(), partnersOf[t].begin(), partnersOf[t].end());
-    for (std::uint32_t count : rowSizesOf[t]) {
-      rowStart[row + 1] = rowStart[row] + count;
-      ++row;
-    }
+  // Each thread's rows go to their place, found from the sizes of the threads before it.
+  const std::size_t parts = partnersOf.size();
+  std::vector<std::uint32_t> firstPair(parts + 1, 0), firstRow(parts + 1, 0);
+  for (std::size_t t = 0; t < parts; ++t) {
+    firstPair[t + 1] = firstPair[t] + static_cast<std::uint32_t>(partnersOf[t].size());
+    firstRow[t + 1] = firstRow[t] + static_cast<std::uint32_t>(rowSizesOf[t].size());
   }
-  WIGGLE_ASSERT(row == rows);
+  WIGGLE_ASSERT(firstRow[parts] == rows);
+  rowStart.resize(rows + 1);
+  rowStart[0] = 0;
+  partner.resize(firstPair[parts]);
+#pragma omp parallel for schedule(static)
+  for (std::int64_t t = 0; t < static_cast<std::int64_t>(parts); ++t) {
+    std::copy(partnersOf[t].begin(), partnersOf[t].end(), partner.begin() + firstPair[t]);
+    std::uint32_t row = firstRow[t], start = firstPair[t];
+    for (std::uint32_t count : rowSizesOf[t]) rowStart[++row] = start += count;
+  }
 
   // Carry the history of pairs that existed before, matching them by their old indices.
   const std::uint32_t pairs = pairCount();
@@ -163,15 +169,17 @@ void NeighbourList::build(const ParticleStore& s, double boxWidth, double skin,
   deriveIndex(forceBlockRows(boxWidth));
 }
 
-NeighbourList::Strip NeighbourList::strip(std::uint32_t t, std::uint32_t threads) const {
+NeighbourList::Strip NeighbourList::strip(std::uint32_t t, std::uint32_t threads, std::uint32_t firstThreadPairs) const {
   WIGGLE_ASSERT(t < threads);
   const std::uint32_t blocks = blockCount(), rows = rowCount();
-  const std::uint64_t pairs = pairCount();
+  const std::uint64_t extra = firstThreadPairs, work = pairCount() + extra;
   // The first block whose first pair is at or past the share's start (the last strip ends at the
-  // last block, so that blocks without pairs at the end still belong to one).
+  // last block, so that blocks without pairs at the end still belong to one). The shares are of the
+  // work, the first thread's extra pairs ahead of the list's.
   auto boundary = [&](std::uint32_t share) -> std::uint32_t {
     if (share == threads) return blocks;
-    const std::uint64_t start = pairs * share / threads;
+    const std::uint64_t workStart = work * share / threads;
+    const std::uint64_t start = workStart > extra ? workStart - extra : 0;
     std::uint32_t lo = 0, hi = blocks;
     while (lo < hi) {
       const std::uint32_t mid = lo + (hi - lo) / 2;
@@ -186,6 +194,17 @@ NeighbourList::Strip NeighbourList::strip(std::uint32_t t, std::uint32_t threads
   return {first, last, std::min(first * blockRows, rows), std::min(last * blockRows, rows)};
 }
 
+double NeighbourList::stripImbalance(std::uint32_t threads, std::uint32_t firstThreadPairs) const {
+  const std::uint64_t work = pairCount() + std::uint64_t{firstThreadPairs};
+  if (rowCount() == 0 || work == 0) return 1.0;
+  std::uint64_t heaviest = 0;
+  for (std::uint32_t t = 0; t < threads; ++t) {
+    const Strip s = strip(t, threads, firstThreadPairs);
+    heaviest = std::max<std::uint64_t>(heaviest, rowStart[s.lastRow] - rowStart[s.firstRow] + (t == 0 ? firstThreadPairs : 0));
+  }
+  return static_cast<double>(heaviest) * threads / static_cast<double>(work);
+}
+
 std::uint32_t forceBlockRows(double boxWidth) {
   return static_cast<std::uint32_t>(std::clamp(4.0 * std::ceil(boxWidth), 64.0, 1e6));
 }
@@ -195,20 +214,40 @@ void NeighbourList::deriveIndex(std::uint32_t rows) {
   blockRows = rows;
   const std::uint32_t grains = rowCount();
   const std::uint32_t pairs = pairCount();
+  const auto blocks = static_cast<std::int64_t>(blockCount());
   owner.resize(pairs);
-  for (std::uint32_t i = 0; i < grains; ++i)
-    for (std::uint32_t k = rowStart[i]; k < rowStart[i + 1]; ++k) owner[k] = i;
-  auto isCross = [&](std::uint32_t k) {
-    return partner[k] < grains && partner[k] / blockRows != owner[k] / blockRows;
-  };
   crossStart.assign(grains + 1, 0);
-  for (std::uint32_t k = 0; k < pairs; ++k)
-    if (isCross(k)) ++crossStart[partner[k] + 1];
+  // A grain's cross pairs come from owners in earlier blocks, at most `reach` rows before it (the
+  // list's largest partner - owner among grains). So each block of partners finds its cross pairs
+  // by scanning only the owners within reach before it, in ascending pair order, and writes only
+  // its own grains' entries: the blocks go in parallel, and the index is the serial one's.
+  std::uint32_t reach = 0;
+#pragma omp parallel for schedule(static) reduction(max : reach)
+  for (std::uint32_t i = 0; i < grains; ++i)
+    for (std::uint32_t k = rowStart[i]; k < rowStart[i + 1]; ++k) {
+      owner[k] = i;
+      if (partner[k] < grains) reach = std::max(reach, partner[k] - i);
+    }
+  // Calls f(k, p) for each cross pair k into block b's grain p, in ascending k.
+  auto forCrossPairsInto = [&](std::uint32_t b, auto&& f) {
+    const std::uint32_t first = b * blockRows, end = std::min(first + blockRows, grains);
+    for (std::uint32_t i = first > reach ? first - reach : 0; i < first; ++i)
+      for (std::uint32_t k = rowStart[i]; k < rowStart[i + 1]; ++k)
+        if (partner[k] >= first && partner[k] < end) f(k, partner[k]);
+  };
+#pragma omp parallel for schedule(static)
+  for (std::int64_t b = 0; b < blocks; ++b)
+    forCrossPairsInto(static_cast<std::uint32_t>(b), [&](std::uint32_t, std::uint32_t p) { ++crossStart[p + 1]; });
   for (std::uint32_t p = 0; p < grains; ++p) crossStart[p + 1] += crossStart[p];
   crossPair.resize(crossStart[grains]);
-  std::vector<std::uint32_t> fill(crossStart.begin(), crossStart.end() - 1);
-  for (std::uint32_t k = 0; k < pairs; ++k)
-    if (isCross(k)) crossPair[fill[partner[k]]++] = k;
+#pragma omp parallel for schedule(static)
+  for (std::int64_t b = 0; b < blocks; ++b) {
+    const std::uint32_t first = static_cast<std::uint32_t>(b) * blockRows;
+    const std::uint32_t end = std::min(first + blockRows, grains);
+    std::vector<std::uint32_t> fill(crossStart.begin() + first, crossStart.begin() + end);
+    forCrossPairsInto(static_cast<std::uint32_t>(b),
+                      [&](std::uint32_t k, std::uint32_t p) { crossPair[fill[p - first]++] = k; });
+  }
 }
 
 }  // namespace wiggle

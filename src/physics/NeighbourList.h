@@ -45,11 +45,17 @@ struct NeighbourList {
   // a thread evaluates its strip's blocks and then passes over the strip's grains, so the sums it
   // writes are the ones it reads, on its own core, and only the strips' edges (cross pairs,
   // partners' positions) cross between cores. Which thread evaluates a block never changes a sum.
+  // `firstThreadPairs`: pairs the first thread evaluates besides its strip (the intruder's), counted
+  // into its share, so that its strip is that much shorter.
   struct Strip {
     std::uint32_t firstBlock, lastBlock;  // blocks [firstBlock, lastBlock)
     std::uint32_t firstRow, lastRow;      // their grains [firstRow, lastRow)
   };
-  Strip strip(std::uint32_t t, std::uint32_t threads) const;
+  Strip strip(std::uint32_t t, std::uint32_t threads, std::uint32_t firstThreadPairs = 0) const;
+  // The heaviest of `threads` strips' pairs (the first thread's with its firstThreadPairs) over the
+  // mean: the force stage at that thread count takes at least this times a perfect share. It is
+  // fixed by the blocks (a strip holds whole blocks), so a list of few blocks bounds the speed-up.
+  double stripImbalance(std::uint32_t threads, std::uint32_t firstThreadPairs = 0) const;
 
   // Rebuilds from the store (x already wrapped into [0, W)). History is carried from `old` for every
   // pair present in both: newToOld maps a new particle index to its index in `old` (empty:

@@ -15,7 +15,7 @@ constexpr std::array<StageInfo, StepProfile::kStages> kStageInfo = {{
     {"contact_forces", StageKind::Parallel},
     {"intruder_sums", StageKind::Serial},
     {"complete_forces", StageKind::Parallel},
-    {"health_scan", StageKind::Serial},
+    {"health_scan", StageKind::Mixed},
 }};
 
 double secondsBetween(StepProfile::Clock::time_point from, StepProfile::Clock::time_point to) {

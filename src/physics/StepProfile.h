@@ -24,7 +24,7 @@ enum class StepStage : std::uint8_t {
   ContactForces,   // force blocks, and the intruder's pair kernel on the first thread (parallel)
   IntruderSums,    // the intruder's pair forces onto its grains and the clump, in list order (serial)
   CompleteForces,  // cross pairs, gravity, the kicks, the next step's drift (parallel)
-  HealthScan,      // the blow-up detector's full scan (serial)
+  HealthScan,      // the blow-up detector's full scan (parallel loops, the intruder's pairs serial)
   Count
 };
 

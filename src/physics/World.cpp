@@ -423,7 +423,7 @@ double World::passOverGrains(GrainPass pass) {
     const auto threads = static_cast<std::uint32_t>(omp_get_num_threads());
     const auto t = static_cast<std::uint32_t>(omp_get_thread_num());
     if (byStrip) {
-      const NeighbourList::Strip strip = list_.strip(t, threads);
+      const NeighbourList::Strip strip = list_.strip(t, threads, firstThreadPairs());
       maxSq = range(a, strip.firstRow, strip.lastRow, dt, gravity);
     } else {
       maxSq = range(a, static_cast<std::uint32_t>(std::uint64_t{n} * t / threads),
@@ -433,6 +433,10 @@ double World::passOverGrains(GrainPass pass) {
   }
   return maxSq;
 }
+
+std::uint32_t World::firstThreadPairs() const { return hasIntruder_ ? intruderPairs_.size() : 0; }
+
+double World::stripImbalance(std::uint32_t threads) const { return list_.stripImbalance(threads, firstThreadPairs()); }
 
 void World::kickIntruder() {
   clumpState_.vy += 0.5 * def_.dt * (clumpState_.contactFy - clump_.mass * def_.gravity) / clump_.mass;
@@ -448,7 +452,9 @@ void World::startIntruder() {
 void World::rebuildNeighbours() {
   ParticleStore& s = store_;
   const double width = def_.boxWidth;
-  for (std::uint32_t i = 0; i < s.grainCount; ++i) {
+  const auto grains = static_cast<std::int64_t>(s.grainCount);
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < grains; ++i) {
     // Grains move far less than a box width between rebuilds; the loops only guard blow-ups.
     while (s.x[i] < 0.0) s.x[i] += width;
     while (s.x[i] >= width) s.x[i] -= width;
@@ -485,9 +491,10 @@ void World::rebuildNeighbours() {
   }
   profile_.lap(StepStage::ListSort);
 
-  NeighbourList fresh;
-  fresh.build(s, width, def_.skin, list_, newToOld);
-  list_ = std::move(fresh);
+  // Built into the previous list's memory (its arrays keep their capacity): no allocation, no page
+  // faults and no release of the old arrays on the one thread that would do them.
+  spareList_.build(s, width, def_.skin, list_, newToOld);
+  std::swap(list_, spareList_);
   profile_.lap(StepStage::ListBuild);
   xAtBuild_.assign(s.x.begin(), s.x.begin() + s.grainCount);
   yAtBuild_.assign(s.y.begin(), s.y.begin() + s.grainCount);
@@ -502,7 +509,9 @@ void World::rebuildNeighbours() {
 void World::refreshKinematics() {
   const ParticleStore& s = store_;
   kinematics_.resize(s.size());
-  for (std::uint32_t i = 0; i < s.size(); ++i) kinematics_[i] = Kinematics{s.x[i], s.y[i], s.vx[i], s.vy[i]};
+  const auto particles = static_cast<std::int64_t>(s.size());
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < particles; ++i) kinematics_[i] = Kinematics{s.x[i], s.y[i], s.vx[i], s.vy[i]};
 }
 
 bool World::intruderPairsStale() const {
@@ -582,7 +591,8 @@ void World::computeContactForces(bool updateShear) {
   // 1. Force blocks, each thread those of its strip (NeighbourList::strip; a block's sums do not
   //    depend on which thread evaluates it), and on the first thread, before its strip, the
   //    intruder's pairs: they read only positions and velocities, which no block writes, and write
-  //    only their own slots. The largest overlap excess is a max: no dependence on the threads.
+  //    only their own slots; its strip is shorter by as many pairs. The largest overlap excess is a
+  //    max: no dependence on the threads.
   double worstExcess = -std::numeric_limits<double>::infinity();
   const bool profiling = profile_.inStep();  // each thread's work, for the profile's wait (StepProfile)
   if (profiling) profile_.beginRegion(omp_get_max_threads());
@@ -595,7 +605,7 @@ void World::computeContactForces(bool updateShear) {
     if (t == 0 && hasIntruder_)
       worstExcess = std::max(worstExcess, kernels_->intruderPairForces(s, clump_, clumpState_, intruderPairs_, params,
                                                                        dt, width, updateShear, overlapRatio));
-    const NeighbourList::Strip strip = list.strip(t, threads);
+    const NeighbourList::Strip strip = list.strip(t, threads, firstThreadPairs());
     for (std::uint32_t b = strip.firstBlock; b < strip.lastBlock; ++b)
       worstExcess = std::max(worstExcess, kernels_->forceBlock(b, s, kinematics_.data(), list, params, dt, width,
                                                                updateShear, overlapRatio));

@@ -105,6 +105,10 @@ class World {
   // it reads clocks only.
   void enableStepProfile(bool on = true);
   const StepProfile& stepProfile() const { return profile_; }
+  // The force stage's load imbalance at `threads` threads on the current list: the heaviest
+  // thread's pairs over the mean (NeighbourList::stripImbalance, the intruder's pairs on the first
+  // thread). A prediction for any thread count, whatever this machine has.
+  double stripImbalance(std::uint32_t threads) const;
 
   // --- stepping ---
   void step();
@@ -179,12 +183,14 @@ class World {
   void rebuildNeighbours();       // wrap, maybe re-sort, rebuild both lists carrying history
   void rebuildIntruderPairs(const std::vector<std::uint32_t>& newToOld);
   bool intruderPairsStale() const;
+  std::uint32_t firstThreadPairs() const;  // the intruder's pairs, which the first thread evaluates
   void computeContactForces(bool updateShear);  // contacts only: grains' sums are completed by...
   // ...cross pairs and gravity, then the second half kick; with startNextStep also the next step's
   // first half kick and drift of the grains.
   void completeForces(bool kick, bool startNextStep = false);
   void refreshKinematics();       // every particle's Kinematics record from the store
   void checkHealth();
+  void checkHealthInOrder() const;  // after a failed checkHealth: throws for the first offender
   void checkTimeStep() const;
   void invalidate();              // structure changed: rebuild and re-prepare before the next step
 
@@ -193,6 +199,7 @@ class World {
   ParticleStore store_;
   std::vector<Kinematics> kinematics_;  // mirror of the store's x, y, vx, vy
   NeighbourList list_;
+  NeighbourList spareList_;  // the list before the last rebuild: the next one is built into its memory
   IntruderPairs intruderPairs_;
   bool hasIntruder_ = false;
   ClumpDef clump_;

@@ -6,6 +6,7 @@
 #include <string>
 #include <type_traits>
 
+#include "core/Assert.h"
 #include "core/Format.h"
 #include "core/Hash.h"
 #include "physics/World.h"
@@ -50,65 +51,119 @@ void World::checkTimeStep() const {
                 " steps per contact)");
 }
 
+namespace {
+
+// Whether grain i fails the scan: a position or velocity not finite, below the base, or faster than
+// the bound.
+bool grainFails(const ParticleStore& s, std::uint32_t i, double maxSpeedSq) {
+  const bool finite = std::isfinite(s.x[i]) && std::isfinite(s.y[i]) && std::isfinite(s.vx[i]) &&
+                      std::isfinite(s.vy[i]) && std::isfinite(s.omega[i]);
+  return !finite || s.y[i] < 0.0 || s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] > maxSpeedSq;
+}
+
+// The overlap of two discs whose centres are (dx, dy) apart across the periodic box.
+double periodicOverlap(double dx, double dy, double ri, double rj, double width) {
+  if (dx > 0.5 * width) dx -= width;
+  else if (dx < -0.5 * width) dx += width;
+  return ri + rj - std::sqrt(dx * dx + dy * dy);
+}
+
+}  // namespace
+
 // The full scan of the blow-up detector (docs/RELIABILITY.md, "The blow-up detector"). Each bound
 // lies far beyond anything the model does when it is integrated correctly, however violent the
 // drive: it stops a run whose numbers no longer mean anything, never a run that is merely extreme.
+// The grains and the grain pairs are scanned by all threads: the margins are maxima and the verdict
+// an "any", neither of which depends on the order, so they have the same bits at any thread count.
+// A failed scan is done again in index order on one thread (checkHealthInOrder), which throws for
+// the first offender, so the error names the same grain at any thread count.
 void World::checkHealth() {
+  const ParticleStore& s = store_;
+  const double maxSpeed = speedBound(), maxSpeedSq = maxSpeed * maxSpeed;
+  const double width = def_.boxWidth, ratio = def_.maxOverlapRatio;
+  const std::uint32_t grains = s.grainCount, pairs = list_.pairCount();
+  const std::uint32_t* owner = list_.owner.data();
+  const std::uint32_t* partner = list_.partner.data();
+  double fastestSq = 0.0, deepest = 0.0;
+  bool failed = false;
+#pragma omp parallel reduction(max : fastestSq, deepest) reduction(|| : failed)
+  {
+#pragma omp for schedule(static) nowait
+    for (std::uint32_t i = 0; i < grains; ++i) {
+      failed = failed || grainFails(s, i, maxSpeedSq);
+      fastestSq = std::max(fastestSq, s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i]);
+    }
+#pragma omp for schedule(static)
+    for (std::uint32_t k = 0; k < pairs; ++k) {
+      const std::uint32_t i = owner[k], j = partner[k];
+      const double overlap = periodicOverlap(s.x[i] - s.x[j], s.y[i] - s.y[j], s.radius[i], s.radius[j], width);
+      const double allowed = ratio * std::min(s.radius[i], s.radius[j]);
+      failed = failed || overlap > allowed;
+      deepest = std::max(deepest, overlap / allowed);
+    }
+  }
+  if (hasIntruder_) {
+    failed = failed || !std::isfinite(clumpState_.y) || !std::isfinite(clumpState_.vy);
+    for (std::uint32_t p = 0; p < intruderPairs_.size(); ++p) {
+      const std::uint32_t g = intruderPairs_.grain[p], a = intruderPairs_.atom[p];
+      const double overlap = periodicOverlap(s.x[g] - (clumpState_.x + clump_.offsetX[a]),
+                                             s.y[g] - (clumpState_.y + clump_.offsetY[a]), s.radius[g],
+                                             clump_.atomRadius, width);
+      const double allowed = ratio * s.radius[g];
+      failed = failed || overlap > allowed;
+      deepest = std::max(deepest, overlap / allowed);
+    }
+  }
+  if (failed) {
+    checkHealthInOrder();
+    WIGGLE_ASSERT(false && "the ordered scan found what the parallel one did");
+  }
+  margins_.speed = std::max(margins_.speed, std::sqrt(fastestSq) / maxSpeed);
+  margins_.overlap = std::max(margins_.overlap, deepest);
+}
+
+void World::checkHealthInOrder() const {
   const ParticleStore& s = store_;
   const std::string at = "step " + std::to_string(step_) + " (t = " + formatNumber(time()) + "): ";
   const std::string cure = " (the simulation blew up: reduce run.dt)";
   const double maxSpeed = speedBound();
-  double fastestSq = 0.0;
   for (std::uint32_t i = 0; i < s.grainCount; ++i) {
-    const bool finite = std::isfinite(s.x[i]) && std::isfinite(s.y[i]) && std::isfinite(s.vx[i]) &&
-                        std::isfinite(s.vy[i]) && std::isfinite(s.omega[i]);
-    if (!finite)
-      throw SimulationError(at + "grain " + std::to_string(s.tag[i]) + " has a non-finite position or velocity" + cure);
+    if (!grainFails(s, i, maxSpeed * maxSpeed)) continue;
+    const std::string grain = "grain " + std::to_string(s.tag[i]);
+    if (!(std::isfinite(s.x[i]) && std::isfinite(s.y[i]) && std::isfinite(s.vx[i]) && std::isfinite(s.vy[i]) &&
+          std::isfinite(s.omega[i])))
+      throw SimulationError(at + grain + " has a non-finite position or velocity" + cure);
     if (s.y[i] < 0.0)
-      throw SimulationError(at + "grain " + std::to_string(s.tag[i]) + " fell through the base (y = " +
-                            formatNumber(s.y[i]) + ")" + cure);
-    const double speedSq = s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i];
-    if (speedSq > maxSpeed * maxSpeed)
-      throw SimulationError(at + "grain " + std::to_string(s.tag[i]) + " moves at " + formatNumber(std::sqrt(speedSq)) +
-                            " sqrt(g d), more than " + formatNumber(def_.maxSpeedFactor) +
-                            " times the fastest the fall or the drive can make it (" + formatNumber(maxSpeed / def_.maxSpeedFactor) +
-                            "): energy grew without a source" + cure);
-    fastestSq = std::max(fastestSq, speedSq);
+      throw SimulationError(at + grain + " fell through the base (y = " + formatNumber(s.y[i]) + ")" + cure);
+    throw SimulationError(at + grain + " moves at " + formatNumber(std::sqrt(s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i])) + " sqrt(g d), more than " +
+                          formatNumber(def_.maxSpeedFactor) + " times the fastest the fall or the drive can make it (" +
+                          formatNumber(maxSpeed / def_.maxSpeedFactor) + "): energy grew without a source" + cure);
   }
-  margins_.speed = std::max(margins_.speed, std::sqrt(fastestSq) / maxSpeed);
-  const double width = def_.boxWidth, halfWidth = 0.5 * width;
-  double deepest = 0.0;
   // The bound is relative to the radius of the grain that reaches in (the smaller of two grains):
   // at maxOverlapRatio = 1 its centre would be at the other grain's surface or the intruder's
   // outline, where the pair's normal no longer separates them and a grain can pass through.
   auto checkOverlap = [&](double dx, double dy, double ri, double rj, double boundRadius, std::uint32_t tag,
                           const char* what) {
-    if (dx > halfWidth) dx -= width;
-    else if (dx < -halfWidth) dx += width;
-    const double overlap = ri + rj - std::sqrt(dx * dx + dy * dy);
+    const double overlap = periodicOverlap(dx, dy, ri, rj, def_.boxWidth);
     const double allowed = def_.maxOverlapRatio * boundRadius;
     if (overlap > allowed)
       throw SimulationError(at + "grain " + std::to_string(tag) + " overlaps " + what + " by " + formatNumber(overlap) +
                             " d, more than " + formatNumber(def_.maxOverlapRatio) + " of the radius " + formatNumber(boundRadius) +
                             ": it is passing through" + cure);
-    deepest = std::max(deepest, overlap / allowed);
   };
   for (std::uint32_t k = 0; k < list_.pairCount(); ++k) {
     const std::uint32_t i = list_.owner[k], j = list_.partner[k];
     checkOverlap(s.x[i] - s.x[j], s.y[i] - s.y[j], s.radius[i], s.radius[j], std::min(s.radius[i], s.radius[j]),
-                 s.tag[i],
-                 j < s.grainCount ? "another grain" : "a base particle");
+                 s.tag[i], j < s.grainCount ? "another grain" : "a base particle");
   }
-  if (hasIntruder_) {
-    if (!std::isfinite(clumpState_.y) || !std::isfinite(clumpState_.vy))
-      throw SimulationError(at + "the intruder's height or velocity is not finite" + cure);
-    for (std::uint32_t p = 0; p < intruderPairs_.size(); ++p) {
-      const std::uint32_t g = intruderPairs_.grain[p], a = intruderPairs_.atom[p];
-      checkOverlap(s.x[g] - (clumpState_.x + clump_.offsetX[a]), s.y[g] - (clumpState_.y + clump_.offsetY[a]),
-                   s.radius[g], clump_.atomRadius, s.radius[g], s.tag[g], "the intruder");
-    }
+  if (!hasIntruder_) return;
+  if (!std::isfinite(clumpState_.y) || !std::isfinite(clumpState_.vy))
+    throw SimulationError(at + "the intruder's height or velocity is not finite" + cure);
+  for (std::uint32_t p = 0; p < intruderPairs_.size(); ++p) {
+    const std::uint32_t g = intruderPairs_.grain[p], a = intruderPairs_.atom[p];
+    checkOverlap(s.x[g] - (clumpState_.x + clump_.offsetX[a]), s.y[g] - (clumpState_.y + clump_.offsetY[a]),
+                 s.radius[g], clump_.atomRadius, s.radius[g], s.tag[g], "the intruder");
   }
-  margins_.overlap = std::max(margins_.overlap, deepest);
 }
 
 // ---------------------------------------------------------------- observations

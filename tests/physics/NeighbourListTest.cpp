@@ -170,35 +170,51 @@ TEST(NeighbourList, SameListForAnyThreadCount) {
   omp_set_num_threads(threads);
   EXPECT_EQ(one.rowStart, three.rowStart);
   EXPECT_EQ(one.partner, three.partner);
+  EXPECT_EQ(one.owner, three.owner);
+  EXPECT_EQ(one.crossStart, three.crossStart);
   EXPECT_EQ(one.crossPair, three.crossPair);
 }
 
+// The strips tile the blocks in order, and share the work: the list's pairs and the pairs the first
+// thread evaluates besides its strip (the intruder's), which shorten its strip.
 TEST(NeighbourList, StripsTileTheBlocksAndShareThePairs) {
   const ParticleStore s = randomStore(600, 20.0, 8);
   NeighbourList list = built(s);
   list.deriveIndex(7);  // 86 blocks, so that the shares can be even
   const std::uint32_t blocks = list.blockCount(), rows = list.rowCount();
-  for (std::uint32_t threads : {1u, 2u, 3u, 5u, 200u}) {
-    std::uint32_t nextBlock = 0, nextRow = 0, largest = 0;
-    for (std::uint32_t t = 0; t < threads; ++t) {
-      const NeighbourList::Strip strip = list.strip(t, threads);
-      EXPECT_EQ(strip.firstBlock, nextBlock) << threads << " threads, strip " << t;  // consecutive, no gap
-      EXPECT_EQ(strip.firstRow, nextRow);
-      EXPECT_LE(strip.firstBlock, strip.lastBlock);
-      EXPECT_EQ(strip.lastRow, std::min(strip.lastBlock * 7, rows));  // a strip's rows are its blocks'
-      nextBlock = strip.lastBlock;
-      nextRow = strip.lastRow;
-      const std::uint32_t pairs = list.rowStart[strip.lastRow] - list.rowStart[strip.firstRow];
-      largest = std::max(largest, pairs);
+  std::uint32_t largestBlock = 0;
+  for (std::uint32_t b = 0; b < blocks; ++b)
+    largestBlock = std::max(largestBlock, list.rowStart[std::min((b + 1) * 7, rows)] - list.rowStart[b * 7]);
+  for (std::uint32_t extra : {0u, 40u, 400u})
+    for (std::uint32_t threads : {1u, 2u, 3u, 5u, 200u}) {
+      std::uint32_t nextBlock = 0, nextRow = 0, heaviest = 0;
+      for (std::uint32_t t = 0; t < threads; ++t) {
+        const NeighbourList::Strip strip = list.strip(t, threads, extra);
+        EXPECT_EQ(strip.firstBlock, nextBlock) << threads << " threads, strip " << t;  // consecutive, no gap
+        EXPECT_EQ(strip.firstRow, nextRow);
+        EXPECT_LE(strip.firstBlock, strip.lastBlock);
+        EXPECT_EQ(strip.lastRow, std::min(strip.lastBlock * 7, rows));  // a strip's rows are its blocks'
+        nextBlock = strip.lastBlock;
+        nextRow = strip.lastRow;
+        const std::uint32_t work = list.rowStart[strip.lastRow] - list.rowStart[strip.firstRow] + (t == 0 ? extra : 0);
+        heaviest = std::max(heaviest, work);
+      }
+      EXPECT_EQ(nextBlock, blocks) << threads << " threads";  // every block, and every row, once
+      EXPECT_EQ(nextRow, rows);
+      // No strip holds more than its share of the work and one block (the first thread's extra pairs
+      // are not divisible: past a share, they are its whole work).
+      const std::uint32_t work = list.pairCount() + extra, share = (work + threads - 1) / threads;
+      EXPECT_LE(heaviest, std::max(share, extra) + largestBlock) << threads << " threads, extra " << extra;
+      EXPECT_DOUBLE_EQ(list.stripImbalance(threads, extra), static_cast<double>(heaviest) * threads / work);
+      EXPECT_GE(list.stripImbalance(threads, extra), 1.0);
     }
-    EXPECT_EQ(nextBlock, blocks) << threads << " threads";  // every block, and every row, once
-    EXPECT_EQ(nextRow, rows);
-    // No strip holds more than its share of the pairs and one block.
-    std::uint32_t largestBlock = 0;
-    for (std::uint32_t b = 0; b < blocks; ++b)
-      largestBlock = std::max(largestBlock, list.rowStart[std::min((b + 1) * 7, rows)] - list.rowStart[b * 7]);
-    EXPECT_LE(largest, (list.pairCount() + threads - 1) / threads + largestBlock) << threads << " threads";
-  }
+  EXPECT_DOUBLE_EQ(list.stripImbalance(1, 40), 1.0);
+  // The first thread's strip shrinks by about its extra pairs.
+  const auto firstStripPairs = [&](std::uint32_t extra) {
+    const NeighbourList::Strip strip = list.strip(0, 2, extra);
+    return list.rowStart[strip.lastRow] - list.rowStart[strip.firstRow];
+  };
+  EXPECT_LE(firstStripPairs(400), firstStripPairs(0) - 200 + largestBlock);
 }
 
 TEST(NeighbourList, RefusesABoxNarrowerThanThreeCells) {

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <numbers>
 #include <set>
+#include <string>
+#include <tuple>
 #include <utility>
 
 #include "core/Rng.h"
@@ -430,6 +432,44 @@ TEST(World, BlowUpIsStoppedWithADiagnostic) {
     const std::string msg = e.what();
     EXPECT_NE(msg.find("step "), std::string::npos) << msg;
     EXPECT_NE(msg.find("grain "), std::string::npos) << msg;
+  }
+}
+
+// The full scan runs on every thread: its margins are maxima, and a failed scan is done again on one
+// thread, which names the first offender in index order. Both are the same at any thread count.
+TEST(World, HealthScanIsTheSameAtAnyThreadCount) {
+  auto scan = [](int threads, bool spoil) {
+    const int saved = omp_get_max_threads();
+    omp_set_num_threads(threads);
+    WorldDef def = smallBox(24.0);
+    def.healthInterval = 1;
+    World w(def);
+    addBaseRow(w, 24.0);
+    // 300 grains on a lattice whose lowest row presses slightly into the base (overlaps to measure).
+    for (int r = 0; r < 15; ++r)
+      for (int c = 0; c < 20; ++c) w.addGrain((c + 0.5) * 1.2, 0.99 + 1.2 * r, 0.5);
+    if (spoil) {  // two grains far past the speed bound, one above the pile and one in its lowest row
+      w.addGrain(5.0, 25.0, 0.5, -900.0, 0.0);
+      w.addGrain(0.3, 0.99 + 1.2, 0.45, 900.0, 0.0);
+    }
+    std::string error;
+    try {
+      w.run(50);
+    } catch (const SimulationError& e) {
+      error = e.what();
+    }
+    omp_set_num_threads(saved);
+    return std::make_tuple(error, w.healthMargins().speed, w.healthMargins().overlap);
+  };
+  const auto clean = scan(1, false);
+  EXPECT_EQ(std::get<0>(clean), "");
+  EXPECT_GT(std::get<1>(clean), 0.0);
+  EXPECT_GT(std::get<2>(clean), 0.0);
+  const auto spoilt = scan(1, true);
+  EXPECT_NE(std::get<0>(spoilt).find("energy grew without a source"), std::string::npos) << std::get<0>(spoilt);
+  for (const int threads : {2, 3}) {
+    EXPECT_EQ(scan(threads, false), clean) << threads << " threads";  // the margins to the bit
+    EXPECT_EQ(scan(threads, true), spoilt) << threads << " threads";  // the same message
   }
 }
 

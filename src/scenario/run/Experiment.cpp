@@ -270,7 +270,7 @@ RunSummary summarise(const Case& run, const std::string& dir, const World& world
   summary.contacts = world.touchingPairs();
   summary.intruderPairs = world.intruderPairs().size();
   summary.stateBytesPerGrain = static_cast<double>(world.stateBytes()) / std::max(1u, world.grainCount());
-  if (world.stepProfile().on()) summary.stepProfile = stepProfileJson(world.stepProfile());
+  if (world.stepProfile().on()) summary.stepProfile = stepProfileJson(world);
   summary.shape = std::string(choiceName(config.intruder.shape));
   summary.amplitude = config.drive.amplitude;
   summary.period = config.drive.period;

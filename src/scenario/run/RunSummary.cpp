@@ -4,6 +4,7 @@
 
 #include "core/Error.h"
 #include "physics/StepProfile.h"
+#include "physics/World.h"
 
 namespace wiggle {
 
@@ -119,7 +120,8 @@ RunSummary summaryFromJson(const nlohmann::json& json) {
   return summary;
 }
 
-nlohmann::json stepProfileJson(const StepProfile& profile) {
+nlohmann::json stepProfileJson(const World& world) {
+  const StepProfile& profile = world.stepProfile();
   const double step = profile.stepSeconds();
   auto share = [step](double seconds) { return step > 0 ? seconds / step : 0.0; };
   nlohmann::json stages = nlohmann::json::object();
@@ -136,6 +138,8 @@ nlohmann::json stepProfileJson(const StepProfile& profile) {
     }
     stages[std::string(info.name)] = entry;
   }
+  nlohmann::json imbalance = nlohmann::json::object();
+  for (std::uint32_t threads : {2u, 4u, 8u, 16u, 32u}) imbalance[std::to_string(threads)] = world.stripImbalance(threads);
   const double serial = profile.serialShare(), wait = profile.waitShare();
   return {{"threads", profile.threads()},
           {"steps", profile.steps()},
@@ -143,7 +147,8 @@ nlohmann::json stepProfileJson(const StepProfile& profile) {
           {"serial_share", serial},
           {"wait_share", wait},
           {"serial_and_wait_share", serial + wait},
-          {"stages", stages}};
+          {"stages", stages},
+          {"strip_imbalance", imbalance}};
 }
 
 nlohmann::json summarySchema() {

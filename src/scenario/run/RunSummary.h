@@ -75,11 +75,12 @@ nlohmann::json toJson(const RunSummary& summary);
 // wiggle), a key of the wrong type throws wiggle::Error naming it.
 RunSummary summaryFromJson(const nlohmann::json& json);
 
-class StepProfile;
+class World;
 // summary.json's step_profile (docs/OUTPUT-FORMATS.md): threads, steps, step_s, serial_share,
-// wait_share, serial_and_wait_share and per stage its kind, seconds, share and calls (with the
-// parallel stages' work_s, wait_s and wait_share).
-nlohmann::json stepProfileJson(const StepProfile& profile);
+// wait_share, serial_and_wait_share, per stage its kind, seconds, share and calls (with the
+// parallel stages' work_s, wait_s and wait_share), and strip_imbalance: the force stage's load
+// imbalance on the run's last list at 2, 4, 8, 16 and 32 threads (World::stripImbalance).
+nlohmann::json stepProfileJson(const World& world);
 
 // The schema as JSON: [{"name", "type", "unit", "meaning"}, ...] (docs/summary-schema.json).
 nlohmann::json summarySchema();
