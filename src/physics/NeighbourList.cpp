@@ -220,7 +220,9 @@ void NeighbourList::deriveIndex(std::uint32_t rows) {
   // A grain's cross pairs come from owners in earlier blocks, at most `reach` rows before it (the
   // list's largest partner - owner among grains). So each block of partners finds its cross pairs
   // by scanning only the owners within reach before it, in ascending pair order, and writes only
-  // its own grains' entries: the blocks go in parallel, and the index is the serial one's.
+  // its own grains' entries: the blocks go in parallel, and the index is the serial one's. (The
+  // grains are sorted by height, so the reach is about a row; before the first sort of a bed kept in
+  // its imported order it can be the whole list, and the scans cost blocks x pairs until then.)
   std::uint32_t reach = 0;
 #pragma omp parallel for schedule(static) reduction(max : reach)
   for (std::uint32_t i = 0; i < grains; ++i)
