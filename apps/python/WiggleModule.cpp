@@ -31,6 +31,7 @@
 #include "scenario/run/Experiment.h"
 #include "scenario/run/Remeasure.h"
 #include "scenario/run/RunObservers.h"
+#include "scenario/run/RunSummary.h"
 
 namespace py = pybind11;
 
@@ -83,6 +84,7 @@ class PyCase {
     record_.bedKey = bed.key;
     record_.bedFromCache = bed.fromCache;
     world_.emplace(std::move(bed.world));
+    world_->enableStepProfile(run_.config.run.profile);  // as `wiggle run` does (run.profile)
     if (drive) installDrive(*drive, peakSpeed);
     world_->evaluateForces();  // the start's forces, as `wiggle run` evaluates them before its first step
     record_.sample(world_->intruder(), world_->time());  // and its first sample, as `wiggle run` takes it
@@ -189,6 +191,7 @@ class PyCase {
   PyCase(Case run, Checkpoint checkpoint, int threads)
       : run_(std::move(run)), threads_(threadsFor(threads)), fields_(std::move(checkpoint.fields)) {
     world_.emplace(std::move(checkpoint.world));
+    world_->enableStepProfile(run_.config.run.profile);  // this process's stepping, as a resumed run
     record_ = std::move(checkpoint.state);
   }
 
@@ -362,6 +365,14 @@ PYBIND11_MODULE(wiggle, m) {
           "config", [](const PyCase& c) { return wiggle::toToml(c.run().config); },
           "The resolved config as TOML (what config.toml of a run holds)")
       .def_property_readonly("bed_path", &PyCase::bedPath, "The cache file of its bed")
+      .def_property_readonly(
+          "step_profile",
+          [](const PyCase& c) -> py::object {
+            if (!c.world().stepProfile().on()) return py::none();
+            return py::module_::import("json").attr("loads")(wiggle::stepProfileJson(c.world()).dump());
+          },
+          "With run.profile = true: where the steps' wall time went so far, summary.json's step_profile "
+          "(a dict); else None")
       .def_property_readonly(
           "intruder",
           [](const PyCase& c) {

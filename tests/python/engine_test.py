@@ -232,6 +232,17 @@ class Engine(unittest.TestCase):
         count = int(lines[start - 6])
         return np.loadtxt(lines[start:start + count], ndmin=2)
 
+    def test_the_step_profile_is_wiggle_runs_when_asked(self):
+        self.assertIsNone(wiggle.Case(self.config, threads=1).step_profile)  # run.profile is off by default
+        c = wiggle.Case(self.config, {"run.profile": True}, threads=2)
+        c.step(300)
+        p = c.step_profile
+        self.assertEqual(p["steps"], 300)
+        self.assertEqual(p["threads"], 2)
+        self.assertAlmostEqual(sum(s["s"] for s in p["stages"].values()), p["step_s"], delta=1e-6 * p["step_s"])
+        self.assertEqual(sorted(p["strip_imbalance"]), ["16", "2", "32", "4", "8"])
+        self.assertGreaterEqual(min(p["strip_imbalance"].values()), 1.0)
+
     def test_arrays_are_read_only_views_of_the_engine(self):
         c = wiggle.Case(self.config, threads=1)
         x = c.x
