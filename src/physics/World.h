@@ -21,6 +21,8 @@
 
 namespace wiggle {
 
+struct PairOverlap;  // a pair's overlap against the health scan's bound (WorldChecks.cpp)
+
 struct WorldDef {
   double boxWidth = 0.0;     // W: the box is periodic in x over [0, W) [d]
   double dt = 1e-4;          // time step [sqrt(d/g)]
@@ -191,6 +193,8 @@ class World {
   void refreshKinematics();       // every particle's Kinematics record from the store
   void checkHealth();
   void checkHealthInOrder() const;  // after a failed checkHealth: throws for the first offender
+  PairOverlap grainPairOverlap(std::uint32_t k) const;     // list pair k, for the health scans
+  PairOverlap intruderPairOverlap(std::uint32_t p) const;  // intruder pair p, for the health scans
   void checkTimeStep() const;
   void invalidate();              // structure changed: rebuild and re-prepare before the next step
 

@@ -51,21 +51,36 @@ void World::checkTimeStep() const {
                 " steps per contact)");
 }
 
+// A pair's overlap and the most the detector allows it: maxOverlapRatio times the radius of the
+// grain that reaches in (the smaller of two grains; the grain against the intruder). At a ratio of 1
+// its centre would be at the other grain's surface or the intruder's outline, where the pair's
+// normal no longer separates them and a grain can pass through.
+struct PairOverlap {
+  double overlap, allowed, boundRadius;
+  bool tooDeep() const { return overlap > allowed; }
+};
+
 namespace {
+
+bool grainFinite(const ParticleStore& s, std::uint32_t i) {
+  return std::isfinite(s.x[i]) && std::isfinite(s.y[i]) && std::isfinite(s.vx[i]) && std::isfinite(s.vy[i]) &&
+         std::isfinite(s.omega[i]);
+}
+
+double speedSq(const ParticleStore& s, std::uint32_t i) { return s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i]; }
 
 // Whether grain i fails the scan: a position or velocity not finite, below the base, or faster than
 // the bound.
 bool grainFails(const ParticleStore& s, std::uint32_t i, double maxSpeedSq) {
-  const bool finite = std::isfinite(s.x[i]) && std::isfinite(s.y[i]) && std::isfinite(s.vx[i]) &&
-                      std::isfinite(s.vy[i]) && std::isfinite(s.omega[i]);
-  return !finite || s.y[i] < 0.0 || s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] > maxSpeedSq;
+  return !grainFinite(s, i) || s.y[i] < 0.0 || speedSq(s, i) > maxSpeedSq;
 }
 
-// The overlap of two discs whose centres are (dx, dy) apart across the periodic box.
-double periodicOverlap(double dx, double dy, double ri, double rj, double width) {
+// Two discs whose centres are (dx, dy) apart across the periodic box.
+PairOverlap pairOverlap(double dx, double dy, double ri, double rj, double boundRadius, double width,
+                        double ratio) {
   if (dx > 0.5 * width) dx -= width;
   else if (dx < -0.5 * width) dx += width;
-  return ri + rj - std::sqrt(dx * dx + dy * dy);
+  return {ri + rj - std::sqrt(dx * dx + dy * dy), ratio * boundRadius, boundRadius};
 }
 
 }  // namespace
@@ -80,10 +95,7 @@ double periodicOverlap(double dx, double dy, double ri, double rj, double width)
 void World::checkHealth() {
   const ParticleStore& s = store_;
   const double maxSpeed = speedBound(), maxSpeedSq = maxSpeed * maxSpeed;
-  const double width = def_.boxWidth, ratio = def_.maxOverlapRatio;
   const std::uint32_t grains = s.grainCount, pairs = list_.pairCount();
-  const std::uint32_t* owner = list_.owner.data();
-  const std::uint32_t* partner = list_.partner.data();
   double fastestSq = 0.0, deepest = 0.0;
   bool failed = false;
 #pragma omp parallel reduction(max : fastestSq, deepest) reduction(|| : failed)
@@ -91,27 +103,21 @@ void World::checkHealth() {
 #pragma omp for schedule(static) nowait
     for (std::uint32_t i = 0; i < grains; ++i) {
       failed = failed || grainFails(s, i, maxSpeedSq);
-      fastestSq = std::max(fastestSq, s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i]);
+      fastestSq = std::max(fastestSq, speedSq(s, i));
     }
 #pragma omp for schedule(static)
     for (std::uint32_t k = 0; k < pairs; ++k) {
-      const std::uint32_t i = owner[k], j = partner[k];
-      const double overlap = periodicOverlap(s.x[i] - s.x[j], s.y[i] - s.y[j], s.radius[i], s.radius[j], width);
-      const double allowed = ratio * std::min(s.radius[i], s.radius[j]);
-      failed = failed || overlap > allowed;
-      deepest = std::max(deepest, overlap / allowed);
+      const PairOverlap o = grainPairOverlap(k);
+      failed = failed || o.tooDeep();
+      deepest = std::max(deepest, o.overlap / o.allowed);
     }
   }
   if (hasIntruder_) {
     failed = failed || !std::isfinite(clumpState_.y) || !std::isfinite(clumpState_.vy);
     for (std::uint32_t p = 0; p < intruderPairs_.size(); ++p) {
-      const std::uint32_t g = intruderPairs_.grain[p], a = intruderPairs_.atom[p];
-      const double overlap = periodicOverlap(s.x[g] - (clumpState_.x + clump_.offsetX[a]),
-                                             s.y[g] - (clumpState_.y + clump_.offsetY[a]), s.radius[g],
-                                             clump_.atomRadius, width);
-      const double allowed = ratio * s.radius[g];
-      failed = failed || overlap > allowed;
-      deepest = std::max(deepest, overlap / allowed);
+      const PairOverlap o = intruderPairOverlap(p);
+      failed = failed || o.tooDeep();
+      deepest = std::max(deepest, o.overlap / o.allowed);
     }
   }
   if (failed) {
@@ -122,6 +128,20 @@ void World::checkHealth() {
   margins_.overlap = std::max(margins_.overlap, deepest);
 }
 
+PairOverlap World::grainPairOverlap(std::uint32_t k) const {
+  const ParticleStore& s = store_;
+  const std::uint32_t i = list_.owner[k], j = list_.partner[k];
+  return pairOverlap(s.x[i] - s.x[j], s.y[i] - s.y[j], s.radius[i], s.radius[j], std::min(s.radius[i], s.radius[j]),
+                     def_.boxWidth, def_.maxOverlapRatio);
+}
+
+PairOverlap World::intruderPairOverlap(std::uint32_t p) const {
+  const ParticleStore& s = store_;
+  const std::uint32_t g = intruderPairs_.grain[p], a = intruderPairs_.atom[p];
+  return pairOverlap(s.x[g] - (clumpState_.x + clump_.offsetX[a]), s.y[g] - (clumpState_.y + clump_.offsetY[a]),
+                     s.radius[g], clump_.atomRadius, s.radius[g], def_.boxWidth, def_.maxOverlapRatio);
+}
+
 void World::checkHealthInOrder() const {
   const ParticleStore& s = store_;
   const std::string at = "step " + std::to_string(step_) + " (t = " + formatNumber(time()) + "): ";
@@ -130,40 +150,27 @@ void World::checkHealthInOrder() const {
   for (std::uint32_t i = 0; i < s.grainCount; ++i) {
     if (!grainFails(s, i, maxSpeed * maxSpeed)) continue;
     const std::string grain = "grain " + std::to_string(s.tag[i]);
-    if (!(std::isfinite(s.x[i]) && std::isfinite(s.y[i]) && std::isfinite(s.vx[i]) && std::isfinite(s.vy[i]) &&
-          std::isfinite(s.omega[i])))
-      throw SimulationError(at + grain + " has a non-finite position or velocity" + cure);
+    if (!grainFinite(s, i)) throw SimulationError(at + grain + " has a non-finite position or velocity" + cure);
     if (s.y[i] < 0.0)
       throw SimulationError(at + grain + " fell through the base (y = " + formatNumber(s.y[i]) + ")" + cure);
-    throw SimulationError(at + grain + " moves at " + formatNumber(std::sqrt(s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i])) + " sqrt(g d), more than " +
+    throw SimulationError(at + grain + " moves at " + formatNumber(std::sqrt(speedSq(s, i))) + " sqrt(g d), more than " +
                           formatNumber(def_.maxSpeedFactor) + " times the fastest the fall or the drive can make it (" +
                           formatNumber(maxSpeed / def_.maxSpeedFactor) + "): energy grew without a source" + cure);
   }
-  // The bound is relative to the radius of the grain that reaches in (the smaller of two grains):
-  // at maxOverlapRatio = 1 its centre would be at the other grain's surface or the intruder's
-  // outline, where the pair's normal no longer separates them and a grain can pass through.
-  auto checkOverlap = [&](double dx, double dy, double ri, double rj, double boundRadius, std::uint32_t tag,
-                          const char* what) {
-    const double overlap = periodicOverlap(dx, dy, ri, rj, def_.boxWidth);
-    const double allowed = def_.maxOverlapRatio * boundRadius;
-    if (overlap > allowed)
-      throw SimulationError(at + "grain " + std::to_string(tag) + " overlaps " + what + " by " + formatNumber(overlap) +
-                            " d, more than " + formatNumber(def_.maxOverlapRatio) + " of the radius " + formatNumber(boundRadius) +
-                            ": it is passing through" + cure);
+  auto throwIfTooDeep = [&](const PairOverlap& o, std::uint32_t grain, const char* what) {
+    if (o.tooDeep())
+      throw SimulationError(at + "grain " + std::to_string(s.tag[grain]) + " overlaps " + what + " by " +
+                            formatNumber(o.overlap) + " d, more than " + formatNumber(def_.maxOverlapRatio) +
+                            " of the radius " + formatNumber(o.boundRadius) + ": it is passing through" + cure);
   };
-  for (std::uint32_t k = 0; k < list_.pairCount(); ++k) {
-    const std::uint32_t i = list_.owner[k], j = list_.partner[k];
-    checkOverlap(s.x[i] - s.x[j], s.y[i] - s.y[j], s.radius[i], s.radius[j], std::min(s.radius[i], s.radius[j]),
-                 s.tag[i], j < s.grainCount ? "another grain" : "a base particle");
-  }
+  for (std::uint32_t k = 0; k < list_.pairCount(); ++k)
+    throwIfTooDeep(grainPairOverlap(k), list_.owner[k],
+                   list_.partner[k] < s.grainCount ? "another grain" : "a base particle");
   if (!hasIntruder_) return;
   if (!std::isfinite(clumpState_.y) || !std::isfinite(clumpState_.vy))
     throw SimulationError(at + "the intruder's height or velocity is not finite" + cure);
-  for (std::uint32_t p = 0; p < intruderPairs_.size(); ++p) {
-    const std::uint32_t g = intruderPairs_.grain[p], a = intruderPairs_.atom[p];
-    checkOverlap(s.x[g] - (clumpState_.x + clump_.offsetX[a]), s.y[g] - (clumpState_.y + clump_.offsetY[a]),
-                 s.radius[g], clump_.atomRadius, s.radius[g], s.tag[g], "the intruder");
-  }
+  for (std::uint32_t p = 0; p < intruderPairs_.size(); ++p)
+    throwIfTooDeep(intruderPairOverlap(p), intruderPairs_.grain[p], "the intruder");
 }
 
 // ---------------------------------------------------------------- observations
