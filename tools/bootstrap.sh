@@ -45,13 +45,14 @@ case "$what" in
       set -- --resume
     fi
     exec "build/$preset/wiggle" run "$@" ;;
-  # Every test runs once and any failure fails the run: no test gets a second attempt. The SIGKILL
-  # harnesses (label reliability) run last, beside each other only: their kills wait for events
-  # (a checkpoint at a step, a file written), not for times, but they are the slowest to watch.
+  # Every test runs once and any failure fails the run: no test gets a second attempt. The tests
+  # run in a random order, so two that wrote one file or directory would meet in some run. The
+  # SIGKILL harnesses (label reliability) run last, beside each other only: their kills wait for
+  # events (a checkpoint at a step, a file written), not for times, but they are the slowest to watch.
   test)
     cd "build/$preset"
     status=0
-    ctest -LE "slow|mpi|reliability" --output-on-failure -j "$(nproc)" "$@" || status=1
+    ctest -LE "slow|mpi|reliability" --output-on-failure -j "$(nproc)" --schedule-random "$@" || status=1
     ctest -L reliability -LE "slow|mpi" --output-on-failure -j "$(nproc)" "$@" || status=1
     exit $status ;;
   build|"") ;;
