@@ -90,7 +90,7 @@ SweepStatus readSweepStatus(const std::string& dir) {
       finishedWall.push_back(c.wallSeconds);
     } else if (c.status == CaseStatus::Running) {
       // How far it is: its progress.json, which the run rewrites at each stage and every few seconds.
-      const RunProgress progress = readRunProgress(caseDir).value_or(RunProgress{"starting"});
+      const RunProgress progress = readRunProgress(caseDir).value_or(RunProgress{RunPhase::Starting, "starting"});
       c.fraction = progress.fraction;
       c.stage = progress.stage;
       c.warnings = readRunWarnings(caseDir);
@@ -154,11 +154,11 @@ std::optional<RunDirStatus> readRunDirStatus(const std::string& dir) {
   r.dir = dir;
   const std::optional<RunProgress> progress = readRunProgress(dir);
   r.hasProgress = progress.has_value();
-  r.progress = progress.value_or(RunProgress{"finished"});
+  r.progress = progress.value_or(RunProgress{RunPhase::Finished, "finished"});
   if (FileLock::holders(runLockPath(dir)) != FileLock::Holders::None) {
     r.state = RunDirState::Running;
-  } else if (caseFinished(dir) && r.progress.stage == "finished") {
-    // progress.json says "finished" only once summary.json is written; any other stage beside a
+  } else if (caseFinished(dir) && r.progress.phase == RunPhase::Finished) {
+    // progress.json says finished only once summary.json is written; any other phase beside a
     // summary.json is a later resume (an extension) that stopped.
     r.state = RunDirState::Done;
     const CaseResult summary = readCaseSummary(dir);
@@ -174,7 +174,6 @@ std::optional<RunDirStatus> readRunDirStatus(const std::string& dir) {
 
 std::string formatRunDirStatus(const RunDirStatus& r) {
   const RunProgress& p = r.progress;
-  const auto startsWith = [&p](const char* prefix) { return p.stage.rfind(prefix, 0) == 0; };
   const std::string ofDuration =
       " of " + formatNumber(p.duration) +
       (p.fraction >= 0 ? " (" + formatNumber(100.0 * p.fraction, 3) + " % of its steps)" : "");
@@ -187,12 +186,10 @@ std::string formatRunDirStatus(const RunDirStatus& r) {
   else if (r.state == RunDirState::Running)
     out << "running, " << (p.fraction >= 0 ? "t = " + formatNumber(p.t) + ofDuration : p.stage)
         << (p.etaSeconds >= 0 ? ", about " + formatDuration(p.etaSeconds) + " to go" : "");
-  else if (startsWith("failed"))
+  else if (p.phase == RunPhase::Failed)
     out << p.stage;
-  else if (startsWith("interrupted at"))
-    out << p.stage << ofDuration << resume;
-  else if (startsWith("interrupted"))
-    out << p.stage << resume;
+  else if (p.phase == RunPhase::Interrupted)
+    out << p.stage << (p.fraction >= 0 ? ofDuration : "") << resume;
   else  // its process ended without a word (SIGKILL, a crash, a power cut): the last stage it wrote
     out << "interrupted (its process ended without saying why: killed?) "
         << (p.fraction >= 0 ? "after t = " + formatNumber(p.t) + ofDuration : "while " + p.stage) << resume

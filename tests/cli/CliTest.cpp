@@ -520,6 +520,7 @@ TEST_F(Cli, StatusOfARunDirectorySaysWhereItStopped) {
   ASSERT_EQ(s.status, 130) << s.err;
   const std::string progress = slurp(out / "progress.json");
   EXPECT_NE(progress.find("\"stage\": \"interrupted at t = "), std::string::npos) << progress;
+  EXPECT_NE(progress.find("\"phase\": \"interrupted\""), std::string::npos) << progress;
   Result r = wiggle("status run");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.out.rfind("run run: interrupted at t = ", 0), 0u) << r.out;
@@ -528,7 +529,7 @@ TEST_F(Cli, StatusOfARunDirectorySaysWhereItStopped) {
 
   // Killed outright, a run cannot say so: its last stage stays, and no process holds its lock.
   std::ofstream(out / "progress.json")
-      << R"({"stage": "running", "fraction": 0.25, "t": 12.5, "duration": 50, "eta_s": 60})";
+      << R"({"phase": "running", "stage": "running", "fraction": 0.25, "t": 12.5, "duration": 50, "eta_s": 60})";
   r = wiggle("status run");
   EXPECT_NE(r.out.find("run run: interrupted (its process ended without saying why: killed?) after t = 12.5 of 50 "
                        "(25 % of its steps)"),
@@ -612,6 +613,7 @@ TEST_F(Cli, StatusSummarisesASweepDirectory) {
       << "b,cases/b,running,,,,3,,,,,,\n"
       << "c,cases/c,failed,,,,1,,,,,\"box.width = 5 is too narrow, really\",\n"
       << "d,cases/d,pending,,,,2,,,,,,\n";
+  // An earlier wiggle's progress.json, without "phase": read by its words.
   std::ofstream(dir / "cases" / "b" / "progress.json")
       << R"({"stage": "running", "fraction": 0.25, "t": 25, "duration": 100, "eta_s": 60})";
   std::ofstream(dir / "sweep.json") << R"({"name": "s", "jobs": 2, "threads": 1})";

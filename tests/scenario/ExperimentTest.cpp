@@ -74,6 +74,7 @@ TEST(Experiment, ResumedRunIsBitwiseIdenticalToAnUninterruptedOne) {
   ASSERT_NE(readFile(straight + "/log.txt").find("bed made"), std::string::npos);
   const std::optional<RunProgress> done = readRunProgress(straight);  // what `wiggle status` reads
   ASSERT_TRUE(done.has_value());
+  EXPECT_EQ(done->phase, RunPhase::Finished);
   EXPECT_EQ(done->stage, "finished");
   EXPECT_EQ(done->fraction, 1.0);
   EXPECT_DOUBLE_EQ(done->t, config.run.duration);

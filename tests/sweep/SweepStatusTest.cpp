@@ -46,7 +46,7 @@ class SweepStatusTest : public ::testing::Test {
     writeFileAtomically(dir_ / "cases/g/summary.json", toJson(ok).dump());
     ok.warnings = {"short window"};
     writeFileAtomically(dir_ / "cases/b/summary.json", toJson(ok).dump());
-    writeRunProgress(dir_ / "cases/d", RunProgress{"running", 0.25, 25.0, 100.0, 60.0});
+    writeRunProgress(dir_ / "cases/d", RunProgress{RunPhase::Running, "running", 0.25, 25.0, 100.0, 60.0});
     writeSweepStart(dir_.path().string(), SweepStart{"demo", 2, 1});
   }
   ScratchDir dir_{"sweep-status"};
@@ -91,7 +91,7 @@ TEST_F(SweepStatusTest, TimeToGoIsTheMedianFinishedWallTimesWhatIsLeftOverTheJob
 // ends, so a case runs when its run holds its own directory's lock, whatever the table says.
 TEST_F(SweepStatusTest, ArrayTasksCasesRunWhereTheirRunsHoldTheirDirectories) {
   writeSweepStart(dir_.path().string(), SweepStart{"demo", 0, 1});  // jobs unknown: tasks say none
-  writeRunProgress(dir_ / "cases/e", RunProgress{"running", 0.5, 50.0, 100.0, 60.0});
+  writeRunProgress(dir_ / "cases/e", RunProgress{RunPhase::Running, "running", 0.5, 50.0, 100.0, 60.0});
   const FileLock tasks(dir_ / ".sweep.lock", /*shared=*/true, false, "");
   const FileLock e(runLockPath(dir_ / "cases/e"), false, false, ""), f(runLockPath(dir_ / "cases/f"), false, false, "");
   const SweepStatus s = readSweepStatus(dir_.path().string());

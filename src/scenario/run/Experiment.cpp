@@ -145,22 +145,22 @@ std::optional<Checkpoint> newestGoodCheckpoint(const std::string& dir, const Run
 class ProgressFile {
  public:
   ProgressFile(std::string dir, double duration) : dir_(std::move(dir)), duration_(duration) {}
-  void stage(const std::string& what, double fraction = -1.0, double t = 0.0) {
-    writeRunProgress(dir_, {what, fraction, t, duration_, -1.0});
+  void stage(RunPhase phase, const std::string& words, double fraction = -1.0, double t = 0.0) {
+    writeRunProgress(dir_, {phase, words, fraction, t, duration_, -1.0});
     last_ = Clock::now();
   }
   // Why the run stopped, as it stops (SIGINT or SIGTERM, after its checkpoint; an error), so that
   // `wiggle status` does not show a run that is not running. Best effort: the error that stopped
   // the run (a full disk, say) is what the user must see, not a failure to write this file.
-  void stopped(const std::string& why, double fraction, double t) noexcept {
+  void stopped(RunPhase phase, const std::string& words, double fraction, double t) noexcept {
     try {
-      stage(why, fraction, t);
+      stage(phase, words, fraction, t);
     } catch (...) {
     }
   }
   void running(double fraction, double t, double etaSeconds) {
     if (secondsSince(last_) < 10.0) return;
-    writeRunProgress(dir_, {"running", fraction, t, duration_, etaSeconds});
+    writeRunProgress(dir_, {RunPhase::Running, "running", fraction, t, duration_, etaSeconds});
     last_ = Clock::now();
   }
 
@@ -456,7 +456,7 @@ RunOutcome runExperiment(const Case& run, const RunOptions& options) {
       loaded.emplace(std::move(checkpoint->world));
       state = std::move(checkpoint->state);
       fields = std::move(checkpoint->fields);
-      progressFile.stage("resumed from its checkpoint", fractionDone(*loaded), loaded->time());
+      progressFile.stage(RunPhase::Starting, "resumed from its checkpoint", fractionDone(*loaded), loaded->time());
     }
   }
 
@@ -468,17 +468,17 @@ RunOutcome runExperiment(const Case& run, const RunOptions& options) {
   std::optional<StopSignalGuard> stopOnSignal;
   stopOnSignal.emplace();
   if (!loaded) {
-    progressFile.stage("making or loading its bed");
+    progressFile.stage(RunPhase::Starting, "making or loading its bed");
     try {
       loaded.emplace(startFromBed(run, state, log, progress));
     } catch (const Interrupted&) {
-      progressFile.stopped(kInterruptedMakingBedStage, -1.0, 0.0);
+      progressFile.stopped(RunPhase::Interrupted, kInterruptedMakingBedStage, -1.0, 0.0);
       throw;
     } catch (const Error& e) {
-      progressFile.stopped(std::string("failed while making or loading its bed: ") + e.what(), -1.0, 0.0);
+      progressFile.stopped(RunPhase::Failed, failedMakingBedStage(e.what()), -1.0, 0.0);
       throw;
     }
-    progressFile.stage(state.bedFromCache ? "bed loaded from the cache, run started" : "bed made, run started");
+    progressFile.stage(RunPhase::Starting, state.bedFromCache ? "bed loaded from the cache, run started" : "bed made, run started");
     // A run without dumps leaves no dump file (not an empty one); one with dumps starts it afresh.
     std::error_code ec;
     if (run.steps.dumpEvery)
@@ -513,11 +513,11 @@ RunOutcome runExperiment(const Case& run, const RunOptions& options) {
     finished = stepToTheEnd(run, options, configToml, world, state, fields, observers, progress, progressFile, log);
   } catch (const Interrupted&) {
     progress.clear();
-    progressFile.stopped(interruptedStage(world.time()), fractionDone(world), world.time());
+    progressFile.stopped(RunPhase::Interrupted, interruptedStage(world.time()), fractionDone(world), world.time());
     throw;
   } catch (const Error& e) {
     progress.clear();
-    progressFile.stopped(failedStage(world.time(), e.what()), fractionDone(world), world.time());
+    progressFile.stopped(RunPhase::Failed, failedStage(world.time(), e.what()), fractionDone(world), world.time());
     throw;
   } catch (...) {
     progress.clear();
@@ -533,9 +533,9 @@ RunOutcome runExperiment(const Case& run, const RunOptions& options) {
   }
   writeCheckpoint(dir, configToml, world, state, fields);
   stopOnSignal.reset();
-  progressFile.stage("writing its results", 1.0, world.time());
+  progressFile.stage(RunPhase::Running, "writing its results", 1.0, world.time());
   RunOutcome outcome = writeRunOutputs(run, dir, world, state, fields, stepping, log);
-  progressFile.stage("finished", 1.0, world.time());
+  progressFile.stage(RunPhase::Finished, "finished", 1.0, world.time());
   return outcome;
 }
 

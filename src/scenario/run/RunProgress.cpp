@@ -1,5 +1,6 @@
 #include "scenario/run/RunProgress.h"
 
+#include <array>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
@@ -9,15 +10,45 @@
 
 namespace wiggle {
 
+namespace {
+
+constexpr std::array<RunPhase, 5> kPhases = {RunPhase::Starting, RunPhase::Running, RunPhase::Finished,
+                                             RunPhase::Interrupted, RunPhase::Failed};
+
+// A progress.json of an earlier wiggle, which wrote no "phase": the phase its words begin with; a
+// run that had stepped and wrote none of these words was running.
+RunPhase phaseOfStageWords(const std::string& stage, double fraction) {
+  const auto startsWith = [&stage](const char* prefix) { return stage.rfind(prefix, 0) == 0; };
+  if (stage == "finished") return RunPhase::Finished;
+  if (startsWith("interrupted")) return RunPhase::Interrupted;
+  if (startsWith("failed")) return RunPhase::Failed;
+  return stage == "running" || fraction >= 0.0 ? RunPhase::Running : RunPhase::Starting;
+}
+
+}  // namespace
+
+const char* runPhaseName(RunPhase phase) {
+  switch (phase) {
+    case RunPhase::Starting: return "starting";
+    case RunPhase::Running: return "running";
+    case RunPhase::Finished: return "finished";
+    case RunPhase::Interrupted: return "interrupted";
+    case RunPhase::Failed: return "failed";
+  }
+  return "unknown";
+}
+
 std::string interruptedStage(double t) { return "interrupted at t = " + formatNumber(t); }
 
 std::string failedStage(double t, const std::string& why) { return "failed at t = " + formatNumber(t) + ": " + why; }
 
+std::string failedMakingBedStage(const std::string& why) { return "failed while making or loading its bed: " + why; }
+
 std::string runProgressPath(const std::string& runDir) { return runDir + "/progress.json"; }
 
 void writeRunProgress(const std::string& runDir, const RunProgress& p) {
-  const nlohmann::json j = {
-      {"stage", p.stage}, {"fraction", p.fraction}, {"t", p.t}, {"duration", p.duration}, {"eta_s", p.etaSeconds}};
+  const nlohmann::json j = {{"phase", runPhaseName(p.phase)}, {"stage", p.stage}, {"fraction", p.fraction},
+                            {"t", p.t}, {"duration", p.duration}, {"eta_s", p.etaSeconds}};
   writeFileAtomically(runProgressPath(runDir), j.dump(2) + "\n");
 }
 
@@ -26,8 +57,23 @@ std::optional<RunProgress> readRunProgress(const std::string& runDir) {
   if (!std::filesystem::exists(path)) return std::nullopt;
   try {
     const nlohmann::json j = nlohmann::json::parse(readFile(path));
-    return RunProgress{j.at("stage").get<std::string>(), j.at("fraction").get<double>(), j.at("t").get<double>(),
-                       j.at("duration").get<double>(), j.at("eta_s").get<double>()};
+    RunProgress p;
+    p.stage = j.at("stage").get<std::string>();
+    p.fraction = j.at("fraction").get<double>();
+    p.t = j.at("t").get<double>();
+    p.duration = j.at("duration").get<double>();
+    p.etaSeconds = j.at("eta_s").get<double>();
+    if (!j.contains("phase")) {
+      p.phase = phaseOfStageWords(p.stage, p.fraction);
+      return p;
+    }
+    const std::string name = j.at("phase").get<std::string>();
+    for (RunPhase phase : kPhases)
+      if (name == runPhaseName(phase)) {
+        p.phase = phase;
+        return p;
+      }
+    return std::nullopt;  // a phase this wiggle does not know: a newer or damaged file
   } catch (const std::exception&) {  // a foreign or damaged file: no progress known
     return std::nullopt;
   }

@@ -9,23 +9,34 @@
 
 namespace wiggle {
 
+// Where a run is, as a reader acts on it; `RunProgress::stage` says the same in words for people.
+// A run killed outright (SIGKILL, a crash) cannot say that it stopped: its file keeps the last
+// phase it wrote, and `wiggle status` finds it stopped because no process holds its directory's lock.
+enum class RunPhase {
+  Starting,     // its bed made or loaded, or its checkpoint read: no step yet
+  Running,      // stepping
+  Finished,     // summary.json written
+  Interrupted,  // stopped by SIGINT or SIGTERM, after its checkpoint (or while its bed was made: the bed cache kept it)
+  Failed,       // stopped by an error (a blow-up, a full disk)
+};
+const char* runPhaseName(RunPhase phase);  // "starting", "running", ... (progress.json's "phase")
+
 struct RunProgress {
-  std::string stage;         // what it is doing, in words: "making or loading its bed", "running", ...
+  RunPhase phase = RunPhase::Starting;
+  std::string stage;         // the phase in words: "making or loading its bed", "interrupted at t = 12.5", ...
   double fraction = -1.0;    // of the run's steps done; -1 before the run's first step
   double t = 0.0;            // the run's time [sqrt(d/g)]
   double duration = 0.0;     // run.duration [sqrt(d/g)]
   double etaSeconds = -1.0;  // wall seconds left, estimated; -1 when not known yet
 };
 
-// The stage of a run stopped by SIGINT or SIGTERM, which checkpointed first ("interrupted at t =
-// 12.5"), and of one stopped while its bed was made (the bed cache kept the bed so far). A run
-// killed outright (SIGKILL, a crash) cannot say so: its file keeps the last stage it wrote, and
-// `wiggle status` finds it interrupted because no process holds its directory's lock.
+// The words of a stopped run's stage: "interrupted at t = 12.5" (SIGINT or SIGTERM, its checkpoint
+// written), "interrupted while making its bed"; "failed at t = 12.5: why", "failed while making or
+// loading its bed: why".
 std::string interruptedStage(double t);
 inline constexpr const char* kInterruptedMakingBedStage = "interrupted while making its bed";
-// The stage of a run stopped by an error (a blow-up, a full disk): "failed at t = 12.5: why" (one
-// stopped by an error while its bed was made or loaded: "failed while making or loading its bed: why").
 std::string failedStage(double t, const std::string& why);
+std::string failedMakingBedStage(const std::string& why);
 
 std::string runProgressPath(const std::string& runDir);
 void writeRunProgress(const std::string& runDir, const RunProgress& progress);
