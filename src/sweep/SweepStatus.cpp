@@ -11,11 +11,14 @@
 #include "core/Format.h"
 #include "core/Median.h"
 #include "io/AtomicFile.h"
+#include "io/Config.h"
 #include "io/FileLock.h"
+#include "scenario/bed/BedMaker.h"
 #include "scenario/run/Experiment.h"
 #include "scenario/run/RunProgress.h"
 #include "sweep/ResultsTable.h"
 #include "sweep/SweepStart.h"
+#include "sweep/TaskRunner.h"
 
 namespace wiggle {
 
@@ -29,6 +32,45 @@ double number(const std::string& cell) {
   } catch (const std::exception&) {
     return 0.0;
   }
+}
+
+// The beds under `dir`/beds that are not made yet: being made now (a process holds the cache's
+// bed-KEY.lock) or stopped. A bed is made when its log holds the maker's last line
+// (bedTaskDoneLine), or the cache holds it. The cache is the one this process's config and
+// environment name ($WIGGLE_CACHE), as for the sweep that shares them. A bed whose config cannot be
+// read (another wiggle's) is left out: where its cache is cannot be known.
+std::vector<BedAtAGlance> unfinishedBeds(const std::string& dir) {
+  std::vector<BedAtAGlance> beds;
+  std::error_code ec;
+  for (const fs::directory_entry& e : fs::directory_iterator(dir + "/beds", ec)) {
+    const std::string file = e.path().filename().string();
+    if (e.path().extension() != ".toml" || file.rfind("bed-", 0) != 0) continue;
+    BedAtAGlance bed;
+    bed.key = file.substr(4, file.size() - 4 - 5);
+    RunConfig config;
+    try {
+      config = parseRunConfig(readFile(e.path().string()), e.path().string());
+    } catch (const Error&) {
+      continue;
+    }
+    bool made = fs::exists(bedCachePath(config, bed.key));
+    const std::string log = dir + "/beds/bed-" + bed.key + ".log";
+    if (fs::exists(log)) {
+      std::istringstream lines(readFile(log));
+      for (std::string line; std::getline(lines, line);) {
+        if (line.rfind("[bed]", 0) == 0) bed.report = line;
+        made = made || isBedTaskDoneLine(line, bed.key);
+      }
+    }
+    if (made) continue;
+    if (FileLock::holders(bedCacheDir(config) + "/bed-" + bed.key + ".lock") != FileLock::Holders::None)
+      bed.state = BedAtAGlance::State::Making;
+    else if (fs::exists(bedPartialPath(config, bed.key)))
+      bed.state = BedAtAGlance::State::PartMade;
+    beds.push_back(std::move(bed));
+  }
+  std::sort(beds.begin(), beds.end(), [](const BedAtAGlance& a, const BedAtAGlance& b) { return a.key < b.key; });
+  return beds;
 }
 
 }  // namespace
@@ -102,6 +144,7 @@ SweepStatus readSweepStatus(const std::string& dir) {
     }
     s.cases.push_back(std::move(c));
   }
+  s.beds = unfinishedBeds(dir);
   s.casesAtOnce = std::max({1, s.jobs, running});  // array tasks: as many as run now
   if (!finishedWall.empty()) s.etaSeconds = median(finishedWall) * casesLeft / s.casesAtOnce;
   return s;
@@ -134,6 +177,13 @@ std::string formatSweepStatus(const SweepStatus& s) {
       out << "  pending  " << c.name << ": " << c.error << "\n";
     for (const std::string& w : c.warnings) out << "  warning  " << c.name << ": " << w << "\n";
   }
+  for (const BedAtAGlance& b : s.beds)
+    out << "  bed      " << b.key
+        << (b.state == BedAtAGlance::State::Making     ? ": being made"
+            : b.state == BedAtAGlance::State::PartMade ? ": part-made, not being made (the same `wiggle sweep` command "
+                                                         "continues it)"
+                                                       : ": not being made, nothing of it saved")
+        << (b.report.empty() ? "" : ": " + b.report) << "\n";
   if (running + pending == 0 && failed > 0)
     out << "nothing left to run but the " << failed << " failed case" << (failed > 1 ? "s" : "")
         << ": the same `wiggle sweep` command retries " << (failed > 1 ? "them" : "it") << "\n";

@@ -30,10 +30,24 @@ struct CaseAtAGlance {
   bool interrupted = false;
 };
 
+// A bed the sweep began to make (its beds/bed-KEY.toml) and the cache does not hold yet: a deep or
+// wide bed takes hours, in which no case runs.
+struct BedAtAGlance {
+  enum class State {
+    Making,    // a process holds the bed's lock in the cache: it is being made now
+    PartMade,  // nobody makes it, and its partial file is in the cache: the same sweep command continues it
+    NotMade,   // nobody makes it and nothing of it is saved (a bed that failed: its log says why)
+  };
+  std::string key;
+  State state = State::NotMade;
+  std::string report;  // the bed maker's last report in beds/bed-KEY.log ("[bed] pouring batch 3, ..."), if any
+};
+
 struct SweepStatus {
   std::string dir;
   std::string name;  // the sweep's name, from sweep.json (empty when unknown)
   std::vector<CaseAtAGlance> cases;
+  std::vector<BedAtAGlance> beds;  // in the order of their keys
   // Who holds the directory's lock now: a whole sweep (exclusive), one-case tasks (`--case`, shared)
   // or nobody.
   FileLock::Holders sweepLock = FileLock::Holders::None;

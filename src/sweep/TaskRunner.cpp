@@ -244,8 +244,16 @@ void makeSweepBed(const std::string& configPath, int threads) {
   ProgressLine progress(false, [](const std::string& text) { std::printf("%s\n", text.c_str()); std::fflush(stdout); }, 60.0);
   const CachedBed bed = obtainBed(config, clump, [&](const BedStatus& s) { progress.update(bedStatusLine(s, config.box.bedHeight)); });
   if (!bed.note.empty()) std::fprintf(stderr, "wiggle: warning: %s\n", bed.note.c_str());
-  std::printf("bed %s %s (%u grains)\n", bed.key.c_str(), bed.fromCache ? "was cached" : "made and cached",
-              static_cast<unsigned>(bed.world.grainCount()));
+  std::printf("%s\n", bedTaskDoneLine(bed.key, bed.fromCache, bed.world.grainCount()).c_str());
+}
+
+std::string bedTaskDoneLine(const std::string& key, bool fromCache, std::uint32_t grains) {
+  return "bed " + key + (fromCache ? " was cached (" : " made and cached (") + std::to_string(grains) + " grains)";
+}
+
+bool isBedTaskDoneLine(const std::string& line, const std::string& key) {
+  const std::string start = "bed " + key + " ";
+  return line.rfind(start + "was cached (", 0) == 0 || line.rfind(start + "made and cached (", 0) == 0;
 }
 
 void runSweepCase(const std::string& configPath, const std::string& runDir, int threads) {

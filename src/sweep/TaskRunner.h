@@ -91,8 +91,13 @@ std::string failureLine(const std::string& logTail);
 double monotonicSeconds();
 
 // The bed task of a sweep (`wiggle sweep --make-bed CONFIG.toml`): obtains (makes and caches) the
-// bed of that run config with `threads` OpenMP threads (0 = default).
+// bed of that run config with `threads` OpenMP threads (0 = default), and ends its log
+// (beds/bed-KEY.log) with the line bedTaskDoneLine makes.
 void makeSweepBed(const std::string& configPath, int threads);
+// "bed KEY made and cached (N grains)", or "bed KEY was cached (N grains)"; and whether `line` is
+// such a line of the bed `key` (`wiggle status` reads it).
+std::string bedTaskDoneLine(const std::string& key, bool fromCache, std::uint32_t grains);
+bool isBedTaskDoneLine(const std::string& line, const std::string& key);
 
 // The case task of a sweep (`wiggle sweep --run-case CONFIG.toml --out DIR`): runs that config in
 // DIR, continuing from DIR's checkpoint when there is one (a run stopped, killed or extended),

@@ -8,13 +8,16 @@
 #include <nlohmann/json.hpp>
 
 #include "io/AtomicFile.h"
+#include "io/Config.h"
 #include "io/FileLock.h"
+#include "scenario/bed/BedMaker.h"
 #include "scenario/run/Experiment.h"
 #include "scenario/run/RunProgress.h"
 #include "scenario/run/RunSummary.h"
 #include "support/TestSupport.h"
 #include "sweep/SweepStart.h"
 #include "sweep/SweepStatus.h"
+#include "sweep/TaskRunner.h"
 
 namespace wiggle {
 namespace {
@@ -125,6 +128,39 @@ TEST_F(SweepStatusTest, UnderAWholeSweepItsRunningCasesRun) {
   const std::string text = formatSweepStatus(s);
   EXPECT_NE(text.find("a wiggle sweep is running in it"), std::string::npos) << text;
   EXPECT_EQ(text.find("[stale"), std::string::npos) << text;
+}
+
+// A bed takes hours in which no case runs: the status names each bed not made yet, whether a
+// process makes it now (its lock in the cache), and the maker's last report from its log.
+TEST_F(SweepStatusTest, BedsNotMadeYetAreNamedWithTheirLastReport) {
+  RunConfig config;
+  config.bed.cacheDir = dir_ / "cache";
+  fs::create_directories(config.bed.cacheDir);
+  fs::create_directories(dir_ / "beds");
+  for (const char* key : {"k1", "k2", "k3", "k4", "k5"})
+    writeFileAtomically(dir_ / (std::string("beds/bed-") + key + ".toml"), toToml(config));
+  writeFileAtomically(dir_ / "beds/bed-k1.log", "[bed] pouring batch 2, 40 grains\n[bed] relaxing batch 3, 60 grains\n");
+  writeFileAtomically(dir_ / "beds/bed-k2.log", "[bed] pouring batch 1, 20 grains\nwiggle: interrupted by signal 15\n");
+  writeFileAtomically(bedPartialPath(config, "k2"), "part");
+  writeFileAtomically(dir_ / "beds/bed-k3.log", "[bed] relaxing batch 3, 60 grains\n" + bedTaskDoneLine("k3", false, 60) + "\n");
+  writeFileAtomically(bedCachePath(config, "k4"), "bed");
+  const FileLock making(bedCacheDir(config) + "/bed-k1.lock", false, false, "");
+  const SweepStatus s = readSweepStatus(dir_.path().string());
+  ASSERT_EQ(s.beds.size(), 3u);  // k3's log says it was made, k4 is in the cache
+  EXPECT_EQ(s.beds[0].key, "k1");
+  EXPECT_EQ(s.beds[0].state, BedAtAGlance::State::Making);
+  EXPECT_EQ(s.beds[0].report, "[bed] relaxing batch 3, 60 grains");
+  EXPECT_EQ(s.beds[1].state, BedAtAGlance::State::PartMade);
+  EXPECT_EQ(s.beds[2].key, "k5");
+  EXPECT_EQ(s.beds[2].state, BedAtAGlance::State::NotMade);
+  EXPECT_EQ(s.beds[2].report, "");
+  const std::string text = formatSweepStatus(s);
+  EXPECT_NE(text.find("  bed      k1: being made: [bed] relaxing batch 3, 60 grains\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("  bed      k2: part-made, not being made (the same `wiggle sweep` command continues it): [bed] "
+                      "pouring batch 1, 20 grains\n"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("  bed      k5: not being made, nothing of it saved\n"), std::string::npos) << text;
 }
 
 TEST_F(SweepStatusTest, WithNothingFinishedTheTimeToGoIsUnknown) {
