@@ -63,7 +63,7 @@ std::vector<BedAtAGlance> unfinishedBeds(const std::string& dir) {
       }
     }
     if (made) continue;
-    if (FileLock::holders(bedCacheDir(config) + "/bed-" + bed.key + ".lock") != FileLock::Holders::None)
+    if (FileLock::holders(bedLockPath(config, bed.key)) != FileLock::Holders::None)
       bed.state = BedAtAGlance::State::Making;
     else if (fs::exists(bedPartialPath(config, bed.key)))
       bed.state = BedAtAGlance::State::PartMade;

@@ -144,7 +144,7 @@ TEST_F(SweepStatusTest, BedsNotMadeYetAreNamedWithTheirLastReport) {
   writeFileAtomically(bedPartialPath(config, "k2"), "part");
   writeFileAtomically(dir_ / "beds/bed-k3.log", "[bed] relaxing batch 3, 60 grains\n" + bedTaskDoneLine("k3", false, 60) + "\n");
   writeFileAtomically(bedCachePath(config, "k4"), "bed");
-  const FileLock making(bedCacheDir(config) + "/bed-k1.lock", false, false, "");
+  const FileLock making(bedLockPath(config, "k1"), false, false, "");
   const SweepStatus s = readSweepStatus(dir_.path().string());
   ASSERT_EQ(s.beds.size(), 3u);  // k3's log says it was made, k4 is in the cache
   EXPECT_EQ(s.beds[0].key, "k1");

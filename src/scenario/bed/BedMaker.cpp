@@ -463,6 +463,10 @@ std::string bedPartialPath(const RunConfig& config, const std::string& key) {
   return bedCacheDir(config) + "/bed-" + key + ".partial.bin";
 }
 
+std::string bedLockPath(const RunConfig& config, const std::string& key) {
+  return bedCacheDir(config) + "/bed-" + key + ".lock";
+}
+
 namespace {
 
 // What happened to the cache on the way to a bed, for CachedBed::note.
@@ -518,7 +522,7 @@ bool makeCacheDir(const RunConfig& config, CacheNotes& notes) {
 std::optional<FileLock> lockBedMaking(const RunConfig& config, const std::string& key, bool cacheWritable) {
   if (!cacheWritable) return std::nullopt;
   try {
-    return std::optional<FileLock>(std::in_place, bedCacheDir(config) + "/bed-" + key + ".lock", false, true,
+    return std::optional<FileLock>(std::in_place, bedLockPath(config, key), false, true,
                                    "bed " + key + " is being made");
   } catch (const Error&) {
     return std::nullopt;

@@ -88,6 +88,10 @@ std::string bedCachePath(const RunConfig& config, const std::string& key);
 // seconds of wall time and on SIGINT/SIGTERM; removed once the bed is cached).
 std::string bedPartialPath(const RunConfig& config, const std::string& key);
 
+// The lock file a process holds while it makes the bed with this key (another that wants the bed
+// waits on it, then loads the bed from the cache).
+std::string bedLockPath(const RunConfig& config, const std::string& key);
+
 // The bed in a cache file's bytes (`name` starts every error message); throws wiggle::Error when
 // the file is truncated, corrupt, foreign or holds the bed of another key.
 World parseCachedBed(const std::string& file, const std::string& name, const std::string& key);
