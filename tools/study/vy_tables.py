@@ -961,8 +961,7 @@ def answer_differences(spec):
         f"it rises at T = 3, {cell(CLOCK_A5, intruder__shape='square', drive__period=3.0)}, and not by one bed's accident "
         "(its two beds give " + ", ".join(f"{v:+.3f}" for v in Cell(CLOCK_A5, intruder__shape="square", drive__period=3.0).values())
         + "). Cause not known. Tried without a change of sign (t = 100, one bed): the paper's glued intruder (T = 3: "
-        f"{cell(glued, intruder__shape='square', drive__period=3.0)}). Not yet measured: the 60 d box against the paper's "
-        "300 d and the random pour at t = 1000 (issue 51, below).",
+        f"{cell(glued, intruder__shape='square', drive__period=3.0)}). " + protocol_so_far("square", 3.0),
         f"- **The triangle does not rise** (the paper: from T = {paper_observed('triangle')}): by the paper's clock it sinks at every period run, "
         + ", ".join(f"{beds_text(vs)} at T = {t:g}" for t, vs in tri_cells)
         + ". This is findings 1 and 7 not reproduced. Cause not known. Tried without a change of sign (t = 100, one bed "
@@ -970,8 +969,8 @@ def answer_differences(spec):
         f"the paper's glued intruder ({cell(tri, intruder__shape='triangle', intruder__surface='glued', drive__period=4.0)}; "
         f"{cell(tri, intruder__shape='triangle', intruder__surface='glued', drive__period=6.0)}) and a random pour "
         f"({cell(tri, intruder__shape='triangle', bed__pour='random', drive__period=4.0)}; "
-        f"{cell(tri, intruder__shape='triangle', bed__pour='random', drive__period=6.0)}): all sink. Not yet measured: "
-        "the paper's box and protocol together (issue 51).",
+        f"{cell(tri, intruder__shape='triangle', bed__pour='random', drive__period=6.0)}): all sink. "
+        + protocol_so_far("triangle", 5.0),
         "- **The small preset crosses late** (findings 2 and 7 there): its bed is 25 d deep, the paper's 105 d. At A = 5 "
         f"its disk still sinks at T = 3.5, {cell(small, intruder__shape='disk', drive__amplitude=5.0, drive__period=3.5, **SMALL_TODAY_WHERE)}, "
         f"where at the paper's depth it rises at T = 3, {cell(DEPTH_A5, intruder__shape='disk', drive__period=3.0)}; "
@@ -1018,16 +1017,19 @@ def readme_answer(spec):
 PROTOCOL_FOLDERS = ["results/paper_depth/mass_t1000", "results/paper_depth/factors_t1000", "results/paper_box/t1000"]
 PRESET_PROTOCOL = {"intruder.surface": "smooth", "bed.pour": "lattice", "intruder.mass_rule": "disk_area"}
 PAPER_PROTOCOL = {"intruder.surface": "glued", "bed.pour": "random", "intruder.mass_rule": "glued_disk"}
-# (what changes from the preset; its cases: folders and the keys that differ; paired: run on the
-# baseline's own beds, so compared with the baseline's runs of the same seeds only)
+# (what changes from the preset, in the table and in a sentence; its cases: folders and the keys that
+# differ; paired: run on the baseline's own beds, so compared with the baseline's runs of the same seeds only)
 PROTOCOL_ROWS = [
-    ("none: the preset (baseline)", T1000_BEDS, {}, False),
-    ("the glued disk's mass, 9.88 (on the baseline's own bed)", ["results/paper_depth/mass_t1000"],
-     {"intruder.mass_rule": "glued_disk"}, True),
-    ("the glued 0.5 d surface (new pour)", ["results/paper_depth/factors_t1000"], {"intruder.surface": "glued"}, False),
-    ("the random pour (new pour)", ["results/paper_depth/factors_t1000"], {"bed.pour": "random"}, False),
-    ("all three: the paper's protocol in the 60 d box", ["results/paper_depth/factors_t1000"], PAPER_PROTOCOL, False),
-    ("the paper's protocol in its own 300 d box", ["results/paper_box/t1000"], PAPER_PROTOCOL, False),
+    ("none: the preset (baseline)", "the preset", T1000_BEDS, {}, False),
+    ("the glued disk's mass, 9.88 (on the baseline's own bed)", "the glued disk's mass (9.88 against 25.66, same bed)",
+     ["results/paper_depth/mass_t1000"], {"intruder.mass_rule": "glued_disk"}, True),
+    ("the glued 0.5 d surface (new pour)", "the glued 0.5 d surface", ["results/paper_depth/factors_t1000"],
+     {"intruder.surface": "glued"}, False),
+    ("the random pour (new pour)", "the random pour", ["results/paper_depth/factors_t1000"], {"bed.pour": "random"}, False),
+    ("all three: the paper's protocol in the 60 d box", "the paper's protocol in the 60 d box",
+     ["results/paper_depth/factors_t1000"], PAPER_PROTOCOL, False),
+    ("the paper's protocol in its own 300 d box", "the paper's protocol in its own 300 d box", ["results/paper_box/t1000"],
+     PAPER_PROTOCOL, False),
 ]
 PROTOCOL_CELLS = [("square", 3.0, -1), ("triangle", 5.0, +1)]   # shape, T, the paper's sign of V_y there
 
@@ -1038,29 +1040,39 @@ def protocol_beds(folders, where):
     return {c.get("box.seed"): float(c.get("vy")) for c in beds(select(present, where), f"{present} {where}")}
 
 
+def protocol_change(folders, keys, paired, shape, period, paper_sign, sig):
+    """One protocol row's cell: (its V_y values, or [] when none is committed; the change from the
+    baseline, its size in standard errors and which way it moves the cell), the change None for the
+    baseline's own row."""
+    case = {"intruder.shape": shape, "drive.amplitude": 5.0, "drive.period": period}
+    row = protocol_beds(folders, dict(PRESET_PROTOCOL, **keys, **case))
+    values = list(row.values())
+    if not values or not keys:
+        return values, None
+    baseline = protocol_beds(T1000_BEDS, dict(PRESET_PROTOCOL, **case))
+    base = [v for seed, v in baseline.items() if seed in row] if paired else list(baseline.values())
+    diff, z, _ = findings.judged(findings.Comparison(shape, values, base, paper_sign), sig)
+    toward = "toward the paper" if z >= RESOLVED else "away from the paper" if z <= -RESOLVED else "within the scatter"
+    return values, (diff, abs(z), toward)
+
+
 def answer_protocol(spec):
     """The factor table: each row's V_y per cell, its change from the baseline in standard errors of
     the paper's clock (one bed's sigma there), and whether it moves the cell toward the paper's sign."""
     sig = sigma(cells_with_beds(CLOCK_A5))
     head = "| what changes | " + " | ".join(f"{s}, A = 5, T = {t:g}: V_y; change (se)" for s, t, _ in PROTOCOL_CELLS) + " |"
     lines = [head, "|---|" + "---|" * len(PROTOCOL_CELLS)]
-    for label, folders, keys, paired in PROTOCOL_ROWS:
+    for label, _, folders, keys, paired in PROTOCOL_ROWS:
         cells = []
         for shape, period, paper_sign in PROTOCOL_CELLS:
-            case = {"intruder.shape": shape, "drive.amplitude": 5.0, "drive.period": period}
-            row = protocol_beds(folders, dict(PRESET_PROTOCOL, **keys, **case))
-            baseline = protocol_beds(T1000_BEDS, dict(PRESET_PROTOCOL, **case))
-            values = list(row.values())
-            base = [v for seed, v in baseline.items() if seed in row] if paired else list(baseline.values())
+            values, change = protocol_change(folders, keys, paired, shape, period, paper_sign, sig)
             if not values:
                 cells.append("not run yet")
-            elif not keys:
+            elif change is None:
                 cells.append(cell_text(values))
             else:
-                diff, z, _ = findings.judged(findings.Comparison(label, values, base, paper_sign), sig)
-                toward = ("toward the paper" if z >= RESOLVED else "away from the paper" if z <= -RESOLVED
-                          else "within the scatter")
-                cells.append(f"{cell_text(values)}; {diff:+.3f} ({abs(z):.1f} se, {toward})")
+                diff, z, toward = change
+                cells.append(f"{cell_text(values)}; {diff:+.4f} ({z:.1f} se, {toward})")
         lines.append(f"| {label} | " + " | ".join(cells) + " |")
     lines += ["", f"(V_y over t = 100-1000 of runs to t = 1000, A = 5 d. The paper has the square sinking at T = 3 "
               f"and the triangle rising at T = 5 (Table 1). A change is the row's mean minus the baseline's, in "
@@ -1070,7 +1082,27 @@ def answer_protocol(spec):
     return lines, [f for f in PROTOCOL_FOLDERS + T1000_BEDS if os.path.exists(os.path.join(ROOT, f, "results.csv"))]
 
 
-ANSWER_SOURCES = FINDING_SOURCES + ["results/paper_depth/glued", "results/paper_depth/triangle"]
+def protocol_so_far(shape, period):
+    """What the one-factor screen of the protocol block has measured of one cell so far, in a sentence."""
+    sig = sigma(cells_with_beds(CLOCK_A5))
+    paper_sign = next(sign for s, t, sign in PROTOCOL_CELLS if (s, t) == (shape, period))
+    done, left = [], []
+    for _, short, folders, keys, paired in PROTOCOL_ROWS[1:]:
+        values, change = protocol_change(folders, keys, paired, shape, period, paper_sign, sig)
+        if values:
+            diff, z, toward = change
+            done.append(f"{short}: {cell_text(values)}, a change of {diff:+.4f} ({z:.1f} se, {toward})")
+        else:
+            left.append(short)
+    sentences = []
+    if done:
+        sentences.append("By the paper's clock, one factor at a time (the protocol block below): " + "; ".join(done) + ".")
+    if left:
+        sentences.append("Not yet measured at t = 1000: " + ", ".join(left) + " (issue 51).")
+    return " ".join(sentences)
+
+
+ANSWER_SOURCES = FINDING_SOURCES + ["results/paper_depth/glued", "results/paper_depth/triangle"] + PROTOCOL_FOLDERS
 TABLES += [
     {"name": "answer_table1", "kind": answer_table1, "sources": CLOCK_A5 + DEPTH_A5},
     {"name": "answer_findings", "kind": answer_findings, "sources": FINDING_SOURCES},
