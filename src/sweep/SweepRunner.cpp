@@ -16,6 +16,7 @@
 #include "sweep/Coordinator.h"
 #include "sweep/MpiQueue.h"
 #include "sweep/SweepPlan.h"
+#include "sweep/SweepStart.h"
 
 namespace wiggle {
 
@@ -93,7 +94,7 @@ SweepOutcome runSweep(const std::string& sweepFile, const SweepOptions& options)
   }
   std::optional<FileLock> lock;
   if (!options.dryRun) {
-    lock.emplace(outDir + "/.sweep.lock", only.has_value(), false, "another wiggle sweep is running in " + outDir);
+    lock.emplace(sweepLockPath(outDir), only.has_value(), false, "another wiggle sweep is running in " + outDir);
     // Only this coordinator writes here (the lock says so): files a killed one was writing go.
     if (!only) {
       removeLeftoverTemporaries(outDir);

@@ -9,6 +9,8 @@ namespace wiggle {
 
 std::string sweepStartPath(const std::string& sweepDir) { return sweepDir + "/sweep.json"; }
 
+std::string sweepLockPath(const std::string& sweepDir) { return sweepDir + "/.sweep.lock"; }
+
 void writeSweepStart(const std::string& sweepDir, const SweepStart& start) {
   const std::string path = sweepStartPath(sweepDir);
   if (start.jobs == 0 && std::filesystem::exists(path)) return;

@@ -15,6 +15,9 @@ struct SweepStart {
 };
 
 std::string sweepStartPath(const std::string& sweepDir);
+// The sweep directory's lock: a whole sweep holds it alone, one-case tasks (`--case N`) together;
+// `wiggle status` reads who holds it.
+std::string sweepLockPath(const std::string& sweepDir);
 // A whole sweep's start replaces the file; an array task's (`--case N`, jobs 0) writes it only when
 // there is none, so that a sweep's own figures are not overwritten by its array tasks.
 void writeSweepStart(const std::string& sweepDir, const SweepStart& start);

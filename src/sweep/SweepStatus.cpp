@@ -93,7 +93,7 @@ SweepStatus readSweepStatus(const std::string& dir) {
   const auto warningsIt = std::find(header.begin(), header.end(), "warnings");
   SweepStatus s;
   s.dir = dir;
-  s.sweepLock = FileLock::holders(dir + "/.sweep.lock");
+  s.sweepLock = FileLock::holders(sweepLockPath(dir));
   if (const std::optional<SweepStart> start = readSweepStart(dir)) {
     s.jobs = start->jobs;
     s.name = start->name;

@@ -95,7 +95,7 @@ TEST_F(SweepStatusTest, TimeToGoIsTheMedianFinishedWallTimesWhatIsLeftOverTheJob
 TEST_F(SweepStatusTest, ArrayTasksCasesRunWhereTheirRunsHoldTheirDirectories) {
   writeSweepStart(dir_.path().string(), SweepStart{"demo", 0, 1});  // jobs unknown: tasks say none
   writeRunProgress(dir_ / "cases/e", RunProgress{RunPhase::Running, "running", 0.5, 50.0, 100.0, 60.0});
-  const FileLock tasks(dir_ / ".sweep.lock", /*shared=*/true, false, "");
+  const FileLock tasks(sweepLockPath(dir_.path().string()), /*shared=*/true, false, "");
   const FileLock e(runLockPath(dir_ / "cases/e"), false, false, ""), f(runLockPath(dir_ / "cases/f"), false, false, "");
   const SweepStatus s = readSweepStatus(dir_.path().string());
   EXPECT_EQ(s.sweepLock, FileLock::Holders::Shared);
@@ -121,7 +121,7 @@ TEST_F(SweepStatusTest, ArrayTasksCasesRunWhereTheirRunsHoldTheirDirectories) {
 }
 
 TEST_F(SweepStatusTest, UnderAWholeSweepItsRunningCasesRun) {
-  const FileLock whole(dir_ / ".sweep.lock", /*shared=*/false, false, "");
+  const FileLock whole(sweepLockPath(dir_.path().string()), /*shared=*/false, false, "");
   const SweepStatus s = readSweepStatus(dir_.path().string());
   EXPECT_EQ(s.sweepLock, FileLock::Holders::Exclusive);
   EXPECT_FALSE(s.cases[3].interrupted);  // d: the sweep says running and holds the directory
