@@ -328,6 +328,21 @@ def listing(spec):
     return lines, spec["sources"]
 
 
+def windows(spec):
+    """One row per cell (spec["row"]), one column per window of the run (spec["windows"]: (t0, t1)):
+    each cell the chord V_y over that window, on every bed of the row."""
+    grid = {}
+    for c in select(spec["sources"], spec.get("where", {})):
+        grid.setdefault(key_of(c, spec["row"]), []).append(c)
+    head = spec["row_head"] + [f"t = {t0:g}-{t1:g}" for t0, t1 in spec["windows"]]
+    lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
+    for r in sorted(grid, key=spec["row_sort"]):
+        cases = beds(grid[r], f"{spec['name']}: {r}")
+        lines.append("| " + " | ".join(list(spec["row_label"](r))
+                                       + [cell_text([chord(t0, t1)(c) for c in cases]) for t0, t1 in spec["windows"]]) + " |")
+    return lines, spec["sources"]
+
+
 def means(values):
     return {k: mean(v) for k, v in values.items()}
 
@@ -534,6 +549,11 @@ TABLES = [
      "rows": [(s, t) for s in SHAPES[:4] for t in (2.5, 3.0)], "cols": [1.0, 2.0],
      "all": True, "row_head": ["shape", "T"], "row_label": lambda r: (r[0], f"{r[1]:g}"),
      "col_label": lambda s: f"bed {s:g}, t = 100-1000"},
+    # The same runs' V_y over the paper's window in thirds, to show whether a rate holds through the window
+    {"name": "depth_t1000_windows", "kind": windows, "sources": T1000_BEDS, "where": {"drive.amplitude": 5.0},
+     "row": lambda c: (c.get("intruder.shape"), c.get("drive.period")),
+     "row_sort": lambda r: (SHAPES.index(r[0]), r[1]), "row_head": ["shape", "T"],
+     "row_label": lambda r: (r[0], f"{r[1]:g}"), "windows": [(100, 400), (400, 700), (700, 1000), (100, 1000)]},
     # Figure 6 at the paper's depth (paper_depth_friction.toml): the disk and the square at A = 3, each bed
     # poured at mu = 0.1 and run at four mu; the rates, then their changes bed by bed (paired)
     {"name": "depth_friction", "kind": pivot, "sources": DEPTH_FRICTION,
