@@ -466,34 +466,48 @@ TEST(BedMaker, TheT1000StudiesAreTheT100StudiesRunLonger) {
   // they are at hand: a case of the shorter sweep's name must be that case but for run.duration.
   // A case the shorter sweep does not have (a period added where the paper's clock moved a
   // crossing) must be a case of it with the same intruder but for run.duration and drive.period.
+  // A shape the shorter sweep lacks altogether (a second bed added for the factor screen, issue 51)
+  // must be the first bed's long run of that name (less "_s2") but for box.seed.
   const std::string root = std::string(WIGGLE_SOURCE_DIR) + "/configs/sweeps/";
-  for (const auto& [shorter, longer, count, extended] :
-       {std::tuple{"paper_depth_table1.toml", "paper_depth_t1000.toml", 15u, 0u},
-        std::tuple{"paper_depth_table1_bed2.toml", "paper_depth_t1000_bed2.toml", 8u, 1u},
-        std::tuple{"paper_depth_fig5.toml", "paper_depth_fig2_t1000.toml", 10u, 0u}}) {
+  const SweepSpec firstBed = loadSweepSpec(root + "paper_depth_t1000.toml");
+  const auto named = [](const SweepSpec& spec, const std::string& name) {
+    return std::find_if(spec.cases.begin(), spec.cases.end(), [&](const SweepCase& t) { return t.name == name; });
+  };
+  for (const auto& [shorter, longer, count, extended, secondBeds] :
+       {std::tuple{"paper_depth_table1.toml", "paper_depth_t1000.toml", 15u, 0u, 0u},
+        std::tuple{"paper_depth_table1_bed2.toml", "paper_depth_t1000_bed2.toml", 9u, 1u, 1u},
+        std::tuple{"paper_depth_fig5.toml", "paper_depth_fig2_t1000.toml", 10u, 0u, 0u}}) {
     const SweepSpec base = loadSweepSpec(root + shorter);
     const SweepSpec longRuns = loadSweepSpec(root + longer);
     EXPECT_EQ(longRuns.cases.size(), count) << longer;
     std::uint32_t newPeriods = 0;
+    std::uint32_t fromFirstBed = 0;
     for (const SweepCase& c : longRuns.cases) {
       EXPECT_EQ(c.config.run.duration, 1000.0) << c.name;
-      auto same =
-          std::find_if(base.cases.begin(), base.cases.end(), [&](const SweepCase& t) { return t.name == c.name; });
       RunConfig expected;
-      if (same != base.cases.end()) {
+      const auto sameShape =
+          std::find_if(base.cases.begin(), base.cases.end(),
+                       [&](const SweepCase& t) { return t.config.intruder.shape == c.config.intruder.shape; });
+      if (const auto same = named(base, c.name); same != base.cases.end()) {
         expected = same->config;
-      } else {
+      } else if (sameShape != base.cases.end()) {
         ++newPeriods;
-        same = std::find_if(base.cases.begin(), base.cases.end(),
-                            [&](const SweepCase& t) { return t.config.intruder.shape == c.config.intruder.shape; });
-        ASSERT_NE(same, base.cases.end()) << longer << ": " << c.name;
-        expected = same->config;
+        expected = sameShape->config;
         expected.drive.period = c.config.drive.period;
+      } else {
+        ++fromFirstBed;
+        ASSERT_TRUE(c.name.ends_with("_s2")) << longer << ": " << c.name;
+        const auto first = named(firstBed, c.name.substr(0, c.name.size() - 3));
+        ASSERT_NE(first, firstBed.cases.end()) << longer << ": " << c.name;
+        expected = first->config;
+        expected.box.seed = c.config.box.seed;
+        EXPECT_NE(c.config.box.seed, first->config.box.seed) << longer << ": " << c.name;
       }
       expected.run.duration = c.config.run.duration;
       EXPECT_EQ(toToml(c.config), toToml(expected)) << longer << ": " << c.name;
     }
     EXPECT_EQ(newPeriods, extended) << longer;
+    EXPECT_EQ(fromFirstBed, secondBeds) << longer;
   }
 }
 
