@@ -6,7 +6,9 @@ threads, capped by the CPUs this process may use, `--rounds` times each (the thr
 interleaved), with `run.profile = true`, and prints per thread count: ns per particle-step of the
 run phase (median of the rounds), the speed-up over one thread, the step's serial share and wait
 share (summary.json's step_profile), and Amdahl's prediction from the one-thread serial and wait share:
-speed-up(n) = 1 / (s + (1 - s) / n). It checks that every run ends in the same state hash. Then the
+speed-up(n) = 1 / (s + (1 - s) / n); then per stage of the step its share of the wall time and, for a
+parallel region, its threads' wait share at each thread count (which region the waiting is in). It
+checks that every run ends in the same state hash. Then the
 prediction with the strips' imbalance (step_profile's strip_imbalance, b(n): the heaviest thread's
 share of the force stage's pairs over the mean, fixed by the list's blocks, for n = 2-32 whatever the
 machine has): speed-up(n) = 1 / (s + (1 - s) b(n) / n), the divided work as slow as its heaviest strip.
@@ -57,6 +59,33 @@ def run_case(wiggle, config, extra, steps, dt, threads, out_dir, env):
         sys.exit("failed (%d): %s\n%s" % (r.returncode, " ".join(cmd), r.stderr[-3000:]))
     with open(os.path.join(out_dir, "summary.json")) as f:
         return json.load(f)
+
+
+def log_stages(runs, threads):
+    """Per stage of the step (summary.json's step_profile): its share of the wall time at each thread
+    count and, for a parallel stage, its threads' wait share (medians of the rounds), so that a
+    many-core run says which region the waiting is in. Stages under 0.5 % at every count are left out."""
+    def stage_median(t, name, key):
+        values = [s["step_profile"]["stages"].get(name, {}).get(key) for s in runs[t]]
+        values = [v for v in values if v is not None]
+        return median(values) if values else None
+
+    names = sorted({name for t in threads for s in runs[t] for name in s["step_profile"]["stages"]})
+    shown = [n for n in names if any((stage_median(t, n, "share") or 0.0) >= 0.005 for t in threads)]
+    counts = " | ".join("%d" % t for t in threads)
+    log("")
+    log("Per stage: share of the step's wall time / wait share of its threads (parallel stages), at %s threads:" %
+        ",".join(map(str, threads)))
+    log("| stage | kind | %s |" % counts)
+    log("|---|---|%s" % ("---|" * len(threads)))
+    for name in shown:
+        kind = next(s["step_profile"]["stages"][name]["kind"] for t in threads for s in runs[t]
+                    if name in s["step_profile"]["stages"])
+        cells = []
+        for t in threads:
+            share, wait = stage_median(t, name, "share"), stage_median(t, name, "wait_share")
+            cells.append("" if share is None else "%.3f" % share + ("" if wait is None else " / %.3f" % wait))
+        log("| %s | %s | %s |" % (name, kind, " | ".join(cells)))
 
 
 def main():
@@ -130,6 +159,7 @@ def main():
                          serial_share=serial[t], wait_share=wait[t], load=load[0]))
         log("| %d | %.2f | %.2f | %.2f | %.3f | %.3f |" % (t, ns[t], ns[1] / ns[t], amdahl, serial[t], wait[t]))
     log("(speed-up below Amdahl's prediction is the wait share's: threads idle at a region's end)")
+    log_stages(runs, threads)
     imbalance = runs[1][0]["step_profile"].get("strip_imbalance", {})
     if imbalance:
         log("")
