@@ -141,10 +141,11 @@ TEST(SweepPlan, CarvedBedsOfOneSeedCountTheirBasePourOnce) {
   ASSERT_EQ(plan.beds.size(), 3u);
   const RunConfig& c = spec.cases[0].config;
   // Each carved bed (the three beds are the same size): the cut's relaxation at the plan's speed
-  // over the bed's particles; the first one also pours the base, (batches + 1) / 2 batch times.
+  // over the bed's particles; the first one also pours the base.
   const double secondsPerTime = 1e-9 * plan.speed.ns * (estimatedGrains(c) + c.box.width) / c.run.dt;
-  const double batches = std::ceil(c.box.bedHeight / c.bed.batchHeight);
-  const double pour = 0.5 * (batches + 1.0) * CostModel::bedTimePerBatch;
+  const double pour = estimatedBedTime(c, true) - estimatedBedTime(c, false);
+  EXPECT_GT(pour, 0.0);
+  EXPECT_EQ(estimatedBedTime(c, false), CostModel::carvedRelaxTime);
   EXPECT_NEAR(plan.beds[0].estimatedSeconds, secondsPerTime * (CostModel::carvedRelaxTime + pour), 1e-9);
   for (std::size_t b = 1; b < 3; ++b)
     EXPECT_NEAR(plan.beds[b].estimatedSeconds, secondsPerTime * CostModel::carvedRelaxTime, 1e-9) << b;

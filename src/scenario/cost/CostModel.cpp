@@ -117,17 +117,23 @@ double estimatedRunSeconds(const RunConfig& config, double nsPerParticleStep) {
   return 1e-9 * nsPerParticleStep * estimatedParticles(config) * steps;
 }
 
-double estimatedBedSeconds(const RunConfig& config, double nsPerParticleStep, bool withBase) {
-  // While pouring, the bed holds on average about half (b + 1) / (2 b) of its final grains over
-  // b batches; then the whole bed relaxes.
-  const double batches = std::max(1.0, std::ceil(config.box.bedHeight / config.bed.batchHeight));
-  const double pourTime = 0.5 * (batches + 1.0) * CostModel::bedTimePerBatch;
+double estimatedBedTime(const RunConfig& config, bool withBase) {
+  // Pouring b nominal batches in r batches, the bed holds on average (r + 1) / (2 r) of its final
+  // grains (each batch is there from its drop on); then the whole bed relaxes.
+  const CostModel::Pour pour = CostModel::pour(config.bed.pour);
+  const double nominal = config.box.bedHeight / config.bed.batchHeight;
+  const double batches = std::max(1.0, nominal * pour.batchesPerNominalBatch);
+  const double pourTime = nominal * pour.timePerNominalBatch * (batches + 1.0) / (2.0 * batches);
   const bool carved = config.bed.cavity == BedCavity::Carved;
+  const double area = config.box.width * config.box.bedHeight;
   const double relaxTime = config.bed.relaxDamping > 0 ? CostModel::dampedRelaxTime
                            : carved                    ? CostModel::carvedRelaxTime
-                                                       : CostModel::bedRelaxTime;
-  const double simulatedTime = relaxTime + (carved && !withBase ? 0.0 : pourTime);
-  return 1e-9 * nsPerParticleStep * estimatedParticles(config) * simulatedTime / config.run.dt;
+                                                       : CostModel::relaxTimePerArea * area;
+  return relaxTime + (carved && !withBase ? 0.0 : pourTime);
+}
+
+double estimatedBedSeconds(const RunConfig& config, double nsPerParticleStep, bool withBase) {
+  return 1e-9 * nsPerParticleStep * estimatedParticles(config) * estimatedBedTime(config, withBase) / config.run.dt;
 }
 
 BedPlan planBed(const RunConfig& config, const ClumpDef& clump) {

@@ -13,12 +13,24 @@ namespace wiggle {
 // One place for the numbers; docs/SWEEPS.md quotes them and says how they were measured. The speed
 // itself is not here: it is the committed cost table's (below) until this machine has its own.
 struct CostModel {
-  // Simulated time a bed spends per nominal batch (bed.batch_height of the final bed: falling and
-  // settling) and on the final relaxation, in sqrt(d/g). Measured on a 60 x 195 d bed (default
-  // bed keys, 2026-11-24): 14 poured batches for 10 nominal ones took t = 99, the relaxation to
-  // bed.rest_energy = 1e-6 about 40 more.
-  static constexpr double bedTimePerBatch = 10.0;
-  static constexpr double bedRelaxTime = 40.0;
+  // How a pour spends its simulated time (sqrt(d/g)), by bed.pour: per nominal batch (bed.batch_height
+  // of the final bed: falling and settling), and how many batches it pours per nominal one (a pour
+  // packs each batch looser than the bed ends up). Measured from the bed makers' logs: the lattice
+  // pours of the 60 x 195 d and 300 x 195 d beds (2026-11-22 and -24) took 14 batches, poured by
+  // t = 99, that of the 60 x 50 d bed 4 by t = 30; the random pours took 28 batches of 60 x 195 d
+  // and 300 x 195 d beds by t = 225-245, and 7 of a 60 x 50 d bed by t = 70 (2026-11-28).
+  struct Pour {
+    double timePerNominalBatch;
+    double batchesPerNominalBatch;
+  };
+  static constexpr Pour latticePour{10.0, 1.4};
+  static constexpr Pour randomPour{24.0, 2.8};
+  static constexpr Pour pour(BedPour kind) { return kind == BedPour::Random ? randomPour : latticePour; }
+  // The final relaxation to bed.rest_energy = 1e-6 grows with the bed: t = 6 (lattice) and about 4
+  // (random) in 60 x 50 d beds, 40 (lattice) and about 13 and 27 (random) in 60 x 195 d ones, 126
+  // (lattice) and 131 (random) in 300 x 195 d ones; this per unit of the bed's area (box.width x
+  // box.bed_height, d^2) is their least-squares line through zero.
+  static constexpr double relaxTimePerArea = 2.2e-3;
   // The relaxation of a carved bed (bed.cavity = "carved") after its cut, and of any bed with
   // bed.relax_damping > 0. Measured on the paper-depth preset (seed 7, one quiet core, 2026-11-25):
   // a cut relaxed in 152 s undamped (about 53 time units at 23 ns per particle-step), 16 s with
@@ -61,8 +73,12 @@ SpeedBasis speedBasis(const RunConfig& config);
 double estimatedParticles(const RunConfig& config);
 // Estimated wall seconds of a case's run phase (bed excluded) at `nsPerParticleStep`.
 double estimatedRunSeconds(const RunConfig& config, double nsPerParticleStep);
-// Estimated wall seconds of making the case's bed at `nsPerParticleStep`; for a carved bed, the
-// cut and its relaxation, plus pouring its base bed when `withBase`.
+// The simulated time of making the case's bed, in time units of the whole bed (a batch of the pour
+// counts for the share of the final grains it holds); for a carved bed, the cut's relaxation, plus
+// pouring its base bed when `withBase`.
+double estimatedBedTime(const RunConfig& config, bool withBase = true);
+// Estimated wall seconds of making the case's bed at `nsPerParticleStep`: estimatedBedTime's steps of
+// the bed's particles.
 double estimatedBedSeconds(const RunConfig& config, double nsPerParticleStep, bool withBase = true);
 
 // Where a case's bed comes from (docs/PHYSICS.md §8): a pinned file (bed.file), the cache, or made
