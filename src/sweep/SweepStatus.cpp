@@ -101,6 +101,7 @@ SweepStatus readSweepStatus(const std::string& dir) {
   double casesLeft = 0.0;
   int running = 0;
   std::vector<double> finishedWall;  // each finished case's wall time
+  std::vector<double> runningWhole;  // each running case's whole wall time at its present pace
   for (std::size_t r = 1; r < rows.size(); ++r) {
     const auto& row = rows[r];
     if (row.size() < header.size()) throw Error(resultsPath + ": row " + std::to_string(r + 1) + " is short");
@@ -138,6 +139,10 @@ SweepStatus readSweepStatus(const std::string& dir) {
       c.warnings = readRunWarnings(caseDir);
       c.interrupted = !runHeld && s.sweepLock != FileLock::Holders::Exclusive;
       running += !c.interrupted;
+      if (!c.interrupted && progress.etaSeconds > 0) {
+        c.etaSeconds = progress.etaSeconds;
+        if (c.fraction > 0 && c.fraction < 1) runningWhole.push_back(c.etaSeconds / (1.0 - c.fraction));
+      }
       casesLeft += 1.0 - std::max(0.0, c.fraction);
     } else if (c.status == CaseStatus::Pending) {
       casesLeft += 1.0;
@@ -146,7 +151,10 @@ SweepStatus readSweepStatus(const std::string& dir) {
   }
   s.beds = unfinishedBeds(dir);
   s.casesAtOnce = std::max({1, s.jobs, running});  // array tasks: as many as run now
-  if (!finishedWall.empty()) s.etaSeconds = median(finishedWall) * casesLeft / s.casesAtOnce;
+  if (!finishedWall.empty() || !runningWhole.empty()) {
+    s.caseTime = finishedWall.empty() ? SweepStatus::CaseTime::RunningPace : SweepStatus::CaseTime::FinishedCases;
+    s.etaSeconds = median(finishedWall.empty() ? runningWhole : finishedWall) * casesLeft / s.casesAtOnce;
+  }
   return s;
 }
 
@@ -169,7 +177,9 @@ std::string formatSweepStatus(const SweepStatus& s) {
   for (const CaseAtAGlance& c : s.cases) {
     if (c.status == CaseStatus::Running)
       out << "  running  " << c.name
-          << (c.fraction >= 0 ? " (" + formatNumber(100.0 * c.fraction, 3) + " % of its run)" : " (" + c.stage + ")")
+          << (c.fraction < 0 ? " (" + c.stage + ")"
+                             : " (" + formatNumber(100.0 * c.fraction, 3) + " % of its run" +
+                                   (c.etaSeconds > 0 ? ", about " + formatDuration(c.etaSeconds) + " to go" : "") + ")")
           << (c.interrupted ? "  [stale: interrupted]" : "") << "\n";
     else if (c.status == CaseStatus::Failed)
       out << "  failed   " << c.name << ": " << c.error << "\n";
@@ -189,11 +199,14 @@ std::string formatSweepStatus(const SweepStatus& s) {
         << ": the same `wiggle sweep` command retries " << (failed > 1 ? "them" : "it") << "\n";
   else if (running + pending == 0)
     out << "every case is done\n";
-  else if (s.etaSeconds < 0)
-    out << "time to go: unknown until a case has finished\n";
+  else if (s.caseTime == SweepStatus::CaseTime::Unknown)
+    out << "time to go: unknown until a case has finished or a running one knows its pace\n";
   else
-    out << "time to go: about " << formatDuration(s.etaSeconds) << " (estimate: the finished cases' median wall time x "
-        << "the cases left, over " << s.casesAtOnce << " job" << (s.casesAtOnce > 1 ? "s" : "")
+    out << "time to go: about " << formatDuration(s.etaSeconds) << " (estimate: "
+        << (s.caseTime == SweepStatus::CaseTime::FinishedCases
+                ? "the finished cases' median wall time"
+                : "nothing has finished yet, so a case's wall time at the running cases' present pace")
+        << " x the cases left, over " << s.casesAtOnce << " job" << (s.casesAtOnce > 1 ? "s" : "")
         << "; beds still to make are not counted)\n";
   return out.str();
 }

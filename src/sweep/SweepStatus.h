@@ -23,6 +23,7 @@ struct CaseAtAGlance {
   double vy = 0.0;      // ok: the rise rate
   double wallSeconds = 0.0;  // ok: the case's wall time
   double fraction = -1.0;    // running: the fraction of its steps done (its progress.json), else -1
+  double etaSeconds = -1.0;  // running: its run's own estimate of the wall seconds left (progress.json), else -1
   std::string stage;         // running, before its first step: what its progress.json says it is doing
   std::vector<std::string> warnings;  // ok: summary.json's; running: its warnings.txt so far
   // running: no process runs it now (neither its run's lock nor a whole sweep's is held): the
@@ -54,9 +55,17 @@ struct SweepStatus {
   bool sweepRunning() const { return sweepLock != FileLock::Holders::None; }
   int jobs = 0;         // cases at once, from sweep.json (0 = unknown)
   int casesAtOnce = 1;  // what the time to go divides by: the jobs, or the cases running now when more
-  // Seconds to go: the finished cases' median wall time (a case paused for hours moves it by one
-  // place only), times the cases left (a running case counts for what it has left), over
-  // casesAtOnce; negative when nothing has finished yet.
+  // What a case's wall time is taken to be for the time to go.
+  enum class CaseTime {
+    Unknown,        // nothing has finished, and no running case knows its pace yet
+    FinishedCases,  // the finished cases' median wall time (a case paused for hours moves it by one place only)
+    RunningPace,    // before any has finished: the median over the running cases of the wall time each
+                    // would take whole at its present pace (its estimate of the time left over the
+                    // fraction left); a long case's first hours are otherwise blind
+  };
+  CaseTime caseTime = CaseTime::Unknown;
+  // Seconds to go: caseTime's wall time of a case times the cases left (a running case counts for
+  // what it has left), over casesAtOnce; negative when caseTime is Unknown.
   double etaSeconds = -1.0;
 };
 

@@ -112,7 +112,7 @@ TEST_F(SweepStatusTest, ArrayTasksCasesRunWhereTheirRunsHoldTheirDirectories) {
   EXPECT_DOUBLE_EQ(s.etaSeconds, 300.0 * 2.25 / 2.0);
   const std::string text = formatSweepStatus(s);
   EXPECT_NE(text.find("one-case `wiggle sweep --case` tasks are running in it"), std::string::npos) << text;
-  EXPECT_NE(text.find("running  e (50 % of its run)\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("running  e (50 % of its run, about 1m00s to go)\n"), std::string::npos) << text;
   EXPECT_NE(text.find("running  d (25 % of its run)  [stale: interrupted]"), std::string::npos) << text;
   const auto json = nlohmann::json::parse(sweepStatusJson(s));
   EXPECT_TRUE(json["sweep_running"].get<bool>());
@@ -166,8 +166,37 @@ TEST_F(SweepStatusTest, BedsNotMadeYetAreNamedWithTheirLastReport) {
 TEST_F(SweepStatusTest, WithNothingFinishedTheTimeToGoIsUnknown) {
   writeFileAtomically(dir_ / "results.csv", "case,run_dir,status,vy,wall_s,error\ne,cases/e,pending,,,\n");
   const SweepStatus s = readSweepStatus(dir_.path().string());
+  EXPECT_EQ(s.caseTime, SweepStatus::CaseTime::Unknown);
   EXPECT_LT(s.etaSeconds, 0.0);
   EXPECT_NE(formatSweepStatus(s).find("time to go: unknown"), std::string::npos);
+}
+
+// A paper-scale case runs for many hours before any finishes: until then a running case's own
+// estimate of its time left, over the fraction it has left, is the wall time of a case.
+TEST_F(SweepStatusTest, WithNothingFinishedTheRunningCasesPaceGivesTheTimeToGo) {
+  writeFileAtomically(dir_ / "results.csv",
+                      "case,run_dir,status,vy,wall_s,error\nd,cases/d,running,,,\ne,cases/e,pending,,,\n");
+  const FileLock whole(sweepLockPath(dir_.path().string()), /*shared=*/false, false, "");
+  const SweepStatus s = readSweepStatus(dir_.path().string());
+  EXPECT_EQ(s.caseTime, SweepStatus::CaseTime::RunningPace);
+  // d: a quarter done, 60 s left: 80 s whole. Left: d's three quarters and e = 1.75 cases, over 2 jobs.
+  EXPECT_DOUBLE_EQ(s.etaSeconds, 80.0 * 1.75 / 2.0);
+  const std::string text = formatSweepStatus(s);
+  EXPECT_NE(text.find("running  d (25 % of its run, about 1m00s to go)\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("time to go: about 1m10s (estimate: nothing has finished yet, so a case's wall time at the running "
+                      "cases' present pace x the cases left, over 2 jobs"),
+            std::string::npos)
+      << text;
+}
+
+// An interrupted case's estimate is of a run that no longer runs: it sets no pace.
+TEST_F(SweepStatusTest, AnInterruptedCaseSetsNoPace) {
+  writeFileAtomically(dir_ / "results.csv",
+                      "case,run_dir,status,vy,wall_s,error\nd,cases/d,running,,,\ne,cases/e,pending,,,\n");
+  const SweepStatus s = readSweepStatus(dir_.path().string());
+  EXPECT_TRUE(s.cases[0].interrupted);
+  EXPECT_EQ(s.caseTime, SweepStatus::CaseTime::Unknown);
+  EXPECT_EQ(formatSweepStatus(s).find("to go)"), std::string::npos);
 }
 
 TEST_F(SweepStatusTest, WhatIsNotASweepDirectoryIsNamed) {
