@@ -17,8 +17,8 @@ struct CostModel {
   // of the final bed: falling and settling), and how many batches it pours per nominal one (a pour
   // packs each batch looser than the bed ends up). Measured from the bed makers' logs: the lattice
   // pours of the 60 x 195 d and 300 x 195 d beds (2026-11-22 and -24) took 14 batches, poured by
-  // t = 99, that of the 60 x 50 d bed 4 by t = 30; the random pours took 28 batches of 60 x 195 d
-  // and 300 x 195 d beds by t = 225-245, and 7 of a 60 x 50 d bed by t = 70 (2026-11-28).
+  // t = 99; the random pours of such beds 28 batches, by t = 225-245 (2026-11-28); of 60 x 50 d
+  // beds (2026-11-28), the lattice pour 4 batches by t = 30, the random one 7 by t = 70.
   struct Pour {
     double timePerNominalBatch;
     double batchesPerNominalBatch;
