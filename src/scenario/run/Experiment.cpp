@@ -298,6 +298,7 @@ bool stepToTheEnd(const Case& run, const RunOptions& options, const std::string&
   auto lastCheckpoint = Clock::now();
   auto chunkStart = Clock::now();
   const std::uint64_t startStep = world.stepCount();
+  StepPace pace;
   // Every 200 steps and at the end the progress line, the signal and the checkpoint clock are looked at.
   auto progressAt = [&](std::uint64_t step) { return step % 200 == 0 || step == steps.total; };
   auto stopAfterAt = [&](std::uint64_t step) {
@@ -308,15 +309,13 @@ bool stepToTheEnd(const Case& run, const RunOptions& options, const std::string&
                           [&](std::uint64_t step) { return progressAt(step) || stopAfterAt(step); });
     const std::uint64_t step = world.stepCount();
     if (progressAt(step)) {
-      state.runWallSeconds += secondsSince(chunkStart);
+      const double chunkSeconds = secondsSince(chunkStart);
       chunkStart = Clock::now();
-      const double done = static_cast<double>(step - startStep);
-      const double nsPerParticleStep = state.runWallSeconds > 0 && step > 0
-                                           ? 1e9 * state.runWallSeconds / (particles * static_cast<double>(step))
-                                           : 0.0;
-      const double eta = done > 0 ? state.runWallSeconds / static_cast<double>(step) *
-                                        static_cast<double>(steps.total - step)
-                                  : -1.0;
+      state.runWallSeconds += chunkSeconds;
+      pace.seconds += chunkSeconds;
+      pace.steps = step - startStep;
+      const double eta = pace.etaSeconds(steps.total - step);
+      const double nsPerParticleStep = pace.nsPerParticleStep(particles);
       const double fraction = static_cast<double>(step) / static_cast<double>(steps.total);
       progressFile.running(fraction, world.time(), eta);
       progress.update("[run] " + formatNumber(100.0 * fraction) + "%  t = " + formatNumber(world.time()) + " / " +

@@ -27,6 +27,16 @@ RunPhase phaseOfStageWords(const std::string& stage, double fraction) {
 
 }  // namespace
 
+double StepPace::etaSeconds(std::uint64_t stepsLeft) const {
+  if (steps == 0) return -1.0;
+  return seconds / static_cast<double>(steps) * static_cast<double>(stepsLeft);
+}
+
+double StepPace::nsPerParticleStep(double particles) const {
+  if (steps == 0 || particles <= 0.0) return 0.0;
+  return 1e9 * seconds / (particles * static_cast<double>(steps));
+}
+
 const char* runPhaseName(RunPhase phase) {
   switch (phase) {
     case RunPhase::Starting: return "starting";

@@ -4,6 +4,7 @@
 // (sweep/SweepStatus), so that they read data, not the log lines written for people. Written
 // atomically (io/AtomicFile): a reader sees the previous state or the new one, never half of one.
 // docs/OUTPUT-FORMATS.md lists its fields.
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -28,6 +29,17 @@ struct RunProgress {
   double t = 0.0;            // the run's time [sqrt(d/g)]
   double duration = 0.0;     // run.duration [sqrt(d/g)]
   double etaSeconds = -1.0;  // wall seconds left, estimated; -1 when not known yet
+};
+
+// The pace of this process's stepping, for the ETA and the progress line: its wall seconds and steps
+// since it began. A resumed run's earlier stretches do not count: they may have run on another
+// machine, at another thread count or beside other work (the paper box's square, resumed on a
+// machine twice as fast, read 9h20m to go from its whole run's pace where its own said 6h).
+struct StepPace {
+  double seconds = 0.0;
+  std::uint64_t steps = 0;
+  double etaSeconds(std::uint64_t stepsLeft) const;  // -1 before the first step
+  double nsPerParticleStep(double particles) const;  // 0 before the first step
 };
 
 // The words of a stopped run's stage: "interrupted at t = 12.5" (SIGINT or SIGTERM, its checkpoint
