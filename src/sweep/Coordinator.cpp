@@ -345,12 +345,13 @@ class Coordinator {
         monitor_.event("bed " + plan_.beds[b].key + " ready" + where + " (" + formatDuration(o.wallSeconds) + ")");
         return;
       }
-      bedState_[b] = BedState::Failed;
-      monitor_.event("bed " + plan_.beds[b].key + " failed" + where + ": " + o.error);
-      if (stopping_) {
-        bedState_[b] = BedState::Waiting;  // stopped by us: its cases stay pending
+      if (stopping_) {  // stopped by us, its partial bed saved: its cases stay pending
+        bedState_[b] = BedState::Waiting;
+        monitor_.event("bed " + plan_.beds[b].key + " stopped" + where + ": " + o.error);
         return;
       }
+      bedState_[b] = BedState::Failed;
+      monitor_.event("bed " + plan_.beds[b].key + " failed" + where + ": " + o.error);
       for (std::size_t c = 0; c < plan_.cases.size(); ++c) {
         if (plan_.cases[c].bedTask != b || started_[c]) continue;
         started_[c] = true;
