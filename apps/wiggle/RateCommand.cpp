@@ -1,7 +1,7 @@
 // `wiggle rate DIR [--from T0] [--to T1] [--band D] [--write]`: V_y measured again, by both rules
-// (analysis/RiseRate.h), from the trajectory.csv of a finished run or of every finished case of a
-// sweep directory, over the run's own window or any other (a trajectory shorter than its run, as a
-// short LAMMPS run of an exported deck, to its end, said on stderr); a CSV table on stdout. --write records
+// (analysis/RiseRate.h), from the trajectory.csv of a run or of every finished case of a sweep
+// directory, over the run's own window or any other (a trajectory shorter than its run, as a short
+// LAMMPS run of an exported deck or a run still going, to its end, said on stderr); a CSV table on stdout. --write records
 // the settle rule's result (vy_settled, t_settled) in summary.json files written before it existed,
 // and in the sweep's results.csv (scenario/run/Remeasure.h).
 #include <algorithm>
@@ -25,7 +25,8 @@ namespace fs = std::filesystem;
 namespace {
 
 // The run directories under DIR: DIR itself when it is a run (it has a config.toml), else every
-// case of DIR/cases that has finished (a trajectory.csv), by name; `pending` counts the others.
+// case of DIR/cases that has finished (caseFinished: its summary.json says ok; a case still running
+// has a trajectory.csv of its steps so far), by name; `pending` counts the others.
 std::vector<std::string> runDirectories(const std::string& dir, bool& isSweep, int& pending) {
   if (!fs::is_directory(dir)) throw Error(dir + ": no such directory");
   isSweep = false;
@@ -37,7 +38,7 @@ std::vector<std::string> runDirectories(const std::string& dir, bool& isSweep, i
   std::vector<std::string> names;
   for (const auto& entry : fs::directory_iterator(dir + "/cases")) {
     if (!entry.is_directory()) continue;
-    if (fs::is_regular_file(entry.path() / "trajectory.csv"))
+    if (caseFinished(entry.path().string()))
       names.push_back(entry.path().filename().string());
     else
       ++pending;
@@ -101,11 +102,11 @@ void addRateCommand(CLI::App& app) {
       if (measured[k].cutShortAt > 0)
         std::fprintf(stderr,
                      "wiggle rate: %s: trajectory.csv ends at t = %s, before the config's run.duration (a shorter "
-                     "run): measured what there is, t = %s to %s\n",
+                     "run, or one not finished): measured what there is, t = %s to %s\n",
                      dirs[k].c_str(), formatNumber(measured[k].cutShortAt).c_str(),
                      formatNumber(measured[k].rate.tInitial).c_str(), formatNumber(measured[k].rate.tFinal).c_str());
     if (pending)
-      std::fprintf(stderr, "wiggle rate: %d case%s without trajectory.csv (not finished) left out\n", pending,
+      std::fprintf(stderr, "wiggle rate: %d case%s not finished left out\n", pending,
                    pending == 1 ? "" : "s");
     if (!opts->write) return;
     for (std::size_t k = 0; k < dirs.size(); ++k) recordSettled(dirs[k], measured[k].settled, request.rule);

@@ -10,6 +10,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <csignal>
 #include <cstdlib>
 #include <filesystem>
@@ -410,6 +411,31 @@ TEST_F(Cli, RateMeasuresAFinishedRunAgainAndRecordsTheSettledRate) {
   std::ofstream(work_ / "run" / "config.toml") << config;
   r = wiggle("rate run");
   EXPECT_EQ(r.status, 0) << r.err;
+}
+
+// `wiggle rate SWEEP_DIR` measures the finished cases (summary.json says ok) and leaves out a case
+// still running, though it has the trajectory.csv of its steps so far; with --write it records the
+// finished ones and writes nothing into the running one.
+TEST_F(Cli, RateOfASweepLeavesOutACaseStillRunning) {
+  Result r = wiggle("run " + quoted(tinyConfig()) + " --set run.duration=0.2 --out run --threads 1");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const fs::path sweep = work_ / "sweep";
+  fs::create_directories(sweep / "cases");
+  fs::copy(work_ / "run", sweep / "cases" / "done", fs::copy_options::recursive);
+  fs::create_directories(sweep / "cases" / "running");
+  for (const char* file : {"config.toml", "trajectory.csv"})
+    fs::copy_file(work_ / "run" / file, sweep / "cases" / "running" / file);
+  r = wiggle("rate sweep");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 2) << r.out;  // the header and the finished case
+  EXPECT_NE(r.out.find("\ndone,"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("running,"), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("1 case not finished left out"), std::string::npos) << r.err;
+  r = wiggle("rate sweep --write");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_FALSE(fs::exists(sweep / "cases" / "running" / "summary.json"));
+  fs::remove_all(sweep);
+  fs::remove_all(work_ / "run");
 }
 
 // A run or sweep stopped by SIGINT or SIGTERM saves its work and exits 128 + the signal (130, 143),

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "analysis/LammpsDump.h"
+#include "analysis/Trajectory.h"
 #include "core/Error.h"
 #include "core/StopSignal.h"
 #include "io/AtomicFile.h"
@@ -83,6 +84,14 @@ TEST(Experiment, ResumedRunIsBitwiseIdenticalToAnUninterruptedOne) {
   stop.stopAfterSteps = 1700;  // mid-period, between samples and dump frames
   stop.checkpointAtStop = true;
   ASSERT_EQ(runExperiment(prepareCase(config), stop).summary.status, RunStatus::Stopped);
+  // Beside its checkpoint, the trajectory so far: the uninterrupted run's first rows, to step 1700.
+  const std::string soFar = readFile(interrupted + "/trajectory.csv");
+  const std::string whole = readFile(straight + "/trajectory.csv");
+  EXPECT_EQ(whole.rfind(soFar, 0), 0u) << "not the start of the whole run's trajectory";
+  const double lastSample = readTrajectoryCsv(interrupted + "/trajectory.csv").back().t;
+  EXPECT_GT(lastSample, 0.16 - 1e-9);  // samples every 0.01, the stop at t = 0.17
+  EXPECT_LT(lastSample, 0.17 + 1e-9);
+  EXPECT_LT(soFar.size(), whole.size());
   // Work done after the checkpoint and lost in a crash: the resumed run must not depend on it.
   RunOptions resume = quiet(interrupted);
   resume.resume = true;

@@ -286,6 +286,15 @@ struct SteppingCost {
   std::uint64_t steps = 0;
 };
 
+// A checkpoint, and beside it the trajectory so far: a run of hours can be plotted (`wiggle plot`)
+// and measured to where it got (`wiggle rate`) while it runs or after it stopped; its end rewrites
+// trajectory.csv whole.
+void saveProgress(const std::string& dir, const std::string& configToml, const World& world, const RunState& state,
+                  const FieldObserver& fields) {
+  writeCheckpoint(dir, configToml, world, state, fields);
+  writeTrajectoryCsv(dir + "/trajectory.csv", state.samples);
+}
+
 // Steps `world` to the end of the run, feeding the observers, with the progress line, periodic
 // checkpoints and the stop on a signal (a checkpoint, then an Error saying how to continue).
 // Returns false when options.stopAfterSteps stopped it first.
@@ -322,7 +331,7 @@ bool stepToTheEnd(const Case& run, const RunOptions& options, const std::string&
                       formatNumber(run.config.run.duration) + "  ETA " + formatDuration(eta) + "  " +
                       formatNumber(nsPerParticleStep) + " ns/particle-step  y = " + formatNumber(world.intruder().y));
       if (const int signal = stopSignalReceived(); signal != 0) {
-        writeCheckpoint(dir, configToml, world, state, fields);
+        saveProgress(dir, configToml, world, state, fields);
         progress.clear();
         log.line("interrupted by signal " + std::to_string(signal) + " at step " + std::to_string(step) +
                  "; checkpoint written");
@@ -330,13 +339,13 @@ bool stepToTheEnd(const Case& run, const RunOptions& options, const std::string&
                                       "; continue with: wiggle run --out " + dir + " --resume");
       }
       if (secondsSince(lastCheckpoint) >= run.config.run.checkpointInterval) {
-        writeCheckpoint(dir, configToml, world, state, fields);
+        saveProgress(dir, configToml, world, state, fields);
         lastCheckpoint = Clock::now();
         log.line("checkpoint at step " + std::to_string(step));
       }
     }
     if (stopAfterAt(step)) {
-      if (options.checkpointAtStop) writeCheckpoint(dir, configToml, world, state, fields);
+      if (options.checkpointAtStop) saveProgress(dir, configToml, world, state, fields);
       return false;
     }
   }

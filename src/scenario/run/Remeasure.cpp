@@ -23,7 +23,7 @@ Remeasured remeasureRun(const std::string& runDir, const RemeasureRequest& reque
   const std::string trajectoryPath = runDir + "/trajectory.csv";
   if (!std::filesystem::is_regular_file(configPath)) throw Error(runDir + ": no config.toml: not a run directory");
   if (!std::filesystem::is_regular_file(trajectoryPath))
-    throw Error(runDir + ": no trajectory.csv: the run has not finished");
+    throw Error(runDir + ": no trajectory.csv: the run has neither finished nor written a checkpoint");
   // The case, for its surfaced height (the plateau rule) as the run worked it out.
   const Case run = prepareCase(parseRunConfig(readFile(configPath), configPath), BedNeeded::No);
   const std::vector<TrajectorySample> samples = readTrajectoryCsv(trajectoryPath);
