@@ -33,8 +33,7 @@ struct RunProgress {
 
 // The pace of this process's stepping, for the ETA and the progress line: its wall seconds and steps
 // since it began. A resumed run's earlier stretches do not count: they may have run on another
-// machine, at another thread count or beside other work (the paper box's square, resumed on a
-// machine twice as fast, read 9h20m to go from its whole run's pace where its own said 6h).
+// machine, at another thread count or beside other work, and would set the ETA by their pace.
 struct StepPace {
   double seconds = 0.0;
   std::uint64_t steps = 0;
