@@ -307,7 +307,7 @@ bool stepToTheEnd(const Case& run, const RunOptions& options, const std::string&
   auto lastCheckpoint = Clock::now();
   auto chunkStart = Clock::now();
   const std::uint64_t startStep = world.stepCount();
-  StepPace pace;
+  const double wallAtStart = state.runWallSeconds;  // a resumed run's earlier stretches
   // Every 200 steps and at the end the progress line, the signal and the checkpoint clock are looked at.
   auto progressAt = [&](std::uint64_t step) { return step % 200 == 0 || step == steps.total; };
   auto stopAfterAt = [&](std::uint64_t step) {
@@ -318,11 +318,9 @@ bool stepToTheEnd(const Case& run, const RunOptions& options, const std::string&
                           [&](std::uint64_t step) { return progressAt(step) || stopAfterAt(step); });
     const std::uint64_t step = world.stepCount();
     if (progressAt(step)) {
-      const double chunkSeconds = secondsSince(chunkStart);
+      state.runWallSeconds += secondsSince(chunkStart);
       chunkStart = Clock::now();
-      state.runWallSeconds += chunkSeconds;
-      pace.seconds += chunkSeconds;
-      pace.steps = step - startStep;
+      const StepPace pace{state.runWallSeconds - wallAtStart, step - startStep};
       const double eta = pace.etaSeconds(steps.total - step);
       const double nsPerParticleStep = pace.nsPerParticleStep(particles);
       const double fraction = static_cast<double>(step) / static_cast<double>(steps.total);
