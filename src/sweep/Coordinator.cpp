@@ -146,7 +146,10 @@ class Coordinator {
 
   void announce() {
     const std::string pid = std::to_string(::getpid());
-    writeSweepStart(plan_.outDir, {plan_.spec.settings.name, only_ ? 0 : concurrency_, settings_.threads});
+    std::vector<BedToMake> beds;
+    for (const PlannedBed& b : plan_.beds) beds.push_back({b.key, b.cachePath, b.estimatedSeconds});
+    writeSweepStart(plan_.outDir,
+                    {plan_.spec.settings.name, only_ ? 0 : concurrency_, settings_.threads, std::move(beds)});
     if (only_) {
       monitor_.event("wiggle sweep " + plan_.spec.settings.name + " --case " + std::to_string(*only_ + 1) + ": " +
                      plan_.spec.cases[*only_].name + " (pid " + pid + ")");

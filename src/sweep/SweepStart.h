@@ -5,13 +5,24 @@
 // people. Written atomically (io/AtomicFile). docs/OUTPUT-FORMATS.md lists its fields.
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace wiggle {
+
+// A bed the sweep had to make when it started: a deep or wide bed takes hours in which no case
+// runs, so the time to go counts it until the cache holds it.
+struct BedToMake {
+  std::string key;
+  std::string cachePath;          // made once this file exists
+  double estimatedSeconds = 0.0;  // the sweep plan's estimate, in seconds of one core (PlannedBed)
+};
 
 struct SweepStart {
   std::string name;  // [sweep] name
   int jobs = 0;      // cases at once (all MPI worker ranks' jobs together); 0 for a Slurm array's tasks
   int threads = 0;   // OpenMP threads per case
+  // Nothing in a sweep.json written before the beds were recorded: then what the beds cost is not known.
+  std::optional<std::vector<BedToMake>> beds;
 };
 
 std::string sweepStartPath(const std::string& sweepDir);

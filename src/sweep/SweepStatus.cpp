@@ -97,6 +97,12 @@ SweepStatus readSweepStatus(const std::string& dir) {
   if (const std::optional<SweepStart> start = readSweepStart(dir)) {
     s.jobs = start->jobs;
     s.name = start->name;
+    s.bedsCounted = start->beds.has_value();
+    for (const BedToMake& bed : start->beds.value_or(std::vector<BedToMake>{})) {
+      if (fs::exists(bed.cachePath)) continue;
+      ++s.bedsToMake;
+      s.bedSeconds += bed.estimatedSeconds / std::max(1, start->threads);  // as the dry run: threads scale perfectly
+    }
   }
   double casesLeft = 0.0;
   int running = 0;
@@ -153,7 +159,8 @@ SweepStatus readSweepStatus(const std::string& dir) {
   s.casesAtOnce = std::max({1, s.jobs, running});  // array tasks: as many as run now
   if (!finishedWall.empty() || !runningWhole.empty()) {
     s.caseTime = finishedWall.empty() ? SweepStatus::CaseTime::RunningPace : SweepStatus::CaseTime::FinishedCases;
-    s.etaSeconds = median(finishedWall.empty() ? runningWhole : finishedWall) * casesLeft / s.casesAtOnce;
+    s.etaSeconds =
+        (median(finishedWall.empty() ? runningWhole : finishedWall) * casesLeft + s.bedSeconds) / s.casesAtOnce;
   }
   return s;
 }
@@ -206,8 +213,13 @@ std::string formatSweepStatus(const SweepStatus& s) {
         << (s.caseTime == SweepStatus::CaseTime::FinishedCases
                 ? "the finished cases' median wall time"
                 : "nothing has finished yet, so a case's wall time at the running cases' present pace")
-        << " x the cases left, over " << s.casesAtOnce << " job" << (s.casesAtOnce > 1 ? "s" : "")
-        << "; beds still to make are not counted)\n";
+        << " x the cases left"
+        << (s.bedsToMake > 0 ? ", plus " + std::to_string(s.bedsToMake) + " bed" + (s.bedsToMake > 1 ? "s" : "") +
+                                   " to make, about " + formatDuration(s.bedSeconds) + " by the sweep's plan"
+                             : "")
+        << ", over " << s.casesAtOnce << " job" << (s.casesAtOnce > 1 ? "s" : "")
+        << (s.bedsCounted ? "" : "; beds still to make are not counted: the sweep's start did not record them")
+        << ")\n";
   return out.str();
 }
 

@@ -64,8 +64,15 @@ struct SweepStatus {
                     // fraction left); a long case's first hours are otherwise blind
   };
   CaseTime caseTime = CaseTime::Unknown;
+  // The beds the sweep had to make at its last start (its sweep.json) that the cache does not hold
+  // yet, and the sweep plan's estimate of their wall time (its seconds of one core over the sweep's
+  // threads); a bed begun counts whole (how far a pour has got is not known from its log).
+  // bedsCounted is false when sweep.json does not say (a sweep started by an older wiggle).
+  bool bedsCounted = false;
+  int bedsToMake = 0;
+  double bedSeconds = 0.0;
   // Seconds to go: caseTime's wall time of a case times the cases left (a running case counts for
-  // what it has left), over casesAtOnce; negative when caseTime is Unknown.
+  // what it has left), plus bedSeconds, over casesAtOnce; negative when caseTime is Unknown.
   double etaSeconds = -1.0;
 };
 

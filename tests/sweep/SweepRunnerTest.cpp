@@ -244,6 +244,12 @@ TEST_F(SweepRunnerTest, RunsEveryCaseRecordsFailuresAndResumes) {
   EXPECT_EQ(start->jobs, 2);
   EXPECT_EQ(start->threads, 1);
   EXPECT_FALSE(start->name.empty());
+  // ... and the beds it had to make, with their estimates: all made now.
+  ASSERT_TRUE(start->beds.has_value());
+  for (const BedToMake& bed : *start->beds) {
+    EXPECT_TRUE(fs::exists(bed.cachePath)) << bed.key;
+    EXPECT_GT(bed.estimatedSeconds, 0.0) << bed.key;
+  }
   EXPECT_EQ(rows["amplitude=0.5_period=0.0003"].at("status"), "failed");
   EXPECT_NE(rows["amplitude=0.5_period=0.0003"].at("error").find("blew up"), std::string::npos)
       << rows["amplitude=0.5_period=0.0003"].at("error");

@@ -26,6 +26,17 @@ TEST(SweepStart, ReadsBackWhatItWroteAndAnArrayTaskLeavesTheSweepsFigures) {
   EXPECT_EQ(start->name, "fig5");
   EXPECT_EQ(start->jobs, 2);
   EXPECT_EQ(start->threads, 1);
+  EXPECT_FALSE(start->beds.has_value());  // not recorded: not known, which is not "none"
+  writeSweepStart(path, {"fig5", 2, 1, std::vector<BedToMake>{{"k1", "/cache/bed-k1.bin", 3600.0}}});
+  const std::optional<SweepStart> withBeds = readSweepStart(path);
+  ASSERT_TRUE(withBeds.has_value() && withBeds->beds.has_value());
+  ASSERT_EQ(withBeds->beds->size(), 1u);
+  EXPECT_EQ(withBeds->beds->front().key, "k1");
+  EXPECT_EQ(withBeds->beds->front().cachePath, "/cache/bed-k1.bin");
+  EXPECT_EQ(withBeds->beds->front().estimatedSeconds, 3600.0);
+  writeSweepStart(path, {"fig5", 2, 1, std::vector<BedToMake>{}});  // none to make: known, and empty
+  ASSERT_TRUE(readSweepStart(path)->beds.has_value());
+  EXPECT_TRUE(readSweepStart(path)->beds->empty());
   std::ofstream(dir / "sweep.json") << "{\"name\": 3";  // damaged: nothing known, no error
   EXPECT_FALSE(readSweepStart(path).has_value());
 }

@@ -163,6 +163,34 @@ TEST_F(SweepStatusTest, BedsNotMadeYetAreNamedWithTheirLastReport) {
   EXPECT_NE(text.find("  bed      k5: not being made, nothing of it saved\n"), std::string::npos) << text;
 }
 
+// A bed takes hours in which no case runs: the beds the sweep had to make at its start (sweep.json)
+// count in the time to go, at the plan's estimate over the sweep's threads, until the cache holds them.
+TEST_F(SweepStatusTest, BedsStillToMakeCountInTheTimeToGo) {
+  const std::string made = dir_ / "bed-made.bin";
+  writeFileAtomically(made, "bed");
+  writeSweepStart(dir_.path().string(),
+                  SweepStart{"demo", 2, 2,
+                             std::vector<BedToMake>{{"made", made, 1000.0},
+                                                    {"k1", dir_ / "bed-k1.bin", 600.0},
+                                                    {"k2", dir_ / "bed-k2.bin", 200.0}}});
+  const SweepStatus s = readSweepStatus(dir_.path().string());
+  EXPECT_TRUE(s.bedsCounted);
+  EXPECT_EQ(s.bedsToMake, 2);                 // the cache holds the first
+  EXPECT_DOUBLE_EQ(s.bedSeconds, 800.0 / 2);  // seconds of one core, over 2 threads
+  // The cases as in TimeToGoIsTheMedianFinishedWallTimesWhatIsLeftOverTheJobs, plus the beds, over 2 jobs.
+  EXPECT_DOUBLE_EQ(s.etaSeconds, (300.0 * 2.75 + 400.0) / 2.0);
+  const std::string text = formatSweepStatus(s);
+  EXPECT_NE(text.find("x the cases left, plus 2 beds to make, about 6m40s by the sweep's plan, over 2 jobs)"),
+            std::string::npos)
+      << text;
+  // A sweep.json without the beds (an older wiggle's): they are not counted, and the status says so.
+  writeSweepStart(dir_.path().string(), SweepStart{"demo", 2, 1});
+  const SweepStatus old = readSweepStatus(dir_.path().string());
+  EXPECT_FALSE(old.bedsCounted);
+  EXPECT_DOUBLE_EQ(old.etaSeconds, 300.0 * 2.75 / 2.0);
+  EXPECT_NE(formatSweepStatus(old).find("beds still to make are not counted"), std::string::npos);
+}
+
 TEST_F(SweepStatusTest, WithNothingFinishedTheTimeToGoIsUnknown) {
   writeFileAtomically(dir_ / "results.csv", "case,run_dir,status,vy,wall_s,error\ne,cases/e,pending,,,\n");
   const SweepStatus s = readSweepStatus(dir_.path().string());
