@@ -1060,11 +1060,47 @@ def protocol_beds(folders, where):
     return {c.get("box.seed"): float(c.get("vy")) for c in beds(select(present, where), f"{present} {where}")}
 
 
+def protocol_cell(shape, period):
+    """The keys of one of PROTOCOL_CELLS' cases (A = 5)."""
+    return {"intruder.shape": shape, "drive.amplitude": 5.0, "drive.period": period}
+
+
+def unfinished(source):
+    """The cases of a results folder that have not finished but whose trajectory so far is committed
+    (a long case carried from session to session with its checkpoint)."""
+    path = os.path.join(ROOT, source)
+    with open(os.path.join(path, "results.csv"), newline="") as f:
+        cases = [Case(source, r, os.path.join(path, r["run_dir"])) for r in csv.DictReader(f) if r["status"] != "ok"]
+    return [c for c in cases if os.path.exists(os.path.join(c.dir, "trajectory.csv"))]
+
+
+SO_FAR_FROM = 200.0   # an unfinished case is shown once its window t = 100-t_now spans this much
+
+
+def protocol_so_far_cell(folders, keys, shape, period):
+    """A cell not finished yet whose case is on its way: its rate so far, by the paper's rule over
+    t = 100 to its last committed sample, beside the baseline's over the same window; "" when none."""
+    case = protocol_cell(shape, period)
+    where = dict(PRESET_PROTOCOL, **keys, **case)
+    present = [f for f in folders if os.path.exists(os.path.join(ROOT, f, "results.csv"))]
+    on_way = [c for f in present for c in unfinished(f) if all(c.get(k) == v for k, v in where.items())]
+    parts = []
+    for c in on_way:
+        t_now = c.trajectory()[0][-1]
+        if t_now - 100.0 < SO_FAR_FROM:
+            continue
+        window = chord(100.0, t_now)
+        baseline = [window(b) for b in beds(select(T1000_BEDS, dict(PRESET_PROTOCOL, **case)), f"baseline {case}")]
+        parts.append(f"not finished, t = {t_now:g} of 1000 so far: over t = 100-{t_now:g} {cell_text([window(c)])}, "
+                     f"the baseline {cell_text(baseline)}")
+    return "; ".join(parts)
+
+
 def protocol_change(folders, keys, paired, shape, period, paper_sign, sig):
     """One protocol row's cell: (its V_y values, or [] when none is committed; the change from the
     baseline, its size in standard errors and which way it moves the cell), the change None for the
     baseline's own row."""
-    case = {"intruder.shape": shape, "drive.amplitude": 5.0, "drive.period": period}
+    case = protocol_cell(shape, period)
     row = protocol_beds(folders, dict(PRESET_PROTOCOL, **keys, **case))
     values = list(row.values())
     if not values or not keys:
@@ -1087,7 +1123,7 @@ def answer_protocol(spec):
         for shape, period, paper_sign in PROTOCOL_CELLS:
             values, change = protocol_change(folders, keys, paired, shape, period, paper_sign, sig)
             if not values:
-                cells.append("not run yet")
+                cells.append(protocol_so_far_cell(folders, keys, shape, period) or "not run yet")
             elif change is None:
                 cells.append(cell_text(values))
             else:
@@ -1098,7 +1134,9 @@ def answer_protocol(spec):
               f"and the triangle rising at T = 5 (Table 1). A change is the row's mean minus the baseline's, in "
               f"standard errors se = sigma sqrt(1/n_row + 1/n_baseline), sigma = {sig:.3f} one bed's standard "
               f"deviation by the paper's clock; the mass's change is against the baseline's run on the same bed, "
-              f"with the same sigma, which its pairing is expected to make smaller (not measured); it moves the cell toward the paper's sign when >= {RESOLVED:g} se that way)"]
+              f"with the same sigma, which its pairing is expected to make smaller (not measured); it moves the cell toward the paper's sign when >= {RESOLVED:g} se that way. "
+              f"A case not finished yet is shown by the paper's rule over t = 100 to its last committed sample, beside "
+              f"the baseline's over the same window, once that window spans {SO_FAR_FROM:g}: a rate so far, not judged)"]
     return lines, [f for f in PROTOCOL_FOLDERS + T1000_BEDS if os.path.exists(os.path.join(ROOT, f, "results.csv"))]
 
 
