@@ -2,7 +2,7 @@
 // A sweep directory's sweep.json: how the last `wiggle sweep` (or `wiggle boundary`) over it was
 // started, written by the sweep as it starts (sweep/Coordinator) and read by `wiggle status` and
 // `wiggle report` (sweep/SweepStatus), which read this data rather than sweep.log's lines for
-// people. Written atomically (io/AtomicFile). docs/OUTPUT-FORMATS.md lists its fields.
+// people. Written atomically (io/AtomicFile). docs/SWEEPS.md ("What it does") lists its fields.
 #include <optional>
 #include <string>
 #include <vector>
