@@ -5,7 +5,8 @@ A sweep of three cases (one finished, one stopped with its checkpoint, one not s
 beds in a private cache (one made, one part-made): collecting with --carry keeps the stopped case's
 checkpoint, the part-made bed and the made one (a case is unfinished), and the finished case's
 stale checkpoint goes; once the bed and every case are done, the partial file and the made bed go
-too, and a bed log continued in a new sweep directory goes on from the collected one."""
+too, and a bed log continued in a new sweep directory goes on from the collected one; a plain collect
+(no --carry) removes the checkpoint of a case finished since it was carried."""
 import json
 import os
 import subprocess
@@ -36,9 +37,10 @@ def check(what, ok):
         print(f"FAIL: {what}")
 
 
-def collect(src, dest, cache):
+def collect(src, dest, cache, carry=True):
     env = dict(os.environ, WIGGLE_CACHE=cache)
-    out = subprocess.run([sys.executable, COLLECT, src, dest, "--carry"], env=env, capture_output=True, text=True)
+    out = subprocess.run([sys.executable, COLLECT, src, dest] + (["--carry"] if carry else []), env=env,
+                         capture_output=True, text=True)
     check(f"collect exits 0 ({out.stderr.strip()})", out.returncode == 0)
 
 
@@ -90,6 +92,12 @@ with tempfile.TemporaryDirectory() as tmp:
     check("its log goes on from the collected one",
           read(os.path.join(dest, "beds/bed-part.log")) == "[bed] part: pouring batch 1\n[bed] part: relaxing batch 9\n")
     check("a bed log with nothing new stays as it was", read(os.path.join(dest, "beds/bed-made.log")) == "[bed] made: pouring batch 1\n")
+
+    # A plain collect (no --carry) of a case finished since its checkpoint was carried removes that checkpoint too.
+    write(os.path.join(dest, "cases/done/checkpoint.bin"), "carried while it ran")
+    collect(src2, dest, cache, carry=False)
+    check("a plain collect removes a finished case's carried checkpoint",
+          not os.path.exists(os.path.join(dest, "cases/done/checkpoint.bin")))
 
 print(f"collect --carry: {len(failures)} failures")
 sys.exit(1 if failures else 0)

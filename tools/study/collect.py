@@ -19,8 +19,9 @@ DEST/cases/NAME), and from the bed cache (bed.cache_dir of the bed's config, els
 else ~/.cache/wiggle), for each bed the sweep began (SWEEP_DIR/beds/bed-KEY.toml), its maker's log,
 its partial file while it is not made, and the made bed while a case of the sweep is unfinished
 (which case needs which bed is not recorded before the case starts, so every made bed stays until
-the sweep is done). What no longer serves is removed from DEST: a finished case's checkpoint, a
-made bed's partial file, the made beds once every case is done. Continuing: copy DEST/beds/*.bin
+the sweep is done). What no longer serves is removed from DEST: a made bed's partial file, the made
+beds once every case is done; and, with or without --carry, the checkpoint of a case that has
+finished since it was carried. Continuing: copy DEST/beds/*.bin
 into the bed cache and DEST/cases into the new sweep directory, then run the same sweep command.
 """
 import csv
@@ -99,8 +100,6 @@ def carry(src, dest):
         if run_dir in unfinished and os.path.exists(checkpoint):
             copy_atomically(checkpoint, kept)
             copied += 1
-        elif run_dir not in unfinished:
-            removed += remove(kept)
     beds = os.path.join(src, "beds")
     for name in sorted(os.listdir(beds)) if os.path.isdir(beds) else []:
         if not (name.startswith("bed-") and name.endswith(".toml")):
@@ -142,7 +141,7 @@ def main():
     shutil.copy2(os.path.join(src, "results.csv"), os.path.join(dest, "results.csv"))
     write_lines_atomically(os.path.join(dest, "sweep.log"),
                            merged_log(read_lines(os.path.join(dest, "sweep.log")), read_lines(os.path.join(src, "sweep.log"))))
-    copied = 0
+    copied = dropped = 0
     cases = os.path.join(src, "cases")
     for case in sorted(os.listdir(cases)) if os.path.isdir(cases) else []:
         for name in files:
@@ -151,7 +150,10 @@ def main():
                 os.makedirs(os.path.join(dest, "cases", case), exist_ok=True)
                 shutil.copy2(path, os.path.join(dest, "cases", case, name))
                 copied += name == "summary.json"
-    print(f"collect: {dest}: results.csv and {copied} finished cases")
+        if case_finished(os.path.join(cases, case)):  # a checkpoint carried before it finished no longer serves
+            dropped += remove(os.path.join(dest, "cases", case, "checkpoint.bin"))
+    print(f"collect: {dest}: results.csv and {copied} finished cases"
+          + (f"; removed the checkpoints of {dropped} carried before they finished" if dropped else ""))
     if with_carry:
         carried, removed = carry(src, dest)
         print(f"collect: {dest}: carried {carried} checkpoints and beds, removed {removed} that no longer serve")
