@@ -1024,7 +1024,7 @@ def readme_answer(spec):
     verdicts = [findings.finding_verdict(*by_scale.get("paper's clock", (0.0, []))) for _, _, by_scale in paper_findings()]
     text = (f"Partly. By the paper's clock (t = 1000) at its depth, Table 1's T_rising is in the paper's range for "
             f"{len(agree)} of 5 shapes (" + ", ".join(agree) + "); " + " and ".join(differ) + ", causes not known. "
-            "Of the seven findings by that clock: " + ", ".join(f"{verdicts.count(v)} {v}" for v in findings.VERDICTS)
+            + protocol_summary() + "Of the seven findings by that clock: " + ", ".join(f"{verdicts.count(v)} {v}" for v in findings.VERDICTS)
             + ". In full: "
             "[docs/VALIDATION.md](docs/VALIDATION.md#does-wiggle-reproduce-the-paper).")
     return textwrap.wrap(text, 104, break_on_hyphens=False, break_long_words=False), spec["sources"]
@@ -1112,6 +1112,30 @@ def protocol_change(folders, keys, paired, shape, period, paper_sign, sig):
     return values, (diff, abs(z), toward)
 
 
+def protocol_summary():
+    """The protocol table so far in a sentence for the README ("" before any of its cells has a case)."""
+    sig = sigma(cells_with_beds(CLOCK_A5))
+    measured, toward = [], []
+    for _, short, folders, keys, paired in PROTOCOL_ROWS[1:]:
+        name = short.split(" (")[0]
+        for shape, period, paper_sign in PROTOCOL_CELLS:
+            values, change = protocol_change(folders, keys, paired, shape, period, paper_sign, sig)
+            if values:
+                measured.append((name, len(values)))
+                if change[2] != "within the scatter":
+                    toward.append(f"{name} moves the {shape} at T = {period:g} {change[2]} ({change[1]:.1f} se)")
+    if not measured:
+        return ""
+    names = list(dict.fromkeys(name for name, _ in measured))
+    counts = sorted({n for _, n in measured})
+    bed_text = f"{counts[0]} bed{'s' if counts[0] > 1 else ''}" if len(counts) == 1 else f"{counts[0]}-{counts[-1]} beds"
+    cells = len(PROTOCOL_CELLS) * (len(PROTOCOL_ROWS) - 1)
+    return (f"Of the preset's differences from the paper's stated protocol, measured so far by that clock on the "
+            f"square at T = 3 and the triangle at T = 5 ({', '.join(names)}: {len(measured)} of {cells} cells, "
+            f"{bed_text} each), " + ("; ".join(toward) if toward else f"none moves a cell by {RESOLVED:g} standard errors")
+            + ". ")
+
+
 def answer_protocol(spec):
     """The factor table: each row's V_y per cell, its change from the baseline in standard errors of
     the paper's clock (one bed's sigma there), and whether it moves the cell toward the paper's sign."""
@@ -1166,7 +1190,7 @@ TABLES += [
     {"name": "answer_findings", "kind": answer_findings, "sources": FINDING_SOURCES},
     {"name": "answer_differences", "kind": answer_differences, "sources": ANSWER_SOURCES},
     {"name": "answer_protocol", "kind": answer_protocol, "sources": PROTOCOL_FOLDERS + T1000_BEDS},
-    {"name": "readme_answer", "kind": readme_answer, "sources": CLOCK_A5, "bare": True},
+    {"name": "readme_answer", "kind": readme_answer, "sources": CLOCK_A5 + PROTOCOL_FOLDERS, "bare": True},
     {"name": "boundaries", "kind": boundary_table, "sources": [b[0] for b in BOUNDARIES]},
 ]
 
