@@ -1024,8 +1024,8 @@ def readme_answer(spec):
     verdicts = [findings.finding_verdict(*by_scale.get("paper's clock", (0.0, []))) for _, _, by_scale in paper_findings()]
     text = (f"Partly. By the paper's clock (t = 1000) at its depth, Table 1's T_rising is in the paper's range for "
             f"{len(agree)} of 5 shapes (" + ", ".join(agree) + "); " + " and ".join(differ) + ", causes not known. "
-            + protocol_summary() + "Of the seven findings by that clock: " + ", ".join(f"{verdicts.count(v)} {v}" for v in findings.VERDICTS)
-            + ". In full: "
+            + protocol_summary() + "Of the seven findings by that clock: "
+            + ", ".join(f"{verdicts.count(v)} {v}" for v in findings.VERDICTS) + ". In full: "
             "[docs/VALIDATION.md](docs/VALIDATION.md#does-wiggle-reproduce-the-paper).")
     return textwrap.wrap(text, 104, break_on_hyphens=False, break_long_words=False), spec["sources"]
 
@@ -1128,12 +1128,13 @@ def protocol_summary():
         return ""
     names = list(dict.fromkeys(name for name, _ in measured))
     counts = sorted({n for _, n in measured})
-    bed_text = f"{counts[0]} bed{'s' if counts[0] > 1 else ''}" if len(counts) == 1 else f"{counts[0]}-{counts[-1]} beds"
+    beds_each = f"{counts[0]}" if len(counts) == 1 else f"{counts[0]}-{counts[-1]}"
     cells = len(PROTOCOL_CELLS) * (len(PROTOCOL_ROWS) - 1)
-    return (f"Of the preset's differences from the paper's stated protocol, measured so far by that clock on the "
-            f"square at T = 3 and the triangle at T = 5 ({', '.join(names)}: {len(measured)} of {cells} cells, "
-            f"{bed_text} each), " + ("; ".join(toward) if toward else f"none moves a cell by {RESOLVED:g} standard errors")
-            + ". ")
+    on = " and ".join(f"the {shape} at T = {period:g}" for shape, period, _ in PROTOCOL_CELLS)
+    moved = "; ".join(toward) if toward else f"none moves a cell by {RESOLVED:g} standard errors"
+    return (f"Of the preset's differences from the paper's stated protocol, measured so far by that clock on {on} "
+            f"({', '.join(names)}: {len(measured)} of {cells} cells, {beds_each} bed{'s' if counts[-1] > 1 else ''} "
+            f"each), {moved}. ")
 
 
 def answer_protocol(spec):
@@ -1158,7 +1159,8 @@ def answer_protocol(spec):
               f"and the triangle rising at T = 5 (Table 1). A change is the row's mean minus the baseline's, in "
               f"standard errors se = sigma sqrt(1/n_row + 1/n_baseline), sigma = {sig:.3f} one bed's standard "
               f"deviation by the paper's clock; the mass's change is against the baseline's run on the same bed, "
-              f"with the same sigma, which its pairing is expected to make smaller (not measured); it moves the cell toward the paper's sign when >= {RESOLVED:g} se that way. "
+              f"with the same sigma, which its pairing is expected to make smaller (not measured); it moves the "
+              f"cell toward the paper's sign when >= {RESOLVED:g} se that way. "
               f"A case not finished yet is shown by the paper's rule over t = 100 to its last committed sample, beside "
               f"the baseline's over the same window, once that window spans {SO_FAR_FROM:g}: a rate so far, not judged)"]
     return lines, [f for f in PROTOCOL_FOLDERS + T1000_BEDS if os.path.exists(os.path.join(ROOT, f, "results.csv"))]
