@@ -73,6 +73,12 @@ std::vector<BedAtAGlance> unfinishedBeds(const std::string& dir) {
   return beds;
 }
 
+// "2 beds to make, about 5h10m by the sweep's plan"
+std::string bedsToMakeText(const SweepStatus& s) {
+  return std::to_string(s.bedsToMake) + " bed" + (s.bedsToMake > 1 ? "s" : "") + " to make, about " +
+         formatDuration(s.bedSeconds) + " by the sweep's plan";
+}
+
 }  // namespace
 
 SweepStatus readSweepStatus(const std::string& dir) {
@@ -207,16 +213,14 @@ std::string formatSweepStatus(const SweepStatus& s) {
   else if (running + pending == 0)
     out << "every case is done\n";
   else if (s.caseTime == SweepStatus::CaseTime::Unknown)
-    out << "time to go: unknown until a case has finished or a running one knows its pace\n";
+    out << "time to go: unknown until a case has finished or a running one knows its pace"
+        << (s.bedsToMake > 0 ? "; the " + bedsToMakeText(s) + " first" : "") << "\n";
   else
     out << "time to go: about " << formatDuration(s.etaSeconds) << " (estimate: "
         << (s.caseTime == SweepStatus::CaseTime::FinishedCases
                 ? "the finished cases' median wall time"
                 : "nothing has finished yet, so a case's wall time at the running cases' present pace")
-        << " x the cases left"
-        << (s.bedsToMake > 0 ? ", plus " + std::to_string(s.bedsToMake) + " bed" + (s.bedsToMake > 1 ? "s" : "") +
-                                   " to make, about " + formatDuration(s.bedSeconds) + " by the sweep's plan"
-                             : "")
+        << " x the cases left" << (s.bedsToMake > 0 ? ", plus the " + bedsToMakeText(s) : "")
         << ", over " << s.casesAtOnce << " job" << (s.casesAtOnce > 1 ? "s" : "")
         << (s.bedsCounted ? "" : "; beds still to make are not counted: the sweep's start did not record them")
         << ")\n";

@@ -180,7 +180,7 @@ TEST_F(SweepStatusTest, BedsStillToMakeCountInTheTimeToGo) {
   // The cases as in TimeToGoIsTheMedianFinishedWallTimesWhatIsLeftOverTheJobs, plus the beds, over 2 jobs.
   EXPECT_DOUBLE_EQ(s.etaSeconds, (300.0 * 2.75 + 400.0) / 2.0);
   const std::string text = formatSweepStatus(s);
-  EXPECT_NE(text.find("x the cases left, plus 2 beds to make, about 6m40s by the sweep's plan, over 2 jobs)"),
+  EXPECT_NE(text.find("x the cases left, plus the 2 beds to make, about 6m40s by the sweep's plan, over 2 jobs)"),
             std::string::npos)
       << text;
   // A sweep.json without the beds (an older wiggle's): they are not counted, and the status says so.
@@ -189,6 +189,14 @@ TEST_F(SweepStatusTest, BedsStillToMakeCountInTheTimeToGo) {
   EXPECT_FALSE(old.bedsCounted);
   EXPECT_DOUBLE_EQ(old.etaSeconds, 300.0 * 2.75 / 2.0);
   EXPECT_NE(formatSweepStatus(old).find("beds still to make are not counted"), std::string::npos);
+  // Before any case knows its pace, the beds' share is said on its own.
+  writeSweepStart(dir_.path().string(),
+                  SweepStart{"demo", 2, 2, std::vector<BedToMake>{{"k1", dir_ / "bed-k1.bin", 800.0}}});
+  writeFileAtomically(dir_ / "results.csv", "case,run_dir,status,vy,wall_s,error\ne,cases/e,pending,,,\n");
+  EXPECT_NE(formatSweepStatus(readSweepStatus(dir_.path().string()))
+                .find("time to go: unknown until a case has finished or a running one knows its pace; the 1 bed to "
+                      "make, about 6m40s by the sweep's plan first\n"),
+            std::string::npos);
 }
 
 TEST_F(SweepStatusTest, WithNothingFinishedTheTimeToGoIsUnknown) {
