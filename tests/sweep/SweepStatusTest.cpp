@@ -50,7 +50,7 @@ class SweepStatusTest : public ::testing::Test {
     ok.warnings = {"short window"};
     writeFileAtomically(dir_ / "cases/b/summary.json", toJson(ok).dump());
     writeRunProgress(dir_ / "cases/d", RunProgress{RunPhase::Running, "running", 0.25, 25.0, 100.0, 60.0});
-    writeSweepStart(dir_.path().string(), SweepStart{"demo", 2, 1});
+    writeSweepStart(dir_.path().string(), SweepStart{"demo", 2, 1, {}});
   }
   ScratchDir dir_{"sweep-status"};
 };
@@ -93,7 +93,7 @@ TEST_F(SweepStatusTest, TimeToGoIsTheMedianFinishedWallTimesWhatIsLeftOverTheJob
 // Slurm array tasks: they share the directory's lock and write results.csv only when their case
 // ends, so a case runs when its run holds its own directory's lock, whatever the table says.
 TEST_F(SweepStatusTest, ArrayTasksCasesRunWhereTheirRunsHoldTheirDirectories) {
-  writeSweepStart(dir_.path().string(), SweepStart{"demo", 0, 1});  // jobs unknown: tasks say none
+  writeSweepStart(dir_.path().string(), SweepStart{"demo", 0, 1, {}});  // jobs unknown: tasks say none
   writeRunProgress(dir_ / "cases/e", RunProgress{RunPhase::Running, "running", 0.5, 50.0, 100.0, 60.0});
   const FileLock tasks(sweepLockPath(dir_.path().string()), /*shared=*/true, false, "");
   const FileLock e(runLockPath(dir_ / "cases/e"), false, false, ""), f(runLockPath(dir_ / "cases/f"), false, false, "");
@@ -184,7 +184,7 @@ TEST_F(SweepStatusTest, BedsStillToMakeCountInTheTimeToGo) {
             std::string::npos)
       << text;
   // A sweep.json without the beds (an older wiggle's): they are not counted, and the status says so.
-  writeSweepStart(dir_.path().string(), SweepStart{"demo", 2, 1});
+  writeSweepStart(dir_.path().string(), SweepStart{"demo", 2, 1, {}});
   const SweepStatus old = readSweepStatus(dir_.path().string());
   EXPECT_FALSE(old.bedsCounted);
   EXPECT_DOUBLE_EQ(old.etaSeconds, 300.0 * 2.75 / 2.0);
