@@ -109,15 +109,25 @@ class Case:
         return [float(r["phase_center"]) for r in rows], [float(r["vy_mean"]) for r in rows]
 
 
-@functools.lru_cache(maxsize=None)
-def load(source):
-    """The finished cases of a results folder (or of a results.csv file) under ROOT."""
+def cases_of(source, finished):
+    """The finished cases of a results folder (or of a results.csv file) under ROOT, or the others."""
     path = os.path.join(ROOT, source)
     csv_path = path if path.endswith(".csv") else os.path.join(path, "results.csv")
     with open(csv_path, newline="") as f:
-        rows = [r for r in csv.DictReader(f) if r["status"] == "ok"]
+        rows = [r for r in csv.DictReader(f) if (r["status"] == "ok") == finished]
     folder = None if path.endswith(".csv") else path
     return tuple(Case(source, r, os.path.join(folder, r["run_dir"]) if folder else None) for r in rows)
+
+
+@functools.lru_cache(maxsize=None)
+def load(source):
+    """The finished cases of a results folder (or of a results.csv file) under ROOT."""
+    return cases_of(source, finished=True)
+
+
+def committed(folders):
+    """Those of the results folders whose results.csv is committed so far."""
+    return [f for f in folders if os.path.exists(os.path.join(ROOT, f, "results.csv"))]
 
 
 # ---- values of a case, besides the results.csv columns
@@ -1056,7 +1066,7 @@ PROTOCOL_CELLS = [("square", 3.0, -1), ("triangle", 5.0, +1)]   # shape, T, the 
 
 def protocol_beds(folders, where):
     """{seed: V_y} of a protocol row's cell (only the folders committed so far)."""
-    present = [f for f in folders if os.path.exists(os.path.join(ROOT, f, "results.csv"))]
+    present = committed(folders)
     return {c.get("box.seed"): float(c.get("vy")) for c in beds(select(present, where), f"{present} {where}")}
 
 
@@ -1068,10 +1078,7 @@ def protocol_cell(shape, period):
 def unfinished(source):
     """The cases of a results folder that have not finished but whose trajectory so far is committed
     (a long case carried from session to session with its checkpoint)."""
-    path = os.path.join(ROOT, source)
-    with open(os.path.join(path, "results.csv"), newline="") as f:
-        cases = [Case(source, r, os.path.join(path, r["run_dir"])) for r in csv.DictReader(f) if r["status"] != "ok"]
-    return [c for c in cases if os.path.exists(os.path.join(c.dir, "trajectory.csv"))]
+    return [c for c in cases_of(source, finished=False) if os.path.exists(os.path.join(c.dir, "trajectory.csv"))]
 
 
 SO_FAR_FROM = 200.0   # an unfinished case is shown once its window t = 100-t_now spans this much
@@ -1082,7 +1089,7 @@ def protocol_so_far_cell(folders, keys, shape, period):
     t = 100 to its last committed sample, beside the baseline's over the same window; "" when none."""
     case = protocol_cell(shape, period)
     where = dict(PRESET_PROTOCOL, **keys, **case)
-    present = [f for f in folders if os.path.exists(os.path.join(ROOT, f, "results.csv"))]
+    present = committed(folders)
     on_way = [c for f in present for c in unfinished(f) if all(c.get(k) == v for k, v in where.items())]
     parts = []
     for c in on_way:
@@ -1163,7 +1170,7 @@ def answer_protocol(spec):
               f"cell toward the paper's sign when >= {RESOLVED:g} se that way. "
               f"A case not finished yet is shown by the paper's rule over t = 100 to its last committed sample, beside "
               f"the baseline's over the same window, once that window spans {SO_FAR_FROM:g}: a rate so far, not judged)"]
-    return lines, [f for f in PROTOCOL_FOLDERS + T1000_BEDS if os.path.exists(os.path.join(ROOT, f, "results.csv"))]
+    return lines, committed(PROTOCOL_FOLDERS + T1000_BEDS)
 
 
 def protocol_so_far(shape, period):
