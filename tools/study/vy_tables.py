@@ -1166,7 +1166,8 @@ def answer_protocol(spec):
               f"and the triangle rising at T = 5 (Table 1). A change is the row's mean minus the baseline's, in "
               f"standard errors se = sigma sqrt(1/n_row + 1/n_baseline), sigma = {sig:.3f} one bed's standard "
               f"deviation by the paper's clock; the mass's change is against the baseline's run on the same bed, "
-              f"with the same sigma, which its pairing is expected to make smaller (not measured); it moves the "
+              f"with the same sigma, which its pairing is expected to make smaller (not measured); the 300 d box's "
+              f"sigma is taken as the 60 d box's (one bed each there: not measured); a change moves the "
               f"cell toward the paper's sign when >= {RESOLVED:g} se that way. "
               f"A case not finished yet is shown by the paper's rule over t = 100 to its last committed sample, beside "
               f"the baseline's over the same window, once that window spans {SO_FAR_FROM:g}: a rate so far, not judged)"]
