@@ -343,7 +343,9 @@ def windows(spec):
     each cell the chord V_y over that window, on every bed of the row."""
     grid = {}
     for c in select(spec["sources"], spec.get("where", {})):
-        grid.setdefault(key_of(c, spec["row"]), []).append(c)
+        r = key_of(c, spec["row"])
+        if r is not None:   # None: a case of the sources that is none of the table's rows
+            grid.setdefault(r, []).append(c)
     head = spec["row_head"] + [f"t = {t0:g}-{t1:g}" for t0, t1 in spec["windows"]]
     lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
     for r in sorted(grid, key=spec["row_sort"]):
@@ -424,6 +426,7 @@ def protocol(c):
 
 # Table 1 by the paper's clock: bed 1 (paper_depth_t1000.toml) and the second beds (paper_depth_t1000_bed2.toml)
 T1000_BEDS = ["results/paper_depth/table1_t1000", "results/paper_depth/table1_t1000_bed2"]
+T1000_WINDOWS = [(100, 400), (400, 700), (700, 1000), (100, 1000)]   # the paper's window in thirds, and whole
 # At the paper's depth, t = 100: Table 1 (A = 5) and figure 5 (A = 3), each on beds 1 and 2
 DEPTH_A5 = ["results/paper_depth/table1", "results/paper_depth/table1_bed2"]
 DEPTH_A3 = ["results/paper_depth/fig5", "results/paper_depth/fig5_bed2", "results/paper_depth/fast_corner"]
@@ -563,7 +566,7 @@ TABLES = [
     {"name": "depth_t1000_windows", "kind": windows, "sources": T1000_BEDS, "where": {"drive.amplitude": 5.0},
      "row": lambda c: (c.get("intruder.shape"), c.get("drive.period")),
      "row_sort": lambda r: (SHAPES.index(r[0]), r[1]), "row_head": ["shape", "T"],
-     "row_label": lambda r: (r[0], f"{r[1]:g}"), "windows": [(100, 400), (400, 700), (700, 1000), (100, 1000)]},
+     "row_label": lambda r: (r[0], f"{r[1]:g}"), "windows": T1000_WINDOWS},
     # Figure 6 at the paper's depth (paper_depth_friction.toml): the disk and the square at A = 3, each bed
     # poured at mu = 0.1 and run at four mu; the rates, then their changes bed by bed (paired)
     {"name": "depth_friction", "kind": pivot, "sources": DEPTH_FRICTION,
@@ -1119,6 +1122,18 @@ def protocol_change(folders, keys, paired, shape, period, paper_sign, sig):
     return values, (diff, abs(z), toward)
 
 
+def protocol_row(case):
+    """(shape, T, the index of its PROTOCOL_ROWS row) of a case of one of the protocol block's cells,
+    None for any other case of its folders."""
+    cell = (case.get("intruder.shape"), case.get("drive.period"))
+    if cell not in [(s, t) for s, t, _ in PROTOCOL_CELLS]:
+        return None
+    for i, (_, _, folders, keys, _) in enumerate(PROTOCOL_ROWS):
+        if case.source in folders and all(case.get(k) == v for k, v in dict(PRESET_PROTOCOL, **keys).items()):
+            return cell + (i,)
+    return None
+
+
 def protocol_summary():
     """The protocol table so far in a sentence for the README ("" before any of its cells has a case)."""
     sig = sigma(cells_with_beds(CLOCK_A5))
@@ -1202,6 +1217,12 @@ TABLES += [
     {"name": "answer_protocol", "kind": answer_protocol, "sources": PROTOCOL_FOLDERS + T1000_BEDS},
     {"name": "readme_answer", "kind": readme_answer, "sources": CLOCK_A5 + PROTOCOL_FOLDERS, "bare": True},
     {"name": "boundaries", "kind": boundary_table, "sources": [b[0] for b in BOUNDARIES]},
+    # The protocol block's cases in the thirds of the paper's window, as depth_t1000_windows the preset's
+    {"name": "protocol_windows", "kind": windows, "sources": T1000_BEDS + PROTOCOL_FOLDERS,
+     "where": {"drive.amplitude": 5.0}, "row": protocol_row,
+     "row_sort": lambda r: ([(s, t) for s, t, _ in PROTOCOL_CELLS].index(r[:2]), r[2]),
+     "row_head": ["shape", "T", "what changes"],
+     "row_label": lambda r: (r[0], f"{r[1]:g}", PROTOCOL_ROWS[r[2]][1]), "windows": T1000_WINDOWS},
 ]
 
 DOCUMENTS = ["docs/VALIDATION.md", "docs/FINDINGS.md", "docs/PERFORMANCE.md", "README.md",
