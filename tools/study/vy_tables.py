@@ -1065,6 +1065,7 @@ PROTOCOL_ROWS = [
      PAPER_PROTOCOL, False),
 ]
 PROTOCOL_CELLS = [("square", 3.0, -1), ("triangle", 5.0, +1)]   # shape, T, the paper's sign of V_y there
+PROTOCOL_CELL_KEYS = [(shape, period) for shape, period, _ in PROTOCOL_CELLS]
 
 
 def protocol_beds(folders, where):
@@ -1126,7 +1127,7 @@ def protocol_row(case):
     """(shape, T, the index of its PROTOCOL_ROWS row) of a case of one of the protocol block's cells,
     None for any other case of its folders."""
     cell = (case.get("intruder.shape"), case.get("drive.period"))
-    if cell not in [(s, t) for s, t, _ in PROTOCOL_CELLS]:
+    if cell not in PROTOCOL_CELL_KEYS:
         return None
     for i, (_, _, folders, keys, _) in enumerate(PROTOCOL_ROWS):
         if case.source in folders and all(case.get(k) == v for k, v in dict(PRESET_PROTOCOL, **keys).items()):
@@ -1182,7 +1183,7 @@ def answer_protocol(spec):
               f"standard errors se = sigma sqrt(1/n_row + 1/n_baseline), sigma = {sig:.3f} one bed's standard "
               f"deviation by the paper's clock; the mass's change is against the baseline's run on the same bed, "
               f"with the same sigma, which its pairing is expected to make smaller (not measured); the 300 d box's "
-              f"sigma is taken as the 60 d box's (one bed each there: not measured); a change moves the "
+              f"sigma is taken as the 60 d box's (one bed per cell there, so not measured); a change moves the "
               f"cell toward the paper's sign when >= {RESOLVED:g} se that way. "
               f"A case not finished yet is shown by the paper's rule over t = 100 to its last committed sample, beside "
               f"the baseline's over the same window, once that window spans {SO_FAR_FROM:g}: a rate so far, not judged)"]
@@ -1220,7 +1221,7 @@ TABLES += [
     # The protocol block's cases in the thirds of the paper's window, as depth_t1000_windows the preset's
     {"name": "protocol_windows", "kind": windows, "sources": T1000_BEDS + PROTOCOL_FOLDERS,
      "where": {"drive.amplitude": 5.0}, "row": protocol_row,
-     "row_sort": lambda r: ([(s, t) for s, t, _ in PROTOCOL_CELLS].index(r[:2]), r[2]),
+     "row_sort": lambda r: (PROTOCOL_CELL_KEYS.index(r[:2]), r[2]),
      "row_head": ["shape", "T", "what changes"],
      "row_label": lambda r: (r[0], f"{r[1]:g}", PROTOCOL_ROWS[r[2]][1]), "windows": T1000_WINDOWS},
 ]
