@@ -1037,7 +1037,7 @@ def readme_answer(spec):
     verdicts = [findings.finding_verdict(*by_scale.get("paper's clock", (0.0, []))) for _, _, by_scale in paper_findings()]
     text = (f"Partly. By the paper's clock (t = 1000) at its depth, Table 1's T_rising is in the paper's range for "
             f"{len(agree)} of 5 shapes (" + ", ".join(agree) + "); " + " and ".join(differ) + ", causes not known. "
-            + protocol_summary() + "Of the seven findings by that clock: "
+            + protocol_summary() + paper_box_summary() + "Of the seven findings by that clock: "
             + ", ".join(f"{verdicts.count(v)} {v}" for v in findings.VERDICTS) + ". In full: "
             "[docs/VALIDATION.md](docs/VALIDATION.md#does-wiggle-reproduce-the-paper).")
     return textwrap.wrap(text, 104, break_on_hyphens=False, break_long_words=False), spec["sources"]
@@ -1133,6 +1133,24 @@ def protocol_row(case):
         if case.source in folders and all(case.get(k) == v for k, v in dict(PRESET_PROTOCOL, **keys).items()):
             return cell + (i,)
     return None
+
+
+def paper_box_summary():
+    """What the paper's protocol in its own box gives so far, cell by cell, against the paper's sign, in a
+    sentence for the README ("" before any of its cases has finished)."""
+    sig = sigma(cells_with_beds(CLOCK_A5))
+    _, short, folders, keys, _ = PROTOCOL_ROWS[-1]
+    parts = []
+    for shape, period, paper_sign in PROTOCOL_CELLS:
+        values = list(protocol_beds(folders, dict(PRESET_PROTOCOL, **keys, **protocol_cell(shape, period))).values())
+        if not values:
+            continue
+        z = findings.z_from_zero(values, sig)
+        sign = +1 if z >= RESOLVED else -1 if z <= -RESOLVED else 0
+        said = {+1: "rising", -1: "sinking", 0: "level within the scatter"}
+        paper = "as the paper" if sign == paper_sign else f"where the paper has it {said[paper_sign]}"
+        parts.append(f"the {shape} at T = {period:g} {said[sign]}, {beds_text(values)}, {paper}")
+    return (short[0].upper() + short[1:] + " leaves " + "; ".join(parts) + ". ") if parts else ""
 
 
 def protocol_summary():
