@@ -69,13 +69,18 @@ def compare(label, a, b, direction):
     return Comparison(label, list(a), list(b) if b is not None else [], direction)
 
 
+def resolved_side(z):
+    """+1 when z standard errors are at least RESOLVED above zero, -1 at least RESOLVED below, else 0."""
+    return +1 if z >= RESOLVED else -1 if z <= -RESOLVED else 0
+
+
 def judged(comparison, sig):
     """(difference a - b, standard errors in the paper's direction, 'for' / 'against' / 'within')."""
     _, a, b, direction = comparison
     diff = mean(a) - (mean(b) if b else 0.0)
     se = math.sqrt(side_sigma(a, sig) ** 2 / len(a) + (side_sigma(b, sig) ** 2 / len(b) if b else 0.0))
     z = round(direction * diff / se, 1)   # judged as printed, to 0.1
-    return diff, z, "for" if z >= RESOLVED else "against" if z <= -RESOLVED else "within"
+    return diff, z, {+1: "for", -1: "against", 0: "within"}[resolved_side(z)]
 
 
 def z_from_zero(values, sig):

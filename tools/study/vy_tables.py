@@ -1119,7 +1119,7 @@ def protocol_change(folders, keys, paired, shape, period, paper_sign, sig):
     baseline = protocol_beds(T1000_BEDS, dict(PRESET_PROTOCOL, **case))
     base = [v for seed, v in baseline.items() if seed in row] if paired else list(baseline.values())
     diff, z, _ = findings.judged(findings.Comparison(shape, values, base, paper_sign), sig)
-    toward = "toward the paper" if z >= RESOLVED else "away from the paper" if z <= -RESOLVED else "within the scatter"
+    toward = {+1: "toward the paper", -1: "away from the paper", 0: "within the scatter"}[findings.resolved_side(z)]
     return values, (diff, abs(z), toward)
 
 
@@ -1142,11 +1142,10 @@ def paper_box_summary():
     _, short, folders, keys, _ = PROTOCOL_ROWS[-1]
     parts = []
     for shape, period, paper_sign in PROTOCOL_CELLS:
-        values = list(protocol_beds(folders, dict(PRESET_PROTOCOL, **keys, **protocol_cell(shape, period))).values())
+        values, _ = protocol_change(folders, keys, False, shape, period, paper_sign, sig)
         if not values:
             continue
-        z = findings.z_from_zero(values, sig)
-        sign = +1 if z >= RESOLVED else -1 if z <= -RESOLVED else 0
+        sign = findings.resolved_side(findings.z_from_zero(values, sig))
         said = {+1: "rising", -1: "sinking", 0: "level within the scatter"}
         paper = "as the paper" if sign == paper_sign else f"where the paper has it {said[paper_sign]}"
         parts.append(f"the {shape} at T = {period:g} {said[sign]}, {beds_text(values)}, {paper}")
