@@ -77,6 +77,27 @@ def _panel_grid(n, width=style.FULL_WIDTH, height=2.2):
     return fig, axes.flat[:n]
 
 
+def _colour_per_line(panels, cmap="viridis"):
+    """One colour per line key (an amplitude, a period) over every panel, in ascending order."""
+    keys = sorted({k for lines in panels.values() for k in lines})
+    return dict(zip(keys, style.series_colours(len(keys), cmap)))
+
+
+def _legend_above(fig, items, most_columns):
+    """One legend above the panels from (handle, label) pairs: each label once, as first drawn."""
+    handles, labels = [], []
+    for h, lab in items:
+        if lab not in labels:
+            handles.append(h)
+            labels.append(lab)
+    fig.legend(handles, labels, loc="lower center", ncol=min(len(labels), most_columns), bbox_to_anchor=(0.5, 1.0))
+
+
+def _axes_legend_items(axes):
+    """The (handle, label) pairs the axes drew, panel by panel."""
+    return [item for ax in axes for item in zip(*ax.get_legend_handles_labels())]
+
+
 def _draw_model(ax, model, label=True):
     """The cavity model's V_y(T) over the panel's periods, on an axis of its own (right) with its
     zero level with the data's: the model's rates reach ten times the measured ones, and on the
@@ -142,16 +163,8 @@ def curves_by(sweep, rows, line_key):
 
 def _plot_rate_curves(sweep, curves, line_key, line_label, name, title_extra, formats, out_dir):
     fig, axes = _panel_grid(len(curves))
-    values = sorted({k for c in curves.values() for k in c})
-    colours = dict(zip(values, style.series_colours(len(values))))
-    handles, labels = [], []
-
-    def add_to_legend(items):
-        for h, lab in zip(*items):
-            if lab not in labels:
-                handles.append(h)
-                labels.append(lab)
-
+    colours = _colour_per_line(curves)
+    legend = []
     for ax, (panel, lines) in zip(axes, curves.items()):
         xs, ys = [], []
         for value, (T, vy, std, n) in lines.items():
@@ -164,12 +177,11 @@ def _plot_rate_curves(sweep, curves, line_key, line_label, name, title_extra, fo
         ax.set_title(panel + title_extra)
         ax.set_xlabel(style.PERIOD_LABEL)
         ax.set_ylabel(style.VY_LABEL)
-        add_to_legend(ax.get_legend_handles_labels())
+        legend += _axes_legend_items([ax])
         model = _draw_model(ax, sweep.model(panel))
         if model is not None:
-            add_to_legend(([model], [model.get_label()]))
-    fig.legend(handles, labels, loc="lower center", ncol=min(len(labels), 6),
-               bbox_to_anchor=(0.5, 1.0))
+            legend.append((model, model.get_label()))
+    _legend_above(fig, legend, most_columns=6)
     fig.tight_layout()
     sweep.report.wrote(style.save(fig, out_dir, name, formats))
 
@@ -426,8 +438,7 @@ def plot_sweep_trajectories(sweep, out_dir, formats):
         sweep.report.note("no trajectory.csv in the run directories: y(t) per T skipped")
         return
     fig, axes = _panel_grid(len(panels))
-    periods = sorted({T for p in panels.values() for T in p})
-    colours = dict(zip(periods, style.series_colours(len(periods), "plasma")))
+    colours = _colour_per_line(panels, "plasma")
     for ax, (panel, lines) in zip(axes, panels.items()):
         for T, (t, dy, settled) in lines.items():
             ax.plot(t, dy, color=colours[T], lw=0.9, label=f"$T$ = {T:g}")
@@ -436,13 +447,7 @@ def plot_sweep_trajectories(sweep, out_dir, formats):
         ax.set_title(rf"{panel} ($A$ = {amplitude:g})")
         ax.set_xlabel(style.T_LABEL)
         ax.set_ylabel(style.DY_LABEL)
-    handles, labels = [], []
-    for ax in axes:
-        for h, lab in zip(*ax.get_legend_handles_labels()):
-            if lab not in labels:
-                handles.append(h)
-                labels.append(lab)
-    fig.legend(handles, labels, loc="lower center", ncol=min(len(labels), 8), bbox_to_anchor=(0.5, 1.0))
+    _legend_above(fig, _axes_legend_items(axes), most_columns=8)
     fig.tight_layout()
     sweep.report.wrote(style.save(fig, out_dir, "trajectories", formats))
 
@@ -490,8 +495,7 @@ def plot_sweep_phase_rates(sweep, out_dir, formats):
         sweep.report.note("no phase_rates.csv in the run directories: phase-rate figure skipped")
         return
     fig, axes = _panel_grid(len(panels))
-    periods = sorted({T for p in panels.values() for T in p})
-    colours = dict(zip(periods, style.series_colours(len(periods), "plasma")))
+    colours = _colour_per_line(panels, "plasma")
     for ax, (panel, lines) in zip(axes, panels.items()):
         for T, (c, v) in lines.items():
             ax.plot(c, v, "-o", ms=2.5, color=colours[T], lw=0.9, label=f"$T$ = {T:g}")
@@ -501,13 +505,7 @@ def plot_sweep_phase_rates(sweep, out_dir, formats):
         ax.set_title(rf"{panel} ($A$ = {amplitude:g})")
         ax.set_xlabel(style.PHASE_LABEL)
         ax.set_ylabel(r"mean $v_y$ [$\sqrt{g d}$]")
-    handles, labels = [], []
-    for ax in axes:
-        for h, lab in zip(*ax.get_legend_handles_labels()):
-            if lab not in labels:
-                handles.append(h)
-                labels.append(lab)
-    fig.legend(handles, labels, loc="lower center", ncol=min(len(labels), 8), bbox_to_anchor=(0.5, 1.0))
+    _legend_above(fig, _axes_legend_items(axes), most_columns=8)
     fig.tight_layout()
     sweep.report.wrote(style.save(fig, out_dir, "phase_rates", formats))
 
