@@ -412,6 +412,21 @@ def _per_period_cases(sweep, panel, rows, amplitude):
     return dict(sorted(out.items()))
 
 
+def _lines_per_panel(sweep, rows, amplitude, line_of_cases):
+    """{panel: {T: line}} at one amplitude: line_of_cases(row indices of one panel's period) gives
+    the period's line, or None to leave it out; a panel with no line is left out."""
+    panels = {}
+    for panel in sweep.panels:
+        lines = {}
+        for T, idx in _per_period_cases(sweep, panel, rows, amplitude).items():
+            line = line_of_cases(idx)
+            if line is not None:
+                lines[T] = line
+        if lines:
+            panels[panel] = lines
+    return panels
+
+
 def plot_sweep_trajectories(sweep, out_dir, formats):
     """Paper fig. 2: y(t) - y(0) per period at one amplitude, one panel per shape (the first seed
     of each point is drawn: trajectories of different beds are not averaged), with a square at
@@ -420,20 +435,18 @@ def plot_sweep_trajectories(sweep, out_dir, formats):
     if not rows.any():
         return
     amplitude = _reference_amplitude(sweep, rows)
-    panels = {}
-    for panel in sweep.panels:
-        lines = {}
-        for T, idx in _per_period_cases(sweep, panel, rows, amplitude).items():
-            for i in idx:
-                try:
-                    trajectory = readers.read_trajectory(sweep.run_dir(i))
-                    summary = readers.read_summary(sweep.run_dir(i))
-                    lines[T] = prepare.displacement(trajectory) + (prepare.settled_point(summary, trajectory),)
-                    break
-                except (OSError, readers.FormatError, ValueError):
-                    continue
-        if lines:
-            panels[panel] = lines
+
+    def first_readable_trajectory(idx):
+        for i in idx:
+            try:
+                trajectory = readers.read_trajectory(sweep.run_dir(i))
+                summary = readers.read_summary(sweep.run_dir(i))
+                return prepare.displacement(trajectory) + (prepare.settled_point(summary, trajectory),)
+            except (OSError, readers.FormatError, ValueError):
+                continue
+        return None
+
+    panels = _lines_per_panel(sweep, rows, amplitude, first_readable_trajectory)
     if not panels:
         sweep.report.note("no trajectory.csv in the run directories: y(t) per T skipped")
         return
@@ -482,15 +495,8 @@ def plot_sweep_phase_rates(sweep, out_dir, formats):
     if not rows.any():
         return
     amplitude = _reference_amplitude(sweep, rows)
-    panels = {}
-    for panel in sweep.panels:
-        lines = {}
-        for T, idx in _per_period_cases(sweep, panel, rows, amplitude).items():
-            pooled = pooled_phase_rates([sweep.run_dir(i) for i in idx])
-            if pooled is not None:
-                lines[T] = pooled
-        if lines:
-            panels[panel] = lines
+    panels = _lines_per_panel(sweep, rows, amplitude,
+                              lambda idx: pooled_phase_rates([sweep.run_dir(i) for i in idx]))
     if not panels:
         sweep.report.note("no phase_rates.csv in the run directories: phase-rate figure skipped")
         return
