@@ -57,8 +57,8 @@ $MPIRUN "$W" sweep "$WORK/sweep.toml" --out "$OUT" > "$WORK/mpi1.out" 2>&1 &
 LAUNCHER=$!
 # Either worker rank may make the bed and either may draw the three good cases (the failing ones end
 # at once), so the victim is whichever rank first runs a good case past its first checkpoint. The
-# wait is by the clock, not by a count of polls: on a loaded 2-core machine the three ranks share
-# two cores and the bed alone can take most of a minute.
+# wait is by the clock, not by a count of polls: the three ranks share two cores with whatever else
+# runs, so how long the bed and the cases take depends on the machine's load.
 victim="" ; case_name="" ; rank=""
 deadline=$((SECONDS + 240))
 while [ $SECONDS -lt $deadline ]; do
