@@ -76,10 +76,11 @@ while [ $SECONDS -lt $deadline ]; do
   sleep 0.05
 done
 if [ -z "$victim" ]; then
+  kill -0 "$LAUNCHER" 2>/dev/null && why="within 240 s" || why="before mpirun exited"
   kill "$LAUNCHER" 2>/dev/null
   echo "--- $OUT/sweep.log:" >&2; cat "$OUT/sweep.log" >&2 2>/dev/null
   echo "--- mpirun's output ($WORK/mpi1.out):" >&2; tail -n 30 "$WORK/mpi1.out" >&2
-  fail "no worker rank ran a case past its first checkpoint within 240 s (sweep log and mpirun output above)"
+  fail "no worker rank ran a case past its first checkpoint $why (sweep log and mpirun output above)"
 fi
 echo "mpi_test:    killing rank $rank (pid $victim) while it runs $case_name"
 kill -9 "$victim"
