@@ -1065,6 +1065,10 @@ PROTOCOL_ROWS = [
      PAPER_PROTOCOL, False),
 ]
 PROTOCOL_CELLS = [("square", 3.0, -1), ("triangle", 5.0, +1)]   # shape, T, the paper's sign of V_y there
+# The box's width alone: the last row (the paper's protocol in its 300 d box) against the row before
+# it (the same protocol in the 60 d box), said beside the last row's change from the preset.
+BOX_ROW, BOX_AGAINST = len(PROTOCOL_ROWS) - 1, len(PROTOCOL_ROWS) - 2
+BOX_ALONE = "the 300 d box alone (against the paper's protocol in the 60 d box)"
 PROTOCOL_CELL_KEYS = [(shape, period) for shape, period, _ in PROTOCOL_CELLS]
 
 
@@ -1107,17 +1111,22 @@ def protocol_so_far_cell(folders, keys, shape, period):
     return "; ".join(parts)
 
 
-def protocol_change(folders, keys, paired, shape, period, paper_sign, sig):
-    """One protocol row's cell: (its V_y values, or [] when none is committed; the change from the
-    baseline, its size in standard errors and which way it moves the cell), the change None for the
-    baseline's own row."""
-    case = protocol_cell(shape, period)
-    row = protocol_beds(folders, dict(PRESET_PROTOCOL, **keys, **case))
-    values = list(row.values())
-    if not values or not keys:
+def protocol_change(row, shape, period, paper_sign, sig, against=0):
+    """One cell of PROTOCOL_ROWS[row]: (its V_y values, or [] when none is committed; the change from
+    row `against` (the baseline unless said), its size in standard errors and which way it moves the
+    cell), the change None for the compared row itself or while that row has no values."""
+    def row_beds(i):
+        _, _, folders, keys, _ = PROTOCOL_ROWS[i]
+        return protocol_beds(folders, dict(PRESET_PROTOCOL, **keys, **protocol_cell(shape, period)))
+    beds_of_row = row_beds(row)
+    values = list(beds_of_row.values())
+    if not values or row == against:
         return values, None
-    baseline = protocol_beds(T1000_BEDS, dict(PRESET_PROTOCOL, **case))
-    base = [v for seed, v in baseline.items() if seed in row] if paired else list(baseline.values())
+    compared = row_beds(against)
+    paired = PROTOCOL_ROWS[row][4]
+    base = [v for seed, v in compared.items() if seed in beds_of_row] if paired else list(compared.values())
+    if not base:
+        return values, None
     diff, z, _ = findings.judged(findings.Comparison(shape, values, base, paper_sign), sig)
     toward = {+1: "toward the paper", -1: "away from the paper", 0: "within the scatter"}[findings.resolved_side(z)]
     return values, (diff, abs(z), toward)
@@ -1135,14 +1144,24 @@ def protocol_row(case):
     return None
 
 
+def box_alone_change(shape, period, paper_sign, sig):
+    """BOX_ALONE's change in one cell, as protocol_change gives it; None while either row has no value."""
+    return protocol_change(BOX_ROW, shape, period, paper_sign, sig, against=BOX_AGAINST)[1]
+
+
+def change_text(change):
+    diff, z, toward = change
+    return f"{diff:+.4f} ({z:.1f} se, {toward})"
+
+
 def paper_box_summary():
     """What the paper's protocol in its own box gives so far, cell by cell, against the paper's sign, in a
     sentence for the README ("" before any of its cases has finished)."""
     sig = sigma(cells_with_beds(CLOCK_A5))
-    _, short, folders, keys, _ = PROTOCOL_ROWS[-1]
+    short = PROTOCOL_ROWS[BOX_ROW][1]
     parts = []
     for shape, period, paper_sign in PROTOCOL_CELLS:
-        values, _ = protocol_change(folders, keys, False, shape, period, paper_sign, sig)
+        values, _ = protocol_change(BOX_ROW, shape, period, paper_sign, sig)
         if not values:
             continue
         sign = findings.resolved_side(findings.z_from_zero(values, sig))
@@ -1156,14 +1175,17 @@ def protocol_summary():
     """The protocol table so far in a sentence for the README ("" before any of its cells has a case)."""
     sig = sigma(cells_with_beds(CLOCK_A5))
     measured, toward = [], []
-    for _, short, folders, keys, paired in PROTOCOL_ROWS[1:]:
-        name = short.split(" (")[0]
+    for row in range(1, len(PROTOCOL_ROWS)):
+        name = PROTOCOL_ROWS[row][1].split(" (")[0]
         for shape, period, paper_sign in PROTOCOL_CELLS:
-            values, change = protocol_change(folders, keys, paired, shape, period, paper_sign, sig)
+            values, change = protocol_change(row, shape, period, paper_sign, sig)
             if values:
                 measured.append((name, len(values)))
-                if change[2] != "within the scatter":
-                    toward.append(f"{name} moves the {shape} at T = {period:g} {change[2]} ({change[1]:.1f} se)")
+                said = [(name, change)]
+                if row == BOX_ROW:
+                    said.append((BOX_ALONE.split(" (")[0], box_alone_change(shape, period, paper_sign, sig)))
+                toward += [f"{who} moves the {shape} at T = {period:g} {c[2]} ({c[1]:.1f} se)"
+                           for who, c in said if c and c[2] != "within the scatter"]
     if not measured:
         return ""
     names = list(dict.fromkeys(name for name, _ in measured))
@@ -1183,24 +1205,26 @@ def answer_protocol(spec):
     sig = sigma(cells_with_beds(CLOCK_A5))
     head = "| what changes | " + " | ".join(f"{s}, A = 5, T = {t:g}: V_y; change (se)" for s, t, _ in PROTOCOL_CELLS) + " |"
     lines = [head, "|---|" + "---|" * len(PROTOCOL_CELLS)]
-    for label, _, folders, keys, paired in PROTOCOL_ROWS:
+    for row, (label, _, folders, keys, _) in enumerate(PROTOCOL_ROWS):
         cells = []
         for shape, period, paper_sign in PROTOCOL_CELLS:
-            values, change = protocol_change(folders, keys, paired, shape, period, paper_sign, sig)
+            values, change = protocol_change(row, shape, period, paper_sign, sig)
+            box = box_alone_change(shape, period, paper_sign, sig) if row == BOX_ROW else None
             if not values:
                 cells.append(protocol_so_far_cell(folders, keys, shape, period) or "not run yet")
             elif change is None:
                 cells.append(cell_text(values))
             else:
-                diff, z, toward = change
-                cells.append(f"{cell_text(values)}; {diff:+.4f} ({z:.1f} se, {toward})")
+                cells.append(f"{cell_text(values)}; {change_text(change)}"
+                             + (f"; the box alone: {change_text(box)}" if box else ""))
         lines.append(f"| {label} | " + " | ".join(cells) + " |")
     lines += ["", f"(V_y over t = 100-1000 of runs to t = 1000, A = 5 d. The paper has the square sinking at T = 3 "
               f"and the triangle rising at T = 5 (Table 1). A change is the row's mean minus the baseline's, in "
               f"standard errors se = sigma sqrt(1/n_row + 1/n_baseline), sigma = {sig:.3f} one bed's standard "
               f"deviation by the paper's clock; the mass's change is against the baseline's run on the same bed, "
               f"with the same sigma, which its pairing is expected to make smaller (not measured); the 300 d box's "
-              f"sigma is taken as the 60 d box's (one bed per cell there, so not measured); a change moves the "
+              f"sigma is taken as the 60 d box's (one bed per cell there, so not measured); the box alone is the "
+              f"300 d box's row against the 60 d box's row of the same protocol; a change moves the "
               f"cell toward the paper's sign when >= {RESOLVED:g} se that way. "
               f"A case not finished yet is shown by the paper's rule over t = 100 to its last committed sample, beside "
               f"the baseline's over the same window, once that window spans {SO_FAR_FROM:g}: a rate so far, not judged)"]
@@ -1212,11 +1236,13 @@ def protocol_so_far(shape, period):
     sig = sigma(cells_with_beds(CLOCK_A5))
     paper_sign = next(sign for s, t, sign in PROTOCOL_CELLS if (s, t) == (shape, period))
     done, left = [], []
-    for _, short, folders, keys, paired in PROTOCOL_ROWS[1:]:
-        values, change = protocol_change(folders, keys, paired, shape, period, paper_sign, sig)
+    for row in range(1, len(PROTOCOL_ROWS)):
+        short = PROTOCOL_ROWS[row][1]
+        values, change = protocol_change(row, shape, period, paper_sign, sig)
         if values:
-            diff, z, toward = change
-            done.append(f"{short}: {cell_text(values)}, a change of {diff:+.4f} ({z:.1f} se, {toward})")
+            box = box_alone_change(shape, period, paper_sign, sig) if row == BOX_ROW else None
+            done.append(f"{short}: {cell_text(values)}, a change of {change_text(change)}"
+                        + (f", of which {BOX_ALONE} {change_text(box)}" if box else ""))
         else:
             left.append(short)
     sentences = []
