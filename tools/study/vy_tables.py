@@ -1083,6 +1083,11 @@ def protocol_cell(shape, period):
     return {"intruder.shape": shape, "drive.amplitude": 5.0, "drive.period": period}
 
 
+def row_where(row, shape, period):
+    """The keys of a case of PROTOCOL_ROWS[row] in the cell (shape, T)."""
+    return dict(PRESET_PROTOCOL, **PROTOCOL_ROWS[row][3], **protocol_cell(shape, period))
+
+
 def unfinished(source):
     """The cases of a results folder that have not finished but whose trajectory so far is committed
     (a long case carried from session to session with its checkpoint)."""
@@ -1092,22 +1097,28 @@ def unfinished(source):
 SO_FAR_FROM = 200.0   # an unfinished case is shown once its window t = 100-t_now spans this much
 
 
-def protocol_so_far_cell(folders, keys, shape, period):
-    """A cell not finished yet whose case is on its way: its rate so far, by the paper's rule over
-    t = 100 to its last committed sample, beside the baseline's over the same window; "" when none."""
-    case = protocol_cell(shape, period)
-    where = dict(PRESET_PROTOCOL, **keys, **case)
-    present = committed(folders)
-    on_way = [c for f in present for c in unfinished(f) if all(c.get(k) == v for k, v in where.items())]
+def protocol_so_far_cell(row, shape, period):
+    """A cell of PROTOCOL_ROWS[row] not finished yet whose case is on its way: its rate so far, by the
+    paper's rule over t = 100 to its last committed sample, beside the baseline's over the same window
+    (and, in the 300 d box's row, the 60 d box's: BOX_ALONE); "" when none."""
+    def where(i):
+        return row_where(i, shape, period)
+    compared = [(0, "the baseline")] + ([(BOX_AGAINST, "the 60 d box's")] if row == BOX_ROW else [])
+    on_way = [c for f in committed(PROTOCOL_ROWS[row][2]) for c in unfinished(f)
+              if all(c.get(k) == v for k, v in where(row).items())]
     parts = []
     for c in on_way:
         t_now = c.trajectory()[0][-1]
         if t_now - 100.0 < SO_FAR_FROM:
             continue
         window = chord(100.0, t_now)
-        baseline = [window(b) for b in beds(select(T1000_BEDS, dict(PRESET_PROTOCOL, **case)), f"baseline {case}")]
+        beside = []
+        for i, name in compared:
+            done = beds(select(committed(PROTOCOL_ROWS[i][2]), where(i)), f"{name} {where(i)}")
+            if done:
+                beside.append(f"{name} {cell_text([window(b) for b in done])}")
         parts.append(f"not finished, t = {t_now:g} of 1000 so far: over t = 100-{t_now:g} {cell_text([window(c)])}, "
-                     f"the baseline {cell_text(baseline)}")
+                     + ", ".join(beside))
     return "; ".join(parts)
 
 
@@ -1116,8 +1127,7 @@ def protocol_change(row, shape, period, paper_sign, sig, against=0):
     row `against` (the baseline unless said), its size in standard errors and which way it moves the
     cell), the change None for the compared row itself or while that row has no values."""
     def row_beds(i):
-        _, _, folders, keys, _ = PROTOCOL_ROWS[i]
-        return protocol_beds(folders, dict(PRESET_PROTOCOL, **keys, **protocol_cell(shape, period)))
+        return protocol_beds(PROTOCOL_ROWS[i][2], row_where(i, shape, period))
     beds_of_row = row_beds(row)
     values = list(beds_of_row.values())
     if not values or row == against:
@@ -1205,13 +1215,13 @@ def answer_protocol(spec):
     sig = sigma(cells_with_beds(CLOCK_A5))
     head = "| what changes | " + " | ".join(f"{s}, A = 5, T = {t:g}: V_y; change (se)" for s, t, _ in PROTOCOL_CELLS) + " |"
     lines = [head, "|---|" + "---|" * len(PROTOCOL_CELLS)]
-    for row, (label, _, folders, keys, _) in enumerate(PROTOCOL_ROWS):
+    for row, (label, *_) in enumerate(PROTOCOL_ROWS):
         cells = []
         for shape, period, paper_sign in PROTOCOL_CELLS:
             values, change = protocol_change(row, shape, period, paper_sign, sig)
             box = box_alone_change(shape, period, paper_sign, sig) if row == BOX_ROW else None
             if not values:
-                cells.append(protocol_so_far_cell(folders, keys, shape, period) or "not run yet")
+                cells.append(protocol_so_far_cell(row, shape, period) or "not run yet")
             elif change is None:
                 cells.append(cell_text(values))
             else:
@@ -1227,7 +1237,8 @@ def answer_protocol(spec):
               f"300 d box's row against the 60 d box's row of the same protocol; a change moves the "
               f"cell toward the paper's sign when >= {RESOLVED:g} se that way. "
               f"A case not finished yet is shown by the paper's rule over t = 100 to its last committed sample, beside "
-              f"the baseline's over the same window, once that window spans {SO_FAR_FROM:g}: a rate so far, not judged)"]
+              f"the baseline's over the same window (and the 60 d box's, in the 300 d box's row), once that window spans "
+              f"{SO_FAR_FROM:g}: a rate so far, not judged)"]
     return lines, committed(PROTOCOL_FOLDERS + T1000_BEDS)
 
 
