@@ -1252,7 +1252,8 @@ def protocol_so_far(shape, period):
         values, change = protocol_change(row, shape, period, paper_sign, sig)
         if values:
             box = box_alone_change(shape, period, paper_sign, sig) if row == BOX_ROW else None
-            done.append(f"{short}: {cell_text(values)}, a change of {change_text(change)}"
+            compared = f"a change of {change_text(change)}" if change else "no baseline on its beds yet"
+            done.append(f"{short}: {cell_text(values)}, {compared}"
                         + (f", of which {BOX_ALONE} {change_text(box)}" if box else ""))
         else:
             left.append(short)
