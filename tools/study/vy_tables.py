@@ -1101,11 +1101,9 @@ def protocol_so_far_cell(row, shape, period):
     """A cell of PROTOCOL_ROWS[row] not finished yet whose case is on its way: its rate so far, by the
     paper's rule over t = 100 to its last committed sample, beside the baseline's over the same window
     (and, in the 300 d box's row, the 60 d box's: BOX_ALONE); "" when none."""
-    def where(i):
-        return row_where(i, shape, period)
     compared = [(0, "the baseline")] + ([(BOX_AGAINST, "the 60 d box's")] if row == BOX_ROW else [])
     on_way = [c for f in committed(PROTOCOL_ROWS[row][2]) for c in unfinished(f)
-              if all(c.get(k) == v for k, v in where(row).items())]
+              if all(c.get(k) == v for k, v in row_where(row, shape, period).items())]
     parts = []
     for c in on_way:
         t_now = c.trajectory()[0][-1]
@@ -1114,7 +1112,8 @@ def protocol_so_far_cell(row, shape, period):
         window = chord(100.0, t_now)
         beside = []
         for i, name in compared:
-            done = beds(select(committed(PROTOCOL_ROWS[i][2]), where(i)), f"{name} {where(i)}")
+            keys = row_where(i, shape, period)
+            done = beds(select(committed(PROTOCOL_ROWS[i][2]), keys), f"{name} {keys}")
             if done:
                 beside.append(f"{name} {cell_text([window(b) for b in done])}")
         parts.append(f"not finished, t = {t_now:g} of 1000 so far: over t = 100-{t_now:g} {cell_text([window(c)])}, "
