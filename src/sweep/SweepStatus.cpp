@@ -110,7 +110,9 @@ SweepStatus readSweepStatus(const std::string& dir) {
       s.bedSeconds += bed.estimatedSeconds / std::max(1, start->threads);  // as the dry run: threads scale perfectly
     }
   }
-  double casesLeft = 0.0;
+  double casesLeft = 0.0;       // the cases left that no running case's own estimate covers, in cases
+  double runningSeconds = 0.0;  // the running cases' own estimates of their time left, summed
+  double longestRunning = 0.0;  // and the longest: nothing ends before it
   int running = 0;
   std::vector<double> finishedWall;  // each finished case's wall time
   std::vector<double> runningWhole;  // each running case's whole wall time at its present pace
@@ -152,10 +154,15 @@ SweepStatus readSweepStatus(const std::string& dir) {
       c.interrupted = !runHeld && s.sweepLock != FileLock::Holders::Exclusive;
       running += !c.interrupted;
       if (!c.interrupted && progress.etaSeconds > 0) {
+        // Its own pace knows its time left better than other cases' wall times do (they may be other
+        // shapes, or have run beside other work).
         c.etaSeconds = progress.etaSeconds;
+        runningSeconds += c.etaSeconds;
+        longestRunning = std::max(longestRunning, c.etaSeconds);
         if (c.fraction > 0 && c.fraction < 1) runningWhole.push_back(c.etaSeconds / (1.0 - c.fraction));
+      } else {
+        casesLeft += 1.0 - std::max(0.0, c.fraction);
       }
-      casesLeft += 1.0 - std::max(0.0, c.fraction);
     } else if (c.status == CaseStatus::Pending) {
       casesLeft += 1.0;
     }
@@ -165,15 +172,18 @@ SweepStatus readSweepStatus(const std::string& dir) {
   s.casesAtOnce = std::max({1, s.jobs, running});  // array tasks: as many as run now
   if (!finishedWall.empty() || !runningWhole.empty()) {
     s.caseTime = finishedWall.empty() ? SweepStatus::CaseTime::RunningPace : SweepStatus::CaseTime::FinishedCases;
-    s.etaSeconds =
-        (median(finishedWall.empty() ? runningWhole : finishedWall) * casesLeft + s.bedSeconds) / s.casesAtOnce;
+    const double work =
+        median(finishedWall.empty() ? runningWhole : finishedWall) * casesLeft + runningSeconds + s.bedSeconds;
+    s.etaSeconds = std::max(longestRunning, work / s.casesAtOnce);
   }
   return s;
 }
 
 std::string formatSweepStatus(const SweepStatus& s) {
   int ok = 0, failed = 0, running = 0, pending = 0;
+  bool ownEstimates = false;  // a running case's time left counts as its own estimate says
   for (const CaseAtAGlance& c : s.cases) {
+    ownEstimates |= c.status == CaseStatus::Running && c.etaSeconds > 0;
     ok += c.status == CaseStatus::Ok;
     failed += c.status == CaseStatus::Failed;
     running += c.status == CaseStatus::Running;
@@ -216,12 +226,14 @@ std::string formatSweepStatus(const SweepStatus& s) {
     out << "time to go: unknown until a case has finished or a running one knows its pace"
         << (s.bedsToMake > 0 ? "; the " + bedsToMakeText(s) + " first" : "") << "\n";
   else
-    out << "time to go: about " << formatDuration(s.etaSeconds) << " (estimate: "
+    out << "time to go: about " << formatDuration(s.etaSeconds)
+        << " (estimate: " << (ownEstimates ? "the running cases' own times to go, plus " : "")
         << (s.caseTime == SweepStatus::CaseTime::FinishedCases
                 ? "the finished cases' median wall time"
-                : "nothing has finished yet, so a case's wall time at the running cases' present pace")
-        << " x the cases left" << (s.bedsToMake > 0 ? ", plus the " + bedsToMakeText(s) : "")
-        << ", over " << s.casesAtOnce << " job" << (s.casesAtOnce > 1 ? "s" : "")
+                : "a case's wall time at the running cases' present pace, nothing having finished yet,")
+        << (ownEstimates ? " x the other cases left" : " x the cases left")
+        << (s.bedsToMake > 0 ? ", plus the " + bedsToMakeText(s) : "") << ", over " << s.casesAtOnce << " job"
+        << (s.casesAtOnce > 1 ? "s" : "") << (ownEstimates ? ", and no less than the longest running case's" : "")
         << (s.bedsCounted ? "" : "; beds still to make are not counted: the sweep's start did not record them")
         << ")\n";
   return out.str();

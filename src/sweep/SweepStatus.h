@@ -71,8 +71,10 @@ struct SweepStatus {
   bool bedsCounted = false;
   int bedsToMake = 0;
   double bedSeconds = 0.0;
-  // Seconds to go: caseTime's wall time of a case times the cases left (a running case counts for
-  // what it has left), plus bedSeconds, over casesAtOnce; negative when caseTime is Unknown.
+  // Seconds to go: the running cases' own estimates of their time left, plus caseTime's wall time of a
+  // case times the other cases left (an interrupted one counts for what it has left), plus
+  // bedSeconds, over casesAtOnce, and never less than the longest running case's time left;
+  // negative when caseTime is Unknown.
   double etaSeconds = -1.0;
 };
 

@@ -107,9 +107,10 @@ TEST_F(SweepStatusTest, ArrayTasksCasesRunWhereTheirRunsHoldTheirDirectories) {
   EXPECT_EQ(s.cases[4].fraction, 0.5);
   EXPECT_EQ(s.cases[5].status, CaseStatus::Running);  // f: "ok" without a summary, being run again
   EXPECT_EQ(s.cases[5].error, "");
-  // Two cases run at once: d's three quarters, e's half and f whole = 2.25 cases of 300 s, over 2.
+  // Two cases run at once: e's own 60 s left, plus d's three quarters and f whole (it has no
+  // estimate yet) = 1.75 cases of 300 s, over 2.
   EXPECT_EQ(s.casesAtOnce, 2);
-  EXPECT_DOUBLE_EQ(s.etaSeconds, 300.0 * 2.25 / 2.0);
+  EXPECT_DOUBLE_EQ(s.etaSeconds, (60.0 + 300.0 * 1.75) / 2.0);
   const std::string text = formatSweepStatus(s);
   EXPECT_NE(text.find("one-case `wiggle sweep --case` tasks are running in it"), std::string::npos) << text;
   EXPECT_NE(text.find("running  e (50 % of its run, about 1m00s to go)\n"), std::string::npos) << text;
@@ -215,12 +216,32 @@ TEST_F(SweepStatusTest, WithNothingFinishedTheRunningCasesPaceGivesTheTimeToGo) 
   const FileLock whole(sweepLockPath(dir_.path().string()), /*shared=*/false, false, "");
   const SweepStatus s = readSweepStatus(dir_.path().string());
   EXPECT_EQ(s.caseTime, SweepStatus::CaseTime::RunningPace);
-  // d: a quarter done, 60 s left: 80 s whole. Left: d's three quarters and e = 1.75 cases, over 2 jobs.
-  EXPECT_DOUBLE_EQ(s.etaSeconds, 80.0 * 1.75 / 2.0);
+  // d: a quarter done, 60 s left: 80 s whole. Left: d's own 60 s and e's 80 s, over 2 jobs.
+  EXPECT_DOUBLE_EQ(s.etaSeconds, (60.0 + 80.0) / 2.0);
   const std::string text = formatSweepStatus(s);
   EXPECT_NE(text.find("running  d (25 % of its run, about 1m00s to go)\n"), std::string::npos) << text;
-  EXPECT_NE(text.find("time to go: about 1m10s (estimate: nothing has finished yet, so a case's wall time at the running "
-                      "cases' present pace x the cases left, over 2 jobs"),
+  EXPECT_NE(text.find("time to go: about 1m10s (estimate: the running cases' own times to go, plus a case's wall time "
+                      "at the running cases' present pace, nothing having finished yet, x the other cases left, over 2 "
+                      "jobs, and no less than the longest running case's"),
+            std::string::npos)
+      << text;
+}
+
+// The finished cases may have run faster than the running one (another shape, a quieter machine): a
+// running case's own estimate is its time left, and the sweep cannot end before its longest.
+TEST_F(SweepStatusTest, ARunningCaseCountsItsOwnTimeLeft) {
+  writeFileAtomically(dir_ / "results.csv",
+                      "case,run_dir,status,vy,wall_s,error\na,cases/a,ok,0.25,100,\nd,cases/d,running,,,\n");
+  writeRunProgress(dir_ / "cases/d", RunProgress{RunPhase::Running, "running", 0.25, 25.0, 100.0, 900.0});
+  const FileLock whole(sweepLockPath(dir_.path().string()), /*shared=*/false, false, "");
+  const SweepStatus s = readSweepStatus(dir_.path().string());
+  EXPECT_EQ(s.caseTime, SweepStatus::CaseTime::FinishedCases);
+  // Not 100 s x three quarters over 2 jobs: d's 900 s, which the second job does not shorten.
+  EXPECT_DOUBLE_EQ(s.etaSeconds, 900.0);
+  const std::string text = formatSweepStatus(s);
+  EXPECT_NE(text.find("running  d (25 % of its run, about 15m00s to go)\ntime to go: about 15m00s (estimate: the "
+                      "running cases' own times to go, plus the finished cases' median wall time x the other cases "
+                      "left, over 2 jobs, and no less than the longest running case's"),
             std::string::npos)
       << text;
 }
