@@ -184,7 +184,13 @@ class BracketTest(unittest.TestCase):
         self.assertEqual(findings.against_range(2.5, 3.0, paper), "**no**: below the paper's range")
         self.assertEqual(findings.against_range(4.0, 5.0, paper), "**no**: above the paper's range")
         self.assertEqual(findings.against_range(None, None, paper), "**no**: no rise at any period run")
-        self.assertEqual(findings.against_range(None, 2.0, paper), "rises already at the shortest period run")
+        self.assertEqual(findings.against_range(None, 3.5, paper), "rises already at the shortest period run")
+        # rising already where the paper's intruder does not rise yet: below its range, whatever lies below
+        self.assertEqual(findings.against_range(None, 3.0, paper), "**no**: below the paper's range")
+
+    def test_the_papers_side_of_zero_at_a_period(self):
+        paper = (3.0, 4.0)
+        self.assertEqual([findings.paper_side(t, paper) for t in (2.5, 3.0, 3.5, 4.0, 5.0)], [-1, -1, 0, +1, +1])
 
 
 class PairedChangesTest(unittest.TestCase):

@@ -160,13 +160,20 @@ def friction_steps(label, by_mu):
     return [compare(f"{label}: mu = {b:g} above mu = {a:g}", by_mu[b], by_mu[a], +1) for a, b in zip(mus, mus[1:])]
 
 
+def paper_side(period, paper_range):
+    """The side of zero on which the paper's Table 1 puts V_y at a period: -1 (not rising) at or below
+    its observed range (lo, hi), +1 (rising) at or above it, 0 inside it (the paper does not say)."""
+    lo, hi = paper_range
+    return -1 if period <= lo else +1 if period >= hi else 0
+
+
 def table1_range(shape, by_period, paper_range):
     """Finding 7: not rising at the paper's lower end, rising at its upper end (paper_range (lo, hi));
     where a scale did not run that period, the nearest period it ran on the far side of the range
     (below the lower end, above the upper), where the paper's range says the same."""
     lo, hi = paper_range
     ts = sorted(by_period)
-    below, above = [t for t in ts if t <= lo], [t for t in ts if t >= hi]
+    below, above = [t for t in ts if paper_side(t, paper_range) < 0], [t for t in ts if paper_side(t, paper_range) > 0]
     out = []
     if below:
         t = below[-1]
@@ -208,7 +215,9 @@ def against_range(lo, hi, paper_range):
     if hi is None:
         return "**no**: no rise at any period run"
     if lo is None:
-        return "rises already at the shortest period run"
+        # Rising at the shortest period run: below the paper's range when the paper's intruder does not
+        # rise there yet; otherwise the runs do not tell where the rise begins.
+        return "**no**: below the paper's range" if hi <= plo else "rises already at the shortest period run"
     if (lo, hi) == (plo, phi):
         return "**yes**: the paper's range"
     if lo >= plo and hi <= phi:

@@ -922,7 +922,10 @@ def against_paper(lo, hi, shape):
 
 def bracket_text(lo, hi, cells):
     if hi is None:
-        return f"none: not rising at T = {cells[0][0]:g}-{cells[-1][0]:g}" if cells else "not run"
+        if not cells:
+            return "not run"
+        run = f"{cells[0][0]:g}" + (f"-{cells[-1][0]:g}" if len(cells) > 1 else "")
+        return f"none: not rising at T = {run}"
     return f"{lo:g}-{hi:g}" if lo is not None else f"<= {hi:g}"
 
 
@@ -1047,7 +1050,9 @@ def readme_answer(spec):
 # one at a time at t = 1000, for the two cells that disagree most with the paper (the square at T = 3
 # rises where the paper's sinks; the triangle at T = 5 sinks where the paper's rises), then all of
 # them together in the preset's 60 d box and in the paper's own 300 d box.
-PROTOCOL_FOLDERS = ["results/paper_depth/mass_t1000", "results/paper_depth/factors_t1000", "results/paper_box/t1000"]
+# The paper's protocol in its own 300 x 195 d box, by its clock (configs/sweeps/paper_box_t1000.toml).
+PAPER_BOX = ["results/paper_box/t1000"]
+PROTOCOL_FOLDERS = ["results/paper_depth/mass_t1000", "results/paper_depth/factors_t1000"] + PAPER_BOX
 PRESET_PROTOCOL = {"intruder.surface": "smooth", "bed.pour": "lattice", "intruder.mass_rule": "disk_area"}
 PAPER_PROTOCOL = {"intruder.surface": "glued", "bed.pour": "random", "intruder.mass_rule": "glued_disk"}
 # (what changes from the preset, in the table and in a sentence; its cases: folders and the keys that
@@ -1061,10 +1066,11 @@ PROTOCOL_ROWS = [
     ("the random pour (new pour)", "the random pour", ["results/paper_depth/factors_t1000"], {"bed.pour": "random"}, False),
     ("all three: the paper's protocol in the 60 d box", "the paper's protocol in the 60 d box",
      ["results/paper_depth/factors_t1000"], PAPER_PROTOCOL, False),
-    ("the paper's protocol in its own 300 d box", "the paper's protocol in its own 300 d box", ["results/paper_box/t1000"],
+    ("the paper's protocol in its own 300 d box", "the paper's protocol in its own 300 d box", PAPER_BOX,
      PAPER_PROTOCOL, False),
 ]
-PROTOCOL_CELLS = [("square", 3.0, -1), ("triangle", 5.0, +1)]   # shape, T, the paper's sign of V_y there
+# shape, T, the paper's sign of V_y there
+PROTOCOL_CELLS = [(shape, t, findings.paper_side(t, PAPER_RANGE[shape])) for shape, t in [("square", 3.0), ("triangle", 5.0)]]
 # The box's width alone: the last row (the paper's protocol in its 300 d box) against the row before
 # it (the same protocol in the 60 d box), said beside the last row's change from the preset.
 BOX_ROW, BOX_AGAINST = len(PROTOCOL_ROWS) - 1, len(PROTOCOL_ROWS) - 2
@@ -1097,6 +1103,13 @@ def unfinished(source):
 SO_FAR_FROM = 200.0   # an unfinished case is shown once its window t = 100-t_now spans this much
 
 
+def so_far(case):
+    """(t of an unfinished case's last committed sample, its rate so far by the paper's rule over
+    t = 100 to then, or None while that window spans less than SO_FAR_FROM)."""
+    t_now = case.trajectory()[0][-1]
+    return t_now, (chord(100.0, t_now)(case) if t_now - 100.0 >= SO_FAR_FROM else None)
+
+
 def protocol_so_far_cell(row, shape, period):
     """A cell of PROTOCOL_ROWS[row] not finished yet whose case is on its way: its rate so far, by the
     paper's rule over t = 100 to its last committed sample, beside the baseline's over the same window
@@ -1106,8 +1119,8 @@ def protocol_so_far_cell(row, shape, period):
               if all(c.get(k) == v for k, v in row_where(row, shape, period).items())]
     parts = []
     for c in on_way:
-        t_now = c.trajectory()[0][-1]
-        if t_now - 100.0 < SO_FAR_FROM:
+        t_now, rate = so_far(c)
+        if rate is None:
             continue
         window = chord(100.0, t_now)
         beside = []
@@ -1116,7 +1129,7 @@ def protocol_so_far_cell(row, shape, period):
             done = beds(select(committed(PROTOCOL_ROWS[i][2]), keys), f"{name} {keys}")
             if done:
                 beside.append(f"{name} {cell_text([window(b) for b in done])}")
-        parts.append(f"not finished, t = {t_now:g} of 1000 so far: over t = 100-{t_now:g} {cell_text([window(c)])}, "
+        parts.append(f"not finished, t = {t_now:g} of 1000 so far: over t = 100-{t_now:g} {cell_text([rate])}, "
                      + ", ".join(beside))
     return "; ".join(parts)
 
@@ -1163,20 +1176,77 @@ def change_text(change):
     return f"{diff:+.4f} ({z:.1f} se, {toward})"
 
 
-def paper_box_summary():
-    """What the paper's protocol in its own box gives so far, cell by cell, against the paper's sign, in a
-    sentence for the README ("" before any of its cases has finished)."""
+SIDE = {+1: "rising", -1: "sinking", 0: "level within the scatter"}   # a cell's side of zero, or the paper's
+
+
+def side(values, sig):
+    """A cell's side of zero by the findings' rule: +1 rising, -1 sinking, 0 within the scatter."""
+    return findings.resolved_side(findings.z_from_zero(values, sig))
+
+
+def side_text(values, sig):
+    """'rising (4.4 se)': a cell's side of zero, and how far from zero it is."""
+    return f"{SIDE[side(values, sig)]} ({abs(findings.z_from_zero(values, sig)):.1f} se)"
+
+
+def against_paper_side(values, sig, shape, period):
+    """How a cell's side of zero stands against the paper's at that period (findings.paper_side)."""
+    paper = findings.paper_side(period, PAPER_RANGE[shape])
+    if paper == 0:
+        return "inside the paper's range"
+    return "as the paper" if side(values, sig) == paper else f"where the paper has it {SIDE[paper]}"
+
+
+def paper_box_cells(shape):
+    """({T: the beds' V_y} of a shape's finished cases in the paper's box, [its unfinished cases whose
+    trajectory so far is committed])."""
+    box = committed(PAPER_BOX)
+    return (by_period(box, intruder__shape=shape, drive__amplitude=5.0),
+            [c for f in box for c in unfinished(f) if c.get("intruder.shape") == shape and c.get("drive.amplitude") == 5.0])
+
+
+def answer_paper_box(spec):
+    """Table 1 in the paper's own box: each period run per shape, its side of zero against the paper's,
+    the bracket by the answer's rule and how it stands against the paper's range, beside the 60 d
+    preset's bracket by the same clock."""
     sig = sigma(cells_with_beds(CLOCK_A5))
-    short = PROTOCOL_ROWS[BOX_ROW][1]
-    parts = []
-    for shape, period, paper_sign in PROTOCOL_CELLS:
-        values, _ = protocol_change(BOX_ROW, shape, period, paper_sign, sig)
-        if not values:
+    head = ["shape", "paper, observed", "60 d preset, paper's clock", "the paper's box: V_y at each period run",
+            "the paper's box: bracket", "the paper's range?"]
+    lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
+    for shape in SHAPES:
+        done, on_way = paper_box_cells(shape)
+        if not done and not on_way:
             continue
-        sign = findings.resolved_side(findings.z_from_zero(values, sig))
-        said = {+1: "rising", -1: "sinking", 0: "level within the scatter"}
-        paper = "as the paper" if sign == paper_sign else f"where the paper has it {said[paper_sign]}"
-        parts.append(f"the {shape} at T = {period:g} {said[sign]}, {beds_text(values)}, {paper}")
+        periods_run = [(t, f"{beds_text(vs)}, {side_text(vs, sig)}, {against_paper_side(vs, sig, shape, t)}")
+                       for t, vs in done.items()]
+        for c in on_way:
+            t_now, rate = so_far(c)
+            periods_run.append((c.get("drive.period"), f"not finished, t = {t_now:g} of {c.get('run.duration'):g}"
+                                + (f" (over t = 100-{t_now:g} {rate:+.3f} so far)" if rate is not None else "")))
+        cells = list(done.items())
+        lo, hi = findings.first_rise(cells, sig)
+        plo, phi, pcells = first_rise(CLOCK_A5, shape, sig)
+        lines.append("| " + " | ".join([SHAPE_NAMES[shape], paper_observed(shape), bracket_text(plo, phi, pcells),
+                                          "; ".join(f"T = {t:g}: {text}" for t, text in sorted(periods_run)),
+                                          bracket_text(lo, hi, cells) if cells else "none finished yet",
+                                          against_paper(lo, hi, shape) if cells else "not judged yet"]) + " |")
+    lines += ["", f"(T in sqrt(d/g); A = 5 d; one bed per shape, poured around it. V_y over t = 100-1000 of runs to "
+              "t = 1000 in the paper's 300 x 195 d box by its protocol (configs/paper.toml), judged as the answer's "
+              f"Table 1 above: a period rises when its V_y is >= {RESOLVED:g} sigma above zero, with the 60 d preset's "
+              f"one-bed sigma {sig:.3f} (the 300 d box's own is not measured: one bed per cell). The paper's side at a "
+              "period: not rising at or below its observed range, rising at or above it. A case not finished is "
+              f"shown by its rate so far over t = 100 to its last committed sample once that spans {SO_FAR_FROM:g}, "
+              "and not judged)"]
+    return lines, committed(PAPER_BOX) + CLOCK_A5
+
+
+def paper_box_summary():
+    """What the paper's protocol in its own box gives so far, cell by cell, against the paper's side,
+    in a sentence for the README ("" before any of its cases has finished)."""
+    sig = sigma(cells_with_beds(CLOCK_A5))
+    parts = [f"the {shape} at T = {t:g} {SIDE[side(vs, sig)]}, {beds_text(vs)}, {against_paper_side(vs, sig, shape, t)}"
+             for shape in SHAPES for t, vs in paper_box_cells(shape)[0].items()]
+    short = PROTOCOL_ROWS[BOX_ROW][1]
     return (short[0].upper() + short[1:] + " leaves " + "; ".join(parts) + ". ") if parts else ""
 
 
@@ -1270,6 +1340,7 @@ TABLES += [
     {"name": "answer_findings", "kind": answer_findings, "sources": FINDING_SOURCES},
     {"name": "answer_differences", "kind": answer_differences, "sources": ANSWER_SOURCES},
     {"name": "answer_protocol", "kind": answer_protocol, "sources": PROTOCOL_FOLDERS + T1000_BEDS},
+    {"name": "answer_paper_box", "kind": answer_paper_box, "sources": PAPER_BOX + CLOCK_A5},
     {"name": "readme_answer", "kind": readme_answer, "sources": CLOCK_A5 + PROTOCOL_FOLDERS, "bare": True},
     {"name": "boundaries", "kind": boundary_table, "sources": [b[0] for b in BOUNDARIES]},
     # The protocol block's cases in the thirds of the paper's window, as depth_t1000_windows the preset's
