@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
@@ -10,6 +12,7 @@
 #include <nlohmann/json.hpp>
 #include <random>
 #include <sstream>
+#include <thread>
 #include <vector>
 
 #include "analysis/LammpsDump.h"
@@ -215,6 +218,19 @@ TEST(Experiment, ThreadCountDoesNotChangeTheResult) {
   EXPECT_EQ(readFile(one.outDir + "/fields.csv"), readFile(three.outDir + "/fields.csv"));
 }
 
+// The lines of a bed cache's speed.log (scenario/cost/SpeedRecord.h), each split at its tabs.
+std::vector<std::vector<std::string>> speedLogLines(const RunConfig& config) {
+  std::ifstream log(config.bed.cacheDir + "/speed.log");
+  std::vector<std::vector<std::string>> lines;
+  for (std::string line; std::getline(log, line);) {
+    std::vector<std::string> fields;
+    std::istringstream in(line);
+    for (std::string f; std::getline(in, f, '\t');) fields.push_back(f);
+    lines.push_back(fields);
+  }
+  return lines;
+}
+
 // A run of 10^4 steps or more leaves its speed for the cost estimates (scenario/cost/SpeedRecord.h): one
 // line in its bed cache's speed.log with the wall figure of its summary, its CPU figure, which is
 // what the estimates take, and its particle count, by which they pick runs of beds of their size.
@@ -228,14 +244,7 @@ TEST(Experiment, ARunRecordsItsWallAndCpuSpeedForTheEstimates) {
   options.threads = 1;
   ASSERT_EQ(runExperiment(prepareCase(config), options).summary.status, RunStatus::Ok);
   const nlohmann::json summary = nlohmann::json::parse(readFile(options.outDir + "/summary.json"));
-  std::ifstream log(config.bed.cacheDir + "/speed.log");
-  std::vector<std::vector<std::string>> lines;
-  for (std::string line; std::getline(log, line);) {
-    std::vector<std::string> fields;
-    std::istringstream in(line);
-    for (std::string f; std::getline(in, f, '\t');) fields.push_back(f);
-    lines.push_back(fields);
-  }
+  const auto lines = speedLogLines(config);
   ASSERT_EQ(lines.size(), 1u);
   ASSERT_EQ(lines[0].size(), 7u);
   EXPECT_EQ(lines[0][1], "1");
@@ -244,6 +253,47 @@ TEST(Experiment, ARunRecordsItsWallAndCpuSpeedForTheEstimates) {
   EXPECT_GT(cpu, 0.0);
   EXPECT_LE(cpu, 1.02 * wall);
   EXPECT_EQ(lines[0][6], std::to_string(summary.at("n_particles").get<std::uint64_t>()));
+}
+
+// A run stopped by a signal leaves the speed of its stretch too: a case of hours mostly runs in
+// stretches that end so, and a machine that has only run such cases needs a speed of its own for
+// the estimates. The signal comes once progress.json says the run passed t = 1.2 (10^4 steps and
+// more) of its 50; the signalling thread's polls, a small share of the CPU time, count in it.
+TEST(Experiment, ARunStoppedBySignalRecordsTheSpeedOfItsStretch) {
+  const std::string root = scratch("speed-signal");
+  fs::remove_all(root);
+  RunConfig config = tinyConfig(root);
+  config.run.duration = 50.0;
+  RunOptions options = quiet(root + "/run");
+  options.threads = 1;
+  const Case run = prepareCase(config);
+  const std::uint64_t particles = obtainBed(config, run.clump).world.particles().size();  // cached before the run
+  std::atomic<bool> ended{false};
+  std::thread signaller([&] {
+    for (; !ended; std::this_thread::sleep_for(std::chrono::milliseconds(20))) {
+      const std::optional<RunProgress> p = readRunProgress(options.outDir);
+      if (p && p->phase == RunPhase::Running && p->t >= 1.2) {
+        std::raise(SIGTERM);  // recorded by the run's StopSignalGuard: it is stepping
+        return;
+      }
+    }
+  });
+  try {
+    runExperiment(run, options);
+    ADD_FAILURE() << "not interrupted";
+  } catch (const Interrupted& e) {
+    EXPECT_EQ(e.exitStatus(), 143);
+  }
+  ended = true;
+  signaller.join();
+  const auto lines = speedLogLines(config);
+  ASSERT_EQ(lines.size(), 1u);
+  ASSERT_EQ(lines[0].size(), 7u);
+  EXPECT_EQ(lines[0][1], "1");
+  const double wall = std::stod(lines[0][2]), cpu = std::stod(lines[0][5]);
+  EXPECT_GT(cpu, 0.0);
+  EXPECT_LE(cpu, 1.02 * wall);
+  EXPECT_EQ(lines[0][6], std::to_string(particles));
 }
 
 TEST(Experiment, RefusesToOverwriteARunAndKeepsItsFiles) {

@@ -1,7 +1,8 @@
 #pragma once
 // The speed this machine has shown, for cost estimates (`run --check`, `sweep --dry-run`,
-// `boundary --dry-run`, a sweep's ETA before its first case ends): every finished run appends one
-// line to speed.log in the bed cache directory, and an estimate takes the median of the last runs
+// `boundary --dry-run`, a sweep's ETA before its first case ends): every run that finishes or is
+// stopped by a signal after 10^4 steps or more appends one line, of its own process's stepping, to
+// speed.log in the bed cache directory, and an estimate takes the median of the last runs
 // on the same CPU model at one thread by the same kind of build (speedBuildKind: a debug or
 // sanitized build, or the scalar kernels, run several times slower than a release build). The
 // figure an estimate takes is the run's CPU time per particle-step: what a step costs on a core the

@@ -282,9 +282,23 @@ RunSummary summarise(const Case& run, const std::string& dir, const World& world
 
 // What this process's stepping cost (a resumed run's earlier stretches not counted).
 struct SteppingCost {
-  double cpuSeconds = 0.0;  // CPU time of every thread
+  double cpuSeconds = 0.0;   // CPU time of every thread
+  double wallSeconds = 0.0;  // the stepping's wall time (RunState::runWallSeconds's share of this process)
   std::uint64_t steps = 0;
 };
+
+// Leaves this process's stepping speed for the cost estimates (scenario/cost/SpeedRecord.h), whether
+// the run finished or was stopped by a signal: a case of hours mostly runs in stretches that end by
+// a signal, and their speed is as good a measure as a finished run's. The figures are this process's
+// alone: a resumed run's earlier stretches may have run on another machine. Stretches under 10^4
+// steps say more about start-up than about the step.
+void recordSteppingSpeed(const RunConfig& config, const World& world, const SteppingCost& stepping) {
+  if (stepping.steps < 10000) return;
+  const double particleSteps = static_cast<double>(world.particles().size()) * static_cast<double>(stepping.steps);
+  recordRunSpeed(config, omp_get_max_threads(), 1e9 * stepping.wallSeconds / particleSteps,
+                 1e9 * stepping.cpuSeconds / particleSteps, simdLevelName(world.kernels().level),
+                 world.particles().size());
+}
 
 // A checkpoint, and beside it the trajectory so far: a run of hours can be plotted (`wiggle plot`)
 // and measured to where it got (`wiggle rate`) while it runs or after it stopped; its end rewrites
@@ -352,9 +366,8 @@ bool stepToTheEnd(const Case& run, const RunOptions& options, const std::string&
 }
 
 // The finished run's files: trajectory, phase rates, fields, model and the summary, written last.
-// `stepping` is this process's share of the stepping, for the speed log.
 RunOutcome writeRunOutputs(const Case& run, const std::string& dir, const World& world, const RunState& state,
-                           const FieldObserver& fields, const SteppingCost& stepping, LogFile& log) {
+                           const FieldObserver& fields, LogFile& log) {
   const RunConfig& config = run.config;
   const SettleRule rule;
   const auto [rate, settled] = measureRunRates(run, state.samples, paperWindow(config.run.duration), rule);
@@ -373,13 +386,6 @@ RunOutcome writeRunOutputs(const Case& run, const std::string& dir, const World&
   const bool extended = firstAveraged != run.steps.firstMeasured;
   const RunSummary summary = summarise(run, dir, world, state, fields, rate, settled, rule, averagedFrom, extended);
   writeFileAtomically(dir + "/summary.json", toJson(summary).dump(2) + "\n");
-  // For the cost estimates (scenario/cost/SpeedRecord.h); stretches under 10^4 steps say more about
-  // start-up than about the step.
-  if (stepping.steps >= 10000)
-    recordRunSpeed(
-        config, static_cast<int>(summary.threads), summary.nsPerParticleStep,
-        1e9 * stepping.cpuSeconds / (static_cast<double>(summary.particles) * static_cast<double>(stepping.steps)),
-        summary.simd, summary.particles);
   log.line("done: vy = " + formatNumber(rate.vy) + ", slope = " + formatNumber(rate.slope) +
            ", vy_settled = " + formatNumber(settled.vy) + " (t_settled = " + formatNumber(settled.tSettled) + "), " +
            formatNumber(summary.nsPerParticleStep) + " ns/particle-step, state " + world.stateHash());
@@ -512,14 +518,19 @@ RunOutcome runExperiment(const Case& run, const RunOptions& options) {
   }
 
   bool finished = false;
-  SteppingCost stepping;
   const double cpuAtStart = processCpuSeconds();
+  const double wallAtStart = state.runWallSeconds;
   const std::uint64_t stepAtStart = world.stepCount();
+  const auto steppingSoFar = [&] {
+    return SteppingCost{processCpuSeconds() - cpuAtStart, state.runWallSeconds - wallAtStart,
+                        world.stepCount() - stepAtStart};
+  };
   try {
     finished = stepToTheEnd(run, options, configToml, world, state, fields, observers, progress, progressFile, log);
   } catch (const Interrupted&) {
     progress.clear();
     progressFile.stopped(RunPhase::Interrupted, interruptedStage(world.time()), fractionDone(world), world.time());
+    recordSteppingSpeed(config, world, steppingSoFar());
     throw;
   } catch (const Error& e) {
     progress.clear();
@@ -530,17 +541,16 @@ RunOutcome runExperiment(const Case& run, const RunOptions& options) {
     throw;
   }
   progress.clear();
-  stepping.cpuSeconds = processCpuSeconds() - cpuAtStart;
-  stepping.steps = world.stepCount() - stepAtStart;
-  if (!finished) {
+  if (!finished) {  // as if killed: nothing more is written
     RunOutcome stopped;
     stopped.summary.status = RunStatus::Stopped;
     return stopped;
   }
+  recordSteppingSpeed(config, world, steppingSoFar());
   writeCheckpoint(dir, configToml, world, state, fields);
   stopOnSignal.reset();
   progressFile.stage(RunPhase::Running, "writing its results", 1.0, world.time());
-  RunOutcome outcome = writeRunOutputs(run, dir, world, state, fields, stepping, log);
+  RunOutcome outcome = writeRunOutputs(run, dir, world, state, fields, log);
   progressFile.stage(RunPhase::Finished, "finished", 1.0, world.time());
   return outcome;
 }
