@@ -1334,6 +1334,89 @@ def protocol_so_far(shape, period):
     return " ".join(sentences)
 
 
+# What the paper leaves open, not varied by the protocol block (docs/PHYSICS.md, "The paper's stated
+# protocol"): what is left when no measured factor accounts for a difference.
+UNMEASURED = ("what the paper leaves open and the screen did not vary (the grains' diameter distribution, the "
+              "pour's batch height and fill fraction), and the paper's own scatter, which it does not report (no "
+              "repeated beds, no error bars)")
+
+
+def factor_changes(shape, period, paper_sign, sig):
+    """([(what changed, its change as protocol_change gives it)] of every protocol row measured in one
+    cell, the box alone beside the 300 d box's row; [the rows not measured there yet])."""
+    changes, left = [], []
+    for row in range(1, len(PROTOCOL_ROWS)):
+        name = PROTOCOL_ROWS[row][1]
+        change = protocol_change(row, shape, period, paper_sign, sig)[1]
+        if not change:
+            left.append(name)
+            continue
+        changes.append((name, change))
+        box = box_alone_change(shape, period, paper_sign, sig) if row == BOX_ROW else None
+        if box:
+            changes.append((BOX_ALONE, box))
+    return changes, left
+
+
+def factors_text(shape, period, paper_sign, sig, box_values):
+    """What the protocol block measured in one of its cells, and what is left of the difference from the
+    paper there, in sentences; box_values: the paper's box's V_y in the cell ([] while not finished)."""
+    changes, left = factor_changes(shape, period, paper_sign, sig)
+    base = list(protocol_beds(PROTOCOL_ROWS[0][2], row_where(0, shape, period)).values())
+    text = (f"At T = {period:g}, where the paper has it {SIDE[paper_sign]}, the preset gives {beds_text(base)}; changed "
+            "one at a time and together, " + "; ".join(f"{name} {change_text(c)}" for name, c in changes) + ". ")
+    if left:
+        text += "Not measured there yet: " + ", ".join(left) + ". "
+    moved = [f"{name} {change_text(c)}" for name, c in changes if c[2] != "within the scatter"]
+    if moved:
+        text += "Resolved: " + "; ".join(moved) + ". "
+    elif changes:
+        text += f"No measured factor moves it by {RESOLVED:g} standard errors. "
+    if box_values and side(box_values, sig) != paper_sign:
+        text += ("So " + ("none" if not moved else "not all") + " of the difference is accounted for: what is left "
+                 f"is {'all of it' if not moved else 'the rest'}, {UNMEASURED}.")
+    elif box_values:
+        text += "In the paper's box by its protocol the cell is on the paper's side."
+    return text
+
+
+def answer_per_shape(spec):
+    """Item 4 of issue 51 per shape run in the paper's box: does the paper's own protocol give the
+    paper's Table 1 bracket; if not, what each measured factor moved at the cell that disagrees, and
+    what is left."""
+    sig = sigma(cells_with_beds(CLOCK_A5))
+    lines = []
+    for shape in SHAPES:
+        done, on_way = paper_box_cells(shape)
+        if not done and not on_way:
+            continue
+        runs = [(t, f"T = {t:g} {SIDE[side(vs, sig)]}, {beds_text(vs)}, {abs(findings.z_from_zero(vs, sig)):.1f} se")
+                for t, vs in done.items()]
+        runs += [(c.get("drive.period"), f"T = {c.get('drive.period'):g} not finished "
+                  f"(t = {so_far(c)[0]:g} of {c.get('run.duration'):g})") for c in on_way]
+        text = (f"- **{SHAPE_NAMES[shape]}**, the paper's T_rising {paper_observed(shape)}: in the paper's own protocol "
+                "and box, by its clock, " + "; ".join(said for _, said in sorted(runs)) + ". ")
+        cells = list(done.items())
+        if on_way:
+            text += "Not answered yet: a period is still running. "
+        elif cells:
+            lo, hi = findings.first_rise(cells, sig)
+            plo, phi, pcells = first_rise(CLOCK_A5, shape, sig)
+            verdict = against_paper(lo, hi, shape)
+            text += (f"Bracket {bracket_text(lo, hi, cells)}: {verdict} (the 60 d preset: "
+                     f"{bracket_text(plo, phi, pcells)}). ")
+            text += ("The paper's protocol, as far as the paper states it, gives the paper's bracket. "
+                     if verdict.startswith("**yes") else
+                     "**The paper's protocol, as far as the paper states it, does not give the paper's bracket.** ")
+        text += "".join(factors_text(shape, period, paper_sign, sig, done.get(period, []))
+                        for s, period, paper_sign in PROTOCOL_CELLS if s == shape)
+        lines.append(text.rstrip())
+    lines += ["", f"(A = 5 d; one bed per cell in the paper's box, judged as the Table 1 below with the 60 d preset's "
+              f"one-bed sigma {sig:.3f}; the changes, in standard errors of that sigma, are the protocol block's "
+              "below, where each case and its beds are listed)"]
+    return lines, committed(PROTOCOL_FOLDERS + T1000_BEDS)
+
+
 ANSWER_SOURCES = FINDING_SOURCES + ["results/paper_depth/glued", "results/paper_depth/triangle"] + PROTOCOL_FOLDERS
 TABLES += [
     {"name": "answer_table1", "kind": answer_table1, "sources": CLOCK_A5 + DEPTH_A5},
@@ -1341,6 +1424,7 @@ TABLES += [
     {"name": "answer_differences", "kind": answer_differences, "sources": ANSWER_SOURCES},
     {"name": "answer_protocol", "kind": answer_protocol, "sources": PROTOCOL_FOLDERS + T1000_BEDS},
     {"name": "answer_paper_box", "kind": answer_paper_box, "sources": PAPER_BOX + CLOCK_A5},
+    {"name": "answer_per_shape", "kind": answer_per_shape, "sources": PROTOCOL_FOLDERS + T1000_BEDS},
     {"name": "readme_answer", "kind": readme_answer, "sources": CLOCK_A5 + PROTOCOL_FOLDERS, "bare": True},
     {"name": "boundaries", "kind": boundary_table, "sources": [b[0] for b in BOUNDARIES]},
     # The protocol block's cases in the thirds of the paper's window, as depth_t1000_windows the preset's
