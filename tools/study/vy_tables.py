@@ -1403,8 +1403,8 @@ def answer_per_shape(spec):
             lo, hi = findings.first_rise(cells, sig)
             plo, phi, pcells = first_rise(CLOCK_A5, shape, sig)
             verdict = against_paper(lo, hi, shape)
-            text += (f"Bracket {bracket_text(lo, hi, cells)}: {verdict} (the 60 d preset: "
-                     f"{bracket_text(plo, phi, pcells)}). ")
+            text += (f"Its bracket by the rule of the Table 1 below, {bracket_text(lo, hi, cells)}; {verdict} (the 60 d "
+                     f"preset's by the same clock, {bracket_text(plo, phi, pcells)}). ")
             text += ("The paper's protocol, as far as the paper states it, gives the paper's bracket. "
                      if verdict.startswith("**yes") else
                      "**The paper's protocol, as far as the paper states it, does not give the paper's bracket.** ")
