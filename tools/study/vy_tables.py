@@ -1390,8 +1390,7 @@ def answer_per_shape(spec):
         done, on_way = paper_box_cells(shape)
         if not done and not on_way:
             continue
-        runs = [(t, f"T = {t:g} {SIDE[side(vs, sig)]}, {beds_text(vs)}, {abs(findings.z_from_zero(vs, sig)):.1f} se")
-                for t, vs in done.items()]
+        runs = [(t, f"T = {t:g} {beds_text(vs)}, {side_text(vs, sig)}") for t, vs in done.items()]
         runs += [(c.get("drive.period"), f"T = {c.get('drive.period'):g} not finished "
                   f"(t = {so_far(c)[0]:g} of {c.get('run.duration'):g})") for c in on_way]
         text = (f"- **{SHAPE_NAMES[shape]}**, the paper's T_rising {paper_observed(shape)}: in the paper's own protocol "
