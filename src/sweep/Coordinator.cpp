@@ -123,6 +123,7 @@ class Coordinator {
     results_.assign(n, CaseResult{});
     started_.assign(n, false);
     bedState_.assign(plan_.beds.size(), BedState::Waiting);
+    ownBeds_ = bedsMadeBy(plan_, only_);
     for (std::size_t c = 0; c < n; ++c) {
       const PlannedCase& p = plan_.cases[c];
       runDirs_.push_back(p.runDir);
@@ -437,15 +438,14 @@ class Coordinator {
         remaining += runningCaseSecondsLeft(c, ns);
       }
     }
-    for (std::size_t b = 0; b < plan_.beds.size(); ++b) {
+    for (const std::size_t b : ownBeds_) {
       if (bedState_[b] == BedState::Waiting || bedState_[b] == BedState::Running) {
         remaining += plan_.beds[b].estimatedSeconds * ns / plan_.speed.ns;  // planned at that speed
       }
     }
     std::string line = "[sweep] " + std::to_string(countStatus(CaseStatus::Ok)) + " done, " + std::to_string(running) +
                        " running, " + std::to_string(countStatus(CaseStatus::Failed)) + " failed, " + std::to_string(left) + " left";
-    if (!plan_.beds.empty())
-      line += ", beds " + std::to_string(bedsMade_) + "/" + std::to_string(plan_.beds.size());
+    if (!ownBeds_.empty()) line += ", beds " + std::to_string(bedsMade_) + "/" + std::to_string(ownBeds_.size());
     line += "  ETA " + formatDuration(remaining / concurrency_) + " (" + formatNumber(ns, 3) + " ns/particle-step" +
             (countStatus(CaseStatus::Ok) == 0 ? ", estimated)" : ")");
     return line;
@@ -462,6 +462,7 @@ class Coordinator {
   std::vector<std::string> runDirs_;
   std::vector<bool> started_;  // dispatched, finished before, or failed without running
   std::vector<BedState> bedState_;
+  std::vector<std::size_t> ownBeds_;  // the beds this run makes (bedsMadeBy): its status line counts only these
   std::map<std::int64_t, double> running_;  // task code -> start time
   std::deque<int> waitingRanks_;
   std::map<int, std::string> rankInfo_;

@@ -98,6 +98,13 @@ SweepPlan makeSweepPlan(SweepSpec spec, const std::string& outDir) {
   return plan;
 }
 
+std::vector<std::size_t> bedsMadeBy(const SweepPlan& plan, std::optional<std::size_t> only) {
+  std::vector<std::size_t> beds;
+  for (std::size_t b = 0; b < plan.beds.size(); ++b)
+    if (!only || plan.cases[*only].bedTask == static_cast<int>(b)) beds.push_back(b);
+  return beds;
+}
+
 std::string dryRunListing(const SweepPlan& plan, int jobs, int threads) {
   const double ns = plan.speed.ns;
   std::ostringstream out;

@@ -59,6 +59,9 @@ struct SweepPlan {
 // existing case directories; does not write anything).
 SweepPlan makeSweepPlan(SweepSpec spec, const std::string& outDir);
 
+// The beds (indices into plan.beds) that a run of the plan makes: all of them, or with `only`
+// (--case) just the one that case waits for, if any: the other cases' beds are other tasks' work.
+std::vector<std::size_t> bedsMadeBy(const SweepPlan& plan, std::optional<std::size_t> only);
 
 // The dry-run listing of a plan for `jobs` cases at once with `threads` threads each.
 std::string dryRunListing(const SweepPlan& plan, int jobs, int threads);

@@ -152,6 +152,26 @@ TEST(SweepPlan, CarvedBedsOfOneSeedCountTheirBasePourOnce) {
   EXPECT_FALSE(fs::exists(cache));  // planning makes nothing
 }
 
+// A --case task (one Slurm array task, one core of a local study) makes at most its own case's bed:
+// its ETA and bed count must not hold the beds of cases that other tasks run.
+TEST(SweepPlan, ACaseTaskMakesOnlyTheBedItsCaseWaitsFor) {
+  const std::string cache = (fs::temp_directory_path() / ("wiggle-plan-own-" + std::to_string(::getpid()))).string();
+  const SweepSpec spec = parseSweepSpec("[base.bed]\ncache_dir = \"" + cache +
+                                            "\"\n[grid.intruder]\nshape = [\"disk\", \"square\", \"triangle\"]\n"
+                                            "[grid.drive]\nperiod = [3.0, 4.0]\n",
+                                        "own.toml");
+  const SweepPlan plan = makeSweepPlan(spec, cache + "/out");
+  ASSERT_EQ(plan.cases.size(), 6u);
+  ASSERT_EQ(plan.beds.size(), 3u);  // one a shape, shared by its two periods
+  EXPECT_EQ(bedsMadeBy(plan, std::nullopt), (std::vector<std::size_t>{0, 1, 2}));
+  for (std::size_t c = 0; c < plan.cases.size(); ++c) {
+    const std::vector<std::size_t> own = bedsMadeBy(plan, c);
+    ASSERT_EQ(own.size(), 1u) << c;
+    EXPECT_EQ(plan.beds[own[0]].key, plan.cases[c].bedKey) << c;
+  }
+  EXPECT_FALSE(fs::exists(cache));  // planning makes nothing
+}
+
 TEST_F(SweepRunnerTest, RunsEveryCaseRecordsFailuresAndResumes) {
   // amplitude 7 fails the geometry check (box too narrow); period 0.0003 (3 steps: the intruder jumps 0.4 d a step)
   // drives the intruder so
