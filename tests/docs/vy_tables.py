@@ -9,7 +9,8 @@ docs/PERFORMANCE.md, README.md, results/*/README.md) differs from what the scrip
 results/, when a marker names no declared table or a declared table has no markers. Fix: run
 `tools/study/vy_tables.py` and commit the documents. First it checks that the check can fail: a
 document with one digit of a table changed must be reported, and the phase profile's harmonics
-must give back those of a made-up profile.
+must give back those of a made-up profile, and a change resolved on sigma but not on its own
+beds' larger scatter must be shown within the scatter.
 """
 import math
 import os
@@ -51,8 +52,24 @@ def check_phase_profile():
     return [] if all(abs(a - b) < 1e-12 for a, b in zip(got, want)) else [f"PhaseProfile: {got}, not {want}"]
 
 
+def check_own_scatter():
+    """A change of 0.0205 is 2.6 se on sigma 0.008 (2 beds a side); when one side's 2 beds scatter by a
+    standard deviation of 0.019 the change is not resolved (1.1 se by that) and is shown within the
+    scatter; when they agree it stands."""
+    problems = []
+    base = [-0.047, -0.039]
+    scattered = vy_tables.findings.Comparison("t", [-0.036, -0.009], base, +1)
+    agreeing = vy_tables.findings.Comparison("t", [-0.022, -0.023], base, +1)
+    for comparison, want in ((scattered, "1.1 se by its 2 beds' own scatter"), (agreeing, "")):
+        z = vy_tables.findings.judged(comparison, 0.008)[1]
+        got = vy_tables.own_scatter_caveat(comparison, z, 0.008)
+        if z < 2.0 or (want not in got if want else got):
+            problems.append(f"own_scatter_caveat: {comparison.a} against {base}: z = {z}, {got!r}")
+    return problems
+
+
 def main():
-    problems = check_can_fail() + check_phase_profile() + vy_tables.run(check=True)
+    problems = check_can_fail() + check_phase_profile() + check_own_scatter() + vy_tables.run(check=True)
     for p in problems:
         print(p)
     print(f"vy_tables: {len(problems)} differences between the documents' tables and results/")

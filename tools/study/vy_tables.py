@@ -1149,9 +1149,30 @@ def protocol_change(row, shape, period, paper_sign, sig, against=0):
     base = [v for seed, v in compared.items() if seed in beds_of_row] if paired else list(compared.values())
     if not base:
         return values, None
-    diff, z, _ = findings.judged(findings.Comparison(shape, values, base, paper_sign), sig)
-    toward = {+1: "toward the paper", -1: "away from the paper", 0: "within the scatter"}[findings.resolved_side(z)]
-    return values, (diff, abs(z), toward)
+    comparison = findings.Comparison(shape, values, base, paper_sign)
+    diff, z, _ = findings.judged(comparison, sig)
+    caveat = own_scatter_caveat(comparison, z, sig)
+    toward = {+1: "toward the paper", -1: "away from the paper", 0: "within the scatter"}[
+        0 if caveat else findings.resolved_side(z)]
+    return values, (diff, abs(z), toward, caveat)
+
+
+def own_scatter_caveat(comparison, z, sig):
+    """A change resolved on the scale's sigma whose sides' own beds (2 to OWN_SCATTER_BEDS - 1 of them,
+    too few for judged() to count their scatter) scatter enough that by their largest standard
+    deviation it would not be: the words that say so, else "". Such a change is shown within the
+    scatter: a cell is never shown as better known than its own beds show, even before judged()
+    counts them."""
+    few = [(findings.sd(v), whose, len(v)) for v, whose in ((comparison.a, "its"), (comparison.b, "the compared row's"))
+           if 2 <= len(v) < findings.OWN_SCATTER_BEDS]
+    own, whose, n = max(few, default=(0.0, "", 0))
+    if findings.resolved_side(z) == 0 or own <= sig:
+        return ""
+    z_own = findings.judged(comparison, own)[1]
+    if findings.resolved_side(z_own) != 0:
+        return ""
+    return (f"{abs(z_own):.1f} se by {whose} {n} beds' own scatter, one bed's standard deviation {own:.3f} "
+            f"against sigma {sig:.3f}")
 
 
 def protocol_row(case):
@@ -1172,8 +1193,8 @@ def box_alone_change(shape, period, paper_sign, sig):
 
 
 def change_text(change):
-    diff, z, toward = change
-    return f"{diff:+.4f} ({z:.1f} se, {toward})"
+    diff, z, toward, caveat = change
+    return f"{diff:+.4f} ({z:.1f} se, {toward}" + (f": {caveat}" if caveat else "") + ")"
 
 
 SIDE = {+1: "rising", -1: "sinking", 0: "level within the scatter"}   # a cell's side of zero, or the paper's
@@ -1253,7 +1274,7 @@ def paper_box_summary():
 def protocol_summary():
     """The protocol table so far in a sentence for the README ("" before any of its cells has a case)."""
     sig = sigma(cells_with_beds(CLOCK_A5))
-    measured, toward = [], []
+    measured, toward, own_scatter = [], [], []
     for row in range(1, len(PROTOCOL_ROWS)):
         name = PROTOCOL_ROWS[row][1].split(" (")[0]
         for shape, period, paper_sign in PROTOCOL_CELLS:
@@ -1265,6 +1286,8 @@ def protocol_summary():
                     said.append((BOX_ALONE.split(" (")[0], box_alone_change(shape, period, paper_sign, sig)))
                 toward += [f"{who} moves the {shape} at T = {period:g} {c[2]} ({c[1]:.1f} se)"
                            for who, c in said if c and c[2] != "within the scatter"]
+                own_scatter += [f"{who} moves the {shape} at T = {period:g} by {c[1]:.1f} se of sigma, {c[3]}"
+                                for who, c in said if c and c[3]]
     if not measured:
         return ""
     names = list(dict.fromkeys(name for name, _ in measured))
@@ -1273,6 +1296,8 @@ def protocol_summary():
     cells = len(PROTOCOL_CELLS) * (len(PROTOCOL_ROWS) - 1)
     on = " and ".join(f"the {shape} at T = {period:g}" for shape, period, _ in PROTOCOL_CELLS)
     moved = "; ".join(toward) if toward else f"none moves a cell by {RESOLVED:g} standard errors"
+    if own_scatter:
+        moved += f" of its own beds' scatter ({'; '.join(own_scatter)})"
     return (f"Of the preset's differences from the paper's stated protocol, measured so far by that clock on {on} "
             f"({', '.join(names)}: {len(measured)} of {cells} cells, {beds_each} bed{'s' if counts[-1] > 1 else ''} "
             f"each), {moved}. ")
@@ -1304,7 +1329,9 @@ def answer_protocol(spec):
               f"with the same sigma, which its pairing is expected to make smaller (not measured); the 300 d box's "
               f"sigma is taken as the 60 d box's (one bed per cell there, so not measured); the box alone is the "
               f"300 d box's row against the 60 d box's row of the same protocol; a change moves the "
-              f"cell toward the paper's sign when >= {RESOLVED:g} se that way. "
+              f"cell toward the paper's sign when >= {RESOLVED:g} se that way, also by the own standard deviation of "
+              f"a side of 2 to {findings.OWN_SCATTER_BEDS - 1} beds where that is larger than sigma (from "
+              f"{findings.OWN_SCATTER_BEDS} beds on, a side's own scatter counts in its se as everywhere on this page). "
               f"A case not finished yet is shown by the paper's rule over t = 100 to its last committed sample, beside "
               f"the baseline's over the same window (and the 60 d box's, in the 300 d box's row), once that window spans "
               f"{SO_FAR_FROM:g}: a rate so far, not judged)"]
