@@ -409,8 +409,8 @@ class Coordinator {
     resultsDirty_ = false;
   }
 
-  // Measured over every finished case (this session and earlier ones), or the cost model's.
-  double nsPerParticleStep() const { return sweepNsPerParticleStep(results_, plan_.speed.ns); }
+  // Measured over the finished cases this task counts (this session and earlier ones), or the cost model's.
+  double nsPerParticleStep() const { return sweepNsPerParticleStep(results_, only_, plan_.speed.ns); }
 
   // A running case's wall seconds left: its own estimate (progress.json, from the pace of its
   // own steps) once it has one; before that, or from a wiggle that writes none, the cost estimate

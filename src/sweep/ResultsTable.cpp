@@ -72,11 +72,14 @@ std::string joinedWarnings(const std::vector<std::string>& warnings) {
   return out;
 }
 
-double sweepNsPerParticleStep(const std::vector<CaseResult>& results, double fallback) {
+double sweepNsPerParticleStep(const std::vector<CaseResult>& results, std::optional<std::size_t> only,
+                              double fallback) {
   std::vector<double> each;
-  for (const CaseResult& r : results)
-    if (r.status == CaseStatus::Ok && r.particleSteps() > 0.0)
+  for (std::size_t c = 0; c < results.size(); ++c) {
+    const CaseResult& r = results[c];
+    if ((!only || c == *only) && r.status == CaseStatus::Ok && r.particleSteps() > 0.0)
       each.push_back(1e9 * r.summary.runWallSeconds / r.particleSteps());
+  }
   return each.empty() ? fallback : median(std::move(each));
 }
 

@@ -13,6 +13,7 @@
 // quoted as RFC 4180 says.
 #include <array>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -68,7 +69,11 @@ CaseResult readCaseSummary(const std::string& runDir);
 // one's stepping time per particle-step, or `fallback` (the cost model's) before any has finished.
 // A median, not the total time over the total work: a case paused for hours (SIGSTOP while the
 // machine does a benchmark) is one slow case and moves the pace by one place, not by its hours.
-double sweepNsPerParticleStep(const std::vector<CaseResult>& results, double fallback);
+// With `only` (a `--case` task) only that case counts: the others may have run on other machines
+// (a Slurm array's nodes, a study continued elsewhere), so until it finishes the pace is the cost
+// model's, this machine's.
+double sweepNsPerParticleStep(const std::vector<CaseResult>& results, std::optional<std::size_t> only,
+                              double fallback);
 
 // One row's inputs, which each fixed column reads its cell from.
 struct ResultRow {

@@ -36,10 +36,28 @@ TEST(ResultsTable, ThePaceIsTheMedianCaseNotThePausedOne) {
   };
   CaseResult pending;
   std::vector<CaseResult> results = {ok(300.0, 1e10), ok(30000.0, 1e10), ok(310.0, 1e10), pending};
-  EXPECT_DOUBLE_EQ(sweepNsPerParticleStep(results, 55.0), 31.0);
+  EXPECT_DOUBLE_EQ(sweepNsPerParticleStep(results, std::nullopt, 55.0), 31.0);
   results.push_back(ok(290.0, 1e10));
-  EXPECT_DOUBLE_EQ(sweepNsPerParticleStep(results, 55.0), 30.5);    // four: the mean of the middle two
-  EXPECT_DOUBLE_EQ(sweepNsPerParticleStep({pending}, 55.0), 55.0);  // none finished: the cost model's
+  EXPECT_DOUBLE_EQ(sweepNsPerParticleStep(results, std::nullopt, 55.0), 30.5);  // four: the mean of the middle two
+  EXPECT_DOUBLE_EQ(sweepNsPerParticleStep({pending}, std::nullopt, 55.0), 55.0);  // none finished: the cost model's
+}
+
+// A --case task's pace is its own case's: the sweep's other cases may have run on another machine
+// (here 1000 ns a particle-step, a slower one), so until its own finishes it is the cost model's.
+TEST(ResultsTable, ACaseTaskPacesByItsOwnCaseOnly) {
+  auto ok = [](double wallSeconds) {
+    CaseResult r;
+    r.status = CaseStatus::Ok;
+    r.summary.runWallSeconds = wallSeconds;
+    r.summary.particles = 1;
+    r.summary.steps = 10'000'000'000;
+    return r;
+  };
+  std::vector<CaseResult> results = {ok(10000.0), CaseResult{}, ok(10000.0)};
+  EXPECT_DOUBLE_EQ(sweepNsPerParticleStep(results, std::size_t{1}, 55.0), 55.0);  // its own not finished
+  EXPECT_DOUBLE_EQ(sweepNsPerParticleStep(results, std::nullopt, 55.0), 1000.0);   // the whole sweep's
+  results[1] = ok(300.0);
+  EXPECT_DOUBLE_EQ(sweepNsPerParticleStep(results, std::size_t{1}, 55.0), 30.0);
 }
 
 TEST(ResultsTable, QuotesCellsThatNeedIt) {
