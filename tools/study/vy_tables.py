@@ -1295,9 +1295,10 @@ def protocol_summary():
     beds_each = f"{counts[0]}" if len(counts) == 1 else f"{counts[0]}-{counts[-1]}"
     cells = len(PROTOCOL_CELLS) * (len(PROTOCOL_ROWS) - 1)
     on = " and ".join(f"the {shape} at T = {period:g}" for shape, period, _ in PROTOCOL_CELLS)
-    moved = "; ".join(toward) if toward else f"none moves a cell by {RESOLVED:g} standard errors"
+    moved = "; ".join(toward) if toward else (f"none moves a cell by {RESOLVED:g} standard errors"
+                                              + (" of its own beds' scatter" if own_scatter else ""))
     if own_scatter:
-        moved += f" of its own beds' scatter ({'; '.join(own_scatter)})"
+        moved += f" ({'; '.join(own_scatter)})"
     return (f"Of the preset's differences from the paper's stated protocol, measured so far by that clock on {on} "
             f"({', '.join(names)}: {len(measured)} of {cells} cells, {beds_each} bed{'s' if counts[-1] > 1 else ''} "
             f"each), {moved}. ")
