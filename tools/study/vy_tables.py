@@ -1399,7 +1399,10 @@ def factors_text(shape, period, paper_sign, sig, box_values):
     if moved:
         text += "Resolved: " + "; ".join(moved) + ". "
     elif changes:
-        text += f"No measured factor moves it by {RESOLVED:g} standard errors. "
+        # as the README's sentence: a change shown within its own beds' scatter was >= 2 se of sigma
+        own_scatter = any(c[3] for _, c in changes)
+        text += (f"No measured factor moves it by {RESOLVED:g} standard errors"
+                 + (" of its own beds' scatter" if own_scatter else "") + ". ")
     if box_values and side(box_values, sig) != paper_sign:
         text += ("So " + ("none" if not moved else "not all") + " of the difference is accounted for: what is left "
                  f"is {'all of it' if not moved else 'the rest'}, {UNMEASURED}.")
