@@ -1100,6 +1100,7 @@ def unfinished(source):
     return [c for c in cases_of(source, finished=False) if os.path.exists(os.path.join(c.dir, "trajectory.csv"))]
 
 
+OWN_SCATTER_WORDS = " of its own beds' scatter"  # after "by 2 standard errors", where a change is judged by it
 SO_FAR_FROM = 200.0   # an unfinished case is shown once its window t = 100-t_now spans this much
 
 
@@ -1296,7 +1297,7 @@ def protocol_summary():
     cells = len(PROTOCOL_CELLS) * (len(PROTOCOL_ROWS) - 1)
     on = " and ".join(f"the {shape} at T = {period:g}" for shape, period, _ in PROTOCOL_CELLS)
     moved = "; ".join(toward) if toward else (f"none moves a cell by {RESOLVED:g} standard errors"
-                                              + (" of its own beds' scatter" if own_scatter else ""))
+                                              + (OWN_SCATTER_WORDS if own_scatter else ""))
     if own_scatter:
         moved += f" ({'; '.join(own_scatter)})"
     return (f"Of the preset's differences from the paper's stated protocol, measured so far by that clock on {on} "
@@ -1402,7 +1403,7 @@ def factors_text(shape, period, paper_sign, sig, box_values):
         # as the README's sentence: a change shown within its own beds' scatter was >= 2 se of sigma
         own_scatter = any(c[3] for _, c in changes)
         text += (f"No measured factor moves it by {RESOLVED:g} standard errors"
-                 + (" of its own beds' scatter" if own_scatter else "") + ". ")
+                 + (OWN_SCATTER_WORDS if own_scatter else "") + ". ")
     if box_values and side(box_values, sig) != paper_sign:
         text += ("So " + ("none" if not moved else "not all") + " of the difference is accounted for: what is left "
                  f"is {'all of it' if not moved else 'the rest'}, {UNMEASURED}.")
