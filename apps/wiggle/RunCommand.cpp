@@ -42,8 +42,13 @@ void printCheck(const RunConfig& c, const std::string& out, bool resume) {
   std::printf("config ok: %s intruder at y0 = %g (%g d below the surface), A = %g, T = %g, mu = %g\n",
               std::string(choiceName(c.intruder.shape)).c_str(), c.intruder.y0, c.box.bedHeight - c.intruder.y0,
               c.drive.amplitude, c.drive.period, c.contact.mu);
-  std::printf("bed: %g x %g d, about %.0f grains (estimate), %zu intruder atoms, mass %g\n", c.box.width,
+  std::printf("bed: %g x %g d, about %.0f grains (estimate), %zu intruder atoms, mass %g", c.box.width,
               c.box.bedHeight, estimatedGrains(c), clump.offsetX.size(), clump.mass);
+  if (clump.massShares == 1)
+    std::printf("\n");
+  else  // intruder.contact_mass = "atom" (docs/PHYSICS.md, section 6)
+    std::printf(", in its contacts' meff %g (M / %u: one of the glued spheres filling it)\n", clump.contactMass(),
+                clump.massShares);
   const BedPlan bed = planBed(c, clump);
   switch (bed.source) {
     case BedPlan::Source::File:

@@ -151,6 +151,14 @@ const std::vector<KeyInfo>& keyTable() {
                     [](C& c, const std::string& v) { c.intruder.surface = *choiceNamed<IntruderSurface>(v); },
                     "the clump's atoms: smooth = neighbours at most 0.35 d apart; glued = touching (0.5 d apart), a "
                     "rough surface like the paper's glued spheres (docs/SHAPES.md)")),
+      shapesBed(choice(
+                    "intruder.contact_mass", choiceNameList<ContactMass>(),
+                    [](const C& c) -> std::string { return std::string(choiceName(c.intruder.contactMass)); },
+                    [](C& c, const std::string& v) { c.intruder.contactMass = *choiceNamed<ContactMass>(v); },
+                    "the intruder's mass in the damping of its contacts (meff = m M' / (m + M')): body = M' the whole "
+                    "mass (LAMMPS's fix rigid); atom = M' the mass of one of the n glued 0.5 d spheres that fill its "
+                    "outline, M / n (LAMMPS's fix move with the atoms' own masses; docs/PHYSICS.md, section 6). The "
+                    "body moves with M either way")),
       // [drive]
       number("drive.amplitude", [](C& c) -> double& { return c.drive.amplitude; }, atLeast(0),
              noBound, "d",

@@ -17,6 +17,7 @@ namespace wiggle {
 enum class ShapeName : std::uint8_t { Disk, Square, RectNarrow, RectWide, Triangle, Polygon };  // intruder.shape
 enum class MassRule : std::uint8_t { DiskArea, GluedDisk };      // intruder.mass_rule (docs/SHAPES.md, "Mass")
 enum class IntruderSurface : std::uint8_t { Smooth, Glued };     // intruder.surface (docs/SHAPES.md)
+enum class ContactMass : std::uint8_t { Body, Atom };            // intruder.contact_mass (docs/PHYSICS.md §6)
 enum class DriveForm : std::uint8_t { Displacement, Velocity };  // drive.form (docs/PHYSICS.md §7)
 enum class BedPour : std::uint8_t { Lattice, Random };           // bed.pour (docs/PHYSICS.md §8)
 enum class BedCavity : std::uint8_t { Poured, Carved };          // bed.cavity (docs/PHYSICS.md §8)
@@ -32,6 +33,10 @@ struct ChoiceNames<MassRule> {
 template <>
 struct ChoiceNames<IntruderSurface> {
   static constexpr std::array<std::string_view, 2> names{"smooth", "glued"};
+};
+template <>
+struct ChoiceNames<ContactMass> {
+  static constexpr std::array<std::string_view, 2> names{"body", "atom"};
 };
 template <>
 struct ChoiceNames<DriveForm> {
@@ -66,6 +71,7 @@ struct IntruderDef {
   double mass = 0.0;           // intruder.mass: 0 means the rule intruder.mass_rule
   MassRule massRule = MassRule::DiskArea;             // intruder.mass_rule
   IntruderSurface surface = IntruderSurface::Smooth;  // intruder.surface
+  ContactMass contactMass = ContactMass::Body;        // intruder.contact_mass
 };
 
 struct DriveDef {

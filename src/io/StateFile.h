@@ -11,8 +11,9 @@ namespace wiggle {
 
 // Bump when the payload layout of any state file changes. Files from kOldestStateFormatVersion on
 // are read (the readers ask BinaryReader::formatVersion() what the layout holds); older ones are
-// refused. Version 3 added the contact law (World's parameters); version 2 files are Hertz.
-constexpr std::uint32_t kStateFormatVersion = 3;
+// refused. Version 3 added the contact law (World's parameters); version 2 files are Hertz. Version 4
+// added the intruder's mass shares (its contact mass); earlier files have 1 share (the body's mass).
+constexpr std::uint32_t kStateFormatVersion = 4;
 constexpr std::uint32_t kOldestStateFormatVersion = 2;
 
 // A state file's payload and the format version it was written in.

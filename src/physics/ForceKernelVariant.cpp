@@ -89,7 +89,7 @@ template <class Law>
 double intruderPairForces(const ParticleStore& s, const ClumpDef& clump, const ClumpState& state, IntruderPairs& ip,
                           const ContactParams params, double dt, double width, bool updateShear, double overlapRatio) {
   double worstExcess = -std::numeric_limits<double>::infinity();
-  const double invClumpMass = 1.0 / clump.mass;
+  const double invClumpMass = 1.0 / clump.contactMass();
   const PairSlots slots{ip.shearX.data(), ip.shearY.data(), ip.forceX.data(), ip.forceY.data(),
                         ip.torqueArm.data()};
   auto inputs = [&](std::uint32_t p) {

@@ -37,7 +37,7 @@ struct ForceKernels {
   // The contacts between grains and the clump's atoms: each pair's force, torque arm and new history
   // written into its slots (IntruderPairs), nothing summed yet (World adds them to the grains and
   // the clump, in list order), so that it can run beside the force blocks. Returns the largest
-  // overlap excess. The clump's total mass enters meff, as LAMMPS does for rigid bodies.
+  // overlap excess. An atom enters meff with the clump's contact mass (ClumpDef::contactMass).
   double (*intruderPairForces)(const ParticleStore& s, const ClumpDef& clump, const ClumpState& state,
                                IntruderPairs& pairs, ContactParams params, double dt, double width, bool updateShear,
                                double overlapRatio);

@@ -14,7 +14,13 @@ namespace wiggle {
 struct ClumpDef {
   std::vector<double> offsetX, offsetY;  // atom centres relative to the clump's centre [d]
   double atomRadius = 0.25;              // [d]
-  double mass = 0.0;                     // total mass M, used for gravity, inertia and meff [rho d^3]
+  double mass = 0.0;                     // total mass M, used for gravity and the y equation [rho d^3]
+  // How many atoms the body's mass is shared by in the contacts' meff (docs/PHYSICS.md §6): 1, the
+  // whole body meets each grain (LAMMPS's fix rigid); n, each contact sees one of the n spheres the
+  // body is built of, M / n (LAMMPS's fix move with the atoms' own masses). The y equation keeps M.
+  std::uint32_t massShares = 1;
+
+  double contactMass() const { return mass / massShares; }  // an atom's mass in meff [rho d^3]
 };
 
 enum class HorizontalMotion : std::uint8_t {

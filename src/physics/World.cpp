@@ -198,6 +198,7 @@ void World::setIntruder(const ClumpDef& clump, double x, double y) {
   if (clump.offsetX.empty() || clump.offsetX.size() != clump.offsetY.size())
     throw Error("intruder needs at least one atom and as many x as y offsets");
   if (!(clump.mass > 0) || !std::isfinite(clump.mass)) throw Error("intruder mass must be > 0");
+  if (clump.massShares == 0) throw Error("intruder mass shares must be >= 1");
   if (!(clump.atomRadius > 0)) throw Error("intruder atom radius must be > 0");
   for (std::size_t a = 0; a < clump.offsetX.size(); ++a) {
     requireFinite(clump.offsetX[a], "intruder atom offset");
@@ -283,10 +284,12 @@ void World::setParameters(const WorldDef& def) {
   prepared_ = false;
 }
 
-void World::setIntruderMass(double mass) {
+void World::setIntruderMass(double mass, std::uint32_t massShares) {
   if (!hasIntruder_) throw Error("set an intruder before its mass");
   if (!(mass > 0) || !std::isfinite(mass)) throw Error("intruder mass must be > 0");
+  if (massShares == 0) throw Error("intruder mass shares must be >= 1");
   clump_.mass = mass;
+  clump_.massShares = massShares;
   prepared_ = false;
 }
 

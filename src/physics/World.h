@@ -94,9 +94,10 @@ class World {
   // or engine settings, run with these): the box width, mass model and density must be the ones
   // the particles were made with. The lists are rebuilt and the forces evaluated afresh.
   void setParameters(const WorldDef& def);
-  // Another total mass for the same intruder atoms (a bed poured around a held intruder of one mass,
-  // run with another); the forces are evaluated afresh, since the mass enters the contacts' meff.
-  void setIntruderMass(double mass);
+  // Another mass for the same intruder atoms (a bed poured around a held intruder of one mass, or
+  // with one contact mass, run with another: ClumpDef::mass and massShares); the forces are
+  // evaluated afresh, since the mass enters the contacts' meff.
+  void setIntruderMass(double mass, std::uint32_t massShares);
   // Every grain's velocity and spin multiplied by `factor` (bed making's damped relaxation); the
   // forces are evaluated afresh before the next step, as after any change of the state.
   void scaleGrainVelocities(double factor);

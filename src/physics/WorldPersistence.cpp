@@ -17,6 +17,9 @@ namespace wiggle {
 // Hertz worlds. (The physics floor does not include io: the number is restated here, and a
 // round-trip test of a version-2 payload keeps the two in step.)
 constexpr std::uint32_t kFirstFormatWithLaw = 3;
+// The version that added the clump's mass shares (ClumpDef::massShares) at the end; older files
+// hold clumps whose whole mass enters meff (1 share).
+constexpr std::uint32_t kFirstFormatWithMassShares = 4;
 
 void World::save(BinaryWriter& out) const {
   if (motion_.kind == HorizontalMotion::Prescribed)
@@ -91,6 +94,7 @@ void World::save(BinaryWriter& out) const {
   out.array(pendingNewToOld_);
   out.value(margins_.overlap);
   out.value(margins_.speed);
+  out.value(clump_.massShares);
 }
 
 namespace {
@@ -239,6 +243,10 @@ World World::load(BinaryReader& in) {
   w.pendingNewToOld_ = in.array<std::uint32_t>();
   w.margins_.overlap = in.value<double>();
   w.margins_.speed = in.value<double>();
+  if (in.formatVersion() >= kFirstFormatWithMassShares) {
+    w.clump_.massShares = in.value<std::uint32_t>();
+    if (w.clump_.massShares == 0) throw Error(in.what() + " is corrupt: an intruder of 0 mass shares");
+  }
   if (!w.listsStale_ && (w.xAtBuild_.size() != s.grainCount || w.yAtBuild_.size() != s.grainCount))
     throw Error(in.what() + " is corrupt: build positions do not match the grains");
   w.refreshKinematics();

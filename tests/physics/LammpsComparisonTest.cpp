@@ -100,6 +100,7 @@ World buildWorld(const json& c, Built& b, int velocityUlps = 0) {
     const json& cl = c["clump"];
     clump.atomRadius = cl["atom_radius"];
     clump.mass = cl["mass"];
+    clump.massShares = cl.value("mass_shares", 1u);
     w.setIntruder(clump, cl["center_x"], cl["center_y"]);
     ClumpMotion motion;
     motion.kind = HorizontalMotion::ConstantVelocity;
@@ -130,7 +131,7 @@ AtomState atomState(const World& w, const Built& b, const std::vector<std::uint3
     const double m = w.clump().mass;
     const double ay = w.intruderMotion().verticalFree ? (s.contactFy - m * w.def().gravity) / m : 0.0;
     return {s.x + w.clump().offsetX[it->second], s.y + w.clump().offsetY[it->second], s.vx,
-            s.vy - h * ay, 0.0, w.clump().atomRadius, m, false, true};
+            s.vy - h * ay, 0.0, w.clump().atomRadius, w.clump().contactMass(), false, true};
   }
   const ParticleStore& p = w.particles();
   const std::uint32_t i = indexOfTag.at(b.tagOfId.at(id));
@@ -453,6 +454,17 @@ TEST(LammpsComparison, RigidClumpPushesGrains) {
   checkAndReport("clump", cmp);
   EXPECT_GT(cmp.contactsCompared, 50);
   EXPECT_GT(cmp.clumpYTravel, 0.05);  // the clump really moves vertically
+}
+
+// The other coupling of a glued body (intruder.contact_mass = "atom"): LAMMPS moves the clump with
+// fix move (x prescribed, y integrated) and fix aveforce (every atom the group's mean y force), so
+// each contact's meff holds the atom's own mass, M / 37, while the clump moves as one body of mass M.
+TEST(LammpsComparison, ClumpWithItsAtomsMassInTheContactsPushesGrains) {
+  const json c = loadCase("clump_atom_mass");
+  ASSERT_EQ(c["clump"]["mass_shares"], 37);
+  const Comparison cmp = compareCase("clump_atom_mass");
+  checkAndReport("clump_atom_mass", cmp);
+  EXPECT_GT(cmp.clumpYTravel, 0.05);
 }
 
 // The second law (contact.law = "hooke", LAMMPS's gran/hooke/history) on the pile and the clump.

@@ -352,6 +352,7 @@ TEST(World, StateOfTheOldestFormatLoadsAsHertz) {
   const std::size_t lawAt = 4 * sizeof(double) + 1 + 5 * sizeof(double);  // width, dt, g, rho; mass model; kn..mu
   ASSERT_EQ(bytes[lawAt], static_cast<char>(contactLaw<HertzLaw>));
   bytes.erase(lawAt, 1);
+  bytes.resize(bytes.size() - sizeof(std::uint32_t));  // nor the intruder's mass shares (format 4) at the end
   ASSERT_EQ(kOldestStateFormatVersion, 2u) << "a format without the law byte is no longer read: drop this test";
   BinaryReader in(bytes.data(), bytes.size(), "old state", kOldestStateFormatVersion);
   World b = World::load(in);
@@ -575,6 +576,56 @@ TEST(World, ClumpAloneFallsFreelyAndHeldClumpStays) {
   const double t = 1.0;
   EXPECT_NEAR(w.intruder().y, 30.0 - 0.5 * t * t, 1e-10);
   EXPECT_NEAR(w.intruder().x, 10.0 + 2.0 * std::sin(2.0 * 3.141592653589793 * t / 4.0), 1e-12);
+}
+
+// intruder.contact_mass (ClumpDef::massShares, docs/PHYSICS.md §6): the mass an atom brings to meff
+// enters only the damping. A grain falling head-on onto a held one-atom clump: the normal force's
+// damping term is meff gamma_n v sqrt(delta Reff), so the clump's mass M and M / n change the
+// grain's force by exactly (meff_M - meff_M/n) gamma_n v sqrt(delta Reff), and nothing without damping.
+TEST(World, ContactMassEntersOnlyTheDamping) {
+  const double mass = 10.0, shares = 37, grainR = 0.5, atomR = 0.25, overlap = 1e-3, speed = 0.5;
+  const auto grainForce = [&](std::uint32_t massShares, double gamma) {
+    WorldDef def = smallBox();
+    def.contact.gammaN = gamma;
+    def.contact.gammaT = gamma;
+    World w(def);
+    w.addGrain(10.0, 30.0 + grainR + atomR - overlap, grainR, 0.0, -speed);
+    w.setIntruder(ClumpDef{{0.0}, {0.0}, atomR, mass, massShares}, 10.0, 30.0);
+    w.evaluateForces();
+    return w.particles().fy[0] + w.particles().mass[0] * def.gravity;  // the contact's force alone
+  };
+  const double m = WorldDef{}.density * 4.0 / 3.0 * std::numbers::pi * grainR * grainR * grainR;
+  const double meffBody = m * mass / (m + mass), meffAtom = m * (mass / shares) / (m + mass / shares);
+  const double gammaN = WorldDef{}.contact.gammaN, reff = grainR * atomR / (grainR + atomR);
+  const double expected = (meffBody - meffAtom) * gammaN * speed * std::sqrt(overlap * reff);
+  EXPECT_NEAR(grainForce(1, gammaN) - grainForce(37, gammaN), expected, 1e-9 * std::fabs(expected));
+  EXPECT_GT(std::fabs(expected), 1.0);  // the difference is a real one at this speed
+  EXPECT_EQ(grainForce(1, 0.0), grainForce(37, 0.0));  // no damping: the same bits
+}
+
+// The y equation keeps the whole mass M whatever the shares: over a stretch of a clump resting on a
+// pile, its mean contact force is M (g + dvy/dt), not M / n of it; and its shares go through save
+// and load.
+TEST(World, ClumpOfSharedMassMovesWithItsWholeMassAndKeepsItsSharesThroughSaveAndLoad) {
+  World w = makePile(10, 6, 11);
+  const double mass = 3.0;
+  w.setIntruder(ClumpDef{{-0.25, 0.25}, {0.0, 0.0}, 0.25, mass, 151}, 5.0, 9.5);
+  w.setIntruderMotion({HorizontalMotion::Held, 5.0, 0.0, 1.0, 0.0, true});
+  w.run(50000);  // t = 5: the pile settles and the clump falls onto it
+  const double vyBefore = w.intruder().vy, t0 = w.time();
+  double forceSum = 0.0;
+  const std::uint64_t steps = 10000;
+  w.runWatchingIntruder(steps, [&](const ClumpState& s, std::uint64_t, double) { forceSum += s.contactFy; });
+  const double meanForce = forceSum / steps, acceleration = (w.intruder().vy - vyBefore) / (w.time() - t0);
+  EXPECT_NEAR(meanForce, mass * (w.def().gravity + acceleration), 2e-3 * mass) << "y = " << w.intruder().y;
+  EXPECT_GT(meanForce, 0.5 * mass);  // resting on the pile: it bears the clump, not a share of it
+  EXPECT_EQ(w.clump().massShares, 151u);
+  World b = savedAndLoaded(w);
+  EXPECT_EQ(b.clump().massShares, 151u);
+  EXPECT_EQ(b.clump().mass, 3.0);
+  expectSameCourse(w, b, 3000);
+  EXPECT_THROW(w.setIntruderMass(3.0, 0), Error);
+  EXPECT_THROW(World(smallBox()).setIntruder(ClumpDef{{0.0}, {0.0}, 0.25, 3.0, 0}, 5, 5), Error);
 }
 
 // drive.ramp_periods: x = x0 + A min(1, t / t_ramp) sin(w t) starts at rest, and from t_ramp on it is

@@ -166,6 +166,19 @@ TEST(LammpsExport, DeckHoldsTheCaseParameters) {
   EXPECT_NE(inRamp.find("variable dx equal 3*v_s*sin(v_w*(step*dt))\n"), std::string::npos);
   EXPECT_EQ(in.find("v_s"), std::string::npos);  // the plain drive has no ramp (docs/PHYSICS.md §7)
 
+  // intruder.contact_mass = "atom": the atoms carry M / n in meff and the matching share of the force.
+  World shared = smallWorld(MassModel::Sphere);
+  shared.setIntruderMass(shared.clump().mass, 151);
+  const std::string inShared = makeLammpsDeck(shared, prepareCase(config)).input;
+  char atomMass[64], share[64], weight[64];
+  std::snprintf(atomMass, sizeof atomMass, "%.17g", shared.clump().mass / 151);
+  std::snprintf(share, sizeof share, "%.17g", shared.clump().mass / 151 / shared.clump().mass);
+  std::snprintf(weight, sizeof weight, "%.17g", shared.clump().mass);  // M g, g = 1
+  EXPECT_NE(inShared.find(std::string("set group intruder mass ") + atomMass + "\n"), std::string::npos);
+  EXPECT_NE(inShared.find(std::string("variable Fy equal (fcm(intruder,y)-") + weight + ")*" + share + "\n"),
+            std::string::npos)
+      << inShared;
+
   World hooke = smallWorld(MassModel::Sphere);  // the deck takes the law from the world it exports
   WorldDef def = hooke.def();
   def.contact.law = contactLaw<HookeLaw>;
@@ -291,15 +304,16 @@ bool haveLammps() { return std::system("command -v lmp > /dev/null 2>&1") == 0; 
 // test's temporary directory) with drive.ramp_periods = `rampPeriods`, runs the deck in LAMMPS for
 // 2,000 steps (t = 0.2) of the drive at A = 3, T = 2 and compares its intruder with wiggle's.
 void expectLammpsFollowsWiggle(const std::string& rampPeriods, const std::string& form = "displacement",
-                               const std::string& law = "hertz") {
+                               const std::string& law = "hertz", const std::string& contactMass = "body") {
   const testing_support::ScratchDir scratch("lammps-export");  // WIGGLE_KEEP_TEST_DIRS=1 keeps LAMMPS's log
   const fs::path& root = scratch.path();
   RunConfig config = loadRunConfig(
       std::nullopt, {"box.width=20", "box.bed_height=14", "box.seed=7", "intruder.y0=7", "drive.amplitude=3",
                      "drive.period=2", "drive.ramp_periods=" + rampPeriods, "drive.form=" + form, "contact.law=" + law,
-                     "run.duration=0.2", "run.sample_interval=0.01", "run.dump_interval=0", "bed.rest_energy=1e-6"});
+                     "run.duration=0.2", "run.sample_interval=0.01", "run.dump_interval=0", "bed.rest_energy=1e-6",
+                     "intruder.contact_mass=" + contactMass});
   config.bed.cacheDir = (root / "cache").string();
-  const std::string dir = (root / ("deck-ramp" + rampPeriods + "-" + form + "-" + law)).string();
+  const std::string dir = (root / ("deck-ramp" + rampPeriods + "-" + form + "-" + law + "-" + contactMass)).string();
   fs::remove_all(dir);
   const LammpsExportResult exported = exportLammps(prepareCase(config), dir, false);
   ASSERT_EQ(exported.deck.steps, 2000u);
@@ -372,6 +386,13 @@ TEST(LammpsExport, SlowLammpsRunOfAVelocityDriveFollowsWiggle) {
 TEST(LammpsExport, SlowLammpsRunOfAHookeBedFollowsWiggle) {
   if (!haveLammps()) GTEST_SKIP() << "lmp (LAMMPS) not found: apt-get install lammps to run this comparison";
   expectLammpsFollowsWiggle("0", "displacement", "hooke");  // a bed poured and driven under gran/hooke/history
+}
+
+// intruder.contact_mass = "atom": each of the smooth disk's shell atoms carries one of the 151
+// glued spheres' mass, M / 151, in meff, and gets that share of the clump's force.
+TEST(LammpsExport, SlowLammpsRunOfAnAtomContactMassFollowsWiggle) {
+  if (!haveLammps()) GTEST_SKIP() << "lmp (LAMMPS) not found: apt-get install lammps to run this comparison";
+  expectLammpsFollowsWiggle("0", "displacement", "hertz", "atom");
 }
 
 TEST(LammpsExport, SlowLammpsRunOfAHertzLimitDampingBedFollowsWiggle) {

@@ -340,6 +340,52 @@ TEST(Shape, GluedDiskMassIsAHexagonalPackingOfTouchingSpheres) {
   EXPECT_DOUBLE_EQ(makeClump(def, MassModel::Sphere, 1.0).mass, 12.5);
 }
 
+// The body of glued spheres (gluedSphereBody): every sphere inside the outline, touching neighbours on
+// a hexagonal lattice, and about as many as the lattice's packing fraction fills of the outline
+// shrunk by r (the area the centres can reach), less what its boundary cuts. Its count is the
+// number of shares of intruder.contact_mass = "atom", the same at any angle.
+TEST(Shape, GluedSphereBodyFillsEachOutlineWithTouchingSpheres) {
+  const double r = 0.25;
+  for (const ShapeName kind : paperShapes()) {
+    const Shape shape = makeShape(kind);
+    const std::vector<OutlinePoint> body = gluedSphereBody(shape, r);
+    const auto depth = [&](OutlinePoint p) {
+      return shape.isDisk() ? shape.diskRadius - std::hypot(p[0], p[1]) : depthInside(shape.outline, p);
+    };
+    double closest = 1e300;
+    for (std::size_t a = 0; a < body.size(); ++a) {
+      EXPECT_GE(depth(body[a]), r - 1e-12) << choiceName(kind);
+      for (std::size_t b = a + 1; b < body.size(); ++b)
+        closest = std::min(closest, std::hypot(body[a][0] - body[b][0], body[a][1] - body[b][1]));
+    }
+    EXPECT_NEAR(closest, 2 * r, 1e-12) << choiceName(kind);  // touching, never overlapping
+    // The reachable area (the outline shrunk by r) over a lattice cell's 2 sqrt(3) r^2; the boundary
+    // adds or loses up to a site per 2r of perimeter (a lattice line on an edge keeps all its sites).
+    const Outline& o = shape.outline;
+    double perimeter = 0.0;
+    for (std::size_t i = 0; i < o.size(); ++i)
+      perimeter += std::hypot(o[(i + 1) % o.size()][0] - o[i][0], o[(i + 1) % o.size()][1] - o[i][1]);
+    const double area = signedArea(o);
+    const double reachable = area - perimeter * r + kPi * r * r;  // a convex outline's inner parallel set
+    const double expected = reachable / (2 * std::sqrt(3.0) * r * r);
+    EXPECT_NEAR(static_cast<double>(body.size()), expected, perimeter / (2 * r)) << choiceName(kind);
+  }
+  EXPECT_EQ(gluedSphereBody(makeShape(ShapeName::Disk), r).size(), 151u);  // docs/SHAPES.md, "Mass"
+
+  IntruderDef def;
+  def.shape = ShapeName::Triangle;
+  EXPECT_EQ(contactMassShares(def), 1u);  // "body": the whole mass
+  EXPECT_EQ(makeClump(def, MassModel::Sphere, 1.0).massShares, 1u);
+  def.contactMass = ContactMass::Atom;
+  const std::uint32_t upright = contactMassShares(def);
+  EXPECT_EQ(upright, gluedSphereBody(makeShape(ShapeName::Triangle), r).size());
+  def.angle = 180.0;  // the body is built upright, then turned
+  EXPECT_EQ(contactMassShares(def), upright);
+  const ClumpDef clump = makeClump(def, MassModel::Sphere, 1.0);
+  EXPECT_EQ(clump.massShares, upright);
+  EXPECT_DOUBLE_EQ(clump.contactMass(), clump.mass / upright);
+}
+
 TEST(Shape, GluedSurfaceHasTouchingAtomsAndStillHoldsGrainsOut) {
   // intruder.surface = "glued": neighbouring surface atoms touch (spacing up to 2r = 0.5, against
   // 0.35 for the smooth surface), so the envelope has cusps 0.25 deep, but no grain of radius

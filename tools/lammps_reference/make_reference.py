@@ -121,6 +121,17 @@ def case_clump():
                    description="disk clump at vx = 2 (y free, no rotation) pushing grains on the base")
 
 
+def case_clump_atom_mass():
+    # The clump case with the other coupling of a glued body (intruder.contact_mass = "atom"): no
+    # fix rigid; fix move prescribes x and integrates y with each atom's own mass, and fix aveforce
+    # gives every atom the group's mean y force (gravity included), so the clump moves as one with
+    # its total mass while each contact's meff holds the atom's mass, M / 37.
+    p, s = case_clump()
+    return p, dict(s, coupling="atom",
+                   description="disk clump at vx = 2 (y free, no rotation; fix move + fix aveforce, each atom's own "
+                               "mass in meff) pushing grains on the base")
+
+
 def with_law(case, law, style, keywords=""):
     """The same case under another law of wiggle (contact.law = law), with the same numbers: LAMMPS's
     pair_style gran/<style>/history with the keywords after its coefficients."""
@@ -133,6 +144,7 @@ def with_law(case, law, style, keywords=""):
 
 
 CASES = {"oblique": case_oblique, "bounce": case_bounce, "pile": case_pile, "clump": case_clump,
+         "clump_atom_mass": case_clump_atom_mass,
          "pile_hooke": with_law(case_pile, "hooke", "hooke"),
          "clump_hooke": with_law(case_clump, "hooke", "hooke"),
          "pile_hertz_limit_damping": with_law(case_pile, "hertz_limit_damping", "hertz", "limit_damping"),
@@ -185,7 +197,12 @@ def write_deck(path, name, particles, s):
           f"fix grav all gravity {GRAVITY!r} vector 0 -1 0"]
     if has_base:
         d.append("fix hold base freeze")
-    if has_clump:
+    if has_clump and s.get("coupling") == "atom":
+        # x prescribed, y integrated by fix move with each atom's own mass; every atom gets the
+        # group's mean y force (contacts and gravity), so all move alike, as one body of mass M.
+        d.append(f"fix drive clump move linear {s['clump']['vx']!r} NULL NULL")
+        d.append("fix share clump aveforce NULL 0.0 NULL")
+    elif has_clump:
         # x momentum held (vx stays 3), y free, no rotation; the pair style then uses the body mass
         # in meff (PairGranHertzHistory reads mass_rigid from this fix).
         d.append("fix rig clump rigid single force * off on off torque * off off off")
@@ -270,7 +287,8 @@ def run_case(name, version):
         catoms = [q for q in out_particles if q["kind"] == "clump"]
         clump = dict(center_x=s["clump"]["x"], center_y=s["clump"]["y"], vx=s["clump"]["vx"],
                      atom_radius=s["clump"]["atom_radius"],
-                     mass=math.fsum(q["mass"] for q in catoms))
+                     mass=math.fsum(q["mass"] for q in catoms),
+                     mass_shares=len(catoms) if s.get("coupling") == "atom" else 1)
     case = dict(name=name, description=s["description"], lammps_version=version,
                 box_width=float(s["width"]), dt=DT, gravity=GRAVITY, density=DENSITY,
                 mass_model="sphere",

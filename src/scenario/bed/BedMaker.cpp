@@ -76,6 +76,10 @@ std::string pouredBedKey(const RunConfig& c, const ClumpDef& clump) {
     h.addBytes("law", 3);
     h.addValue(c.contact.law);
   }
+  if (clump.massShares != 1) {  // likewise: a bed poured around a body of one share keeps its key
+    h.addBytes("mass shares", 11);
+    h.addValue(clump.massShares);
+  }
   if (!intruder) h.addBytes("no intruder", 11);
   return h.hex();
 }
@@ -117,6 +121,7 @@ std::string bedKey(const RunConfig& config, const ClumpDef& runClump) {
   for (double v : {c.intruder.y0, clump.atomRadius, clump.mass}) h.addValue(v);
   h.add(clump.offsetX);
   h.add(clump.offsetY);
+  if (clump.massShares != 1) h.addValue(clump.massShares);
   return h.hex();
 }
 
@@ -444,6 +449,7 @@ CachedBed pinnedBed(const RunConfig& config, const ClumpDef& clump) {
     throw Error(what + "its intruder is at y = " + formatNumber(world.intruder().y) + ", intruder.y0 = " +
                 formatNumber(config.intruder.y0));
   world.setParameters(worldDefFor(config));
+  world.setIntruderMass(clump.mass, clump.massShares);  // this config's contact mass, whatever the file's was
   std::string note;
   if (bed.key != bedKey(config, clump))
     note = "bed.file: running on the bed made for other parameters (key " + bed.key + "), with this config's contact, "
@@ -613,7 +619,7 @@ CachedBed obtainBed(const RunConfig& config, const ClumpDef& clump, const BedPro
   // The bed of another friction (bed.mu) or intruder mass (bed.intruder_mass): run with this
   // config's. summary.json's bed_key names the bed.
   if (config.bed.mu >= 0.0) bed.world.setParameters(worldDefFor(config));
-  if (config.bed.intruderMass > 0.0) bed.world.setIntruderMass(clump.mass);
+  if (config.bed.intruderMass > 0.0) bed.world.setIntruderMass(clump.mass, clump.massShares);
   return bed;
 }
 

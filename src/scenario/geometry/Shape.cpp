@@ -277,22 +277,34 @@ double defaultIntruderMass(MassModel model, double density) {
   return area * perArea;
 }
 
-double gluedDiskMass(MassModel model, double density, double atomRadius) {
-  const double reach = 3.5 - atomRadius;  // centres this close to the disk's centre keep the atom inside
+std::vector<OutlinePoint> gluedSphereBody(const Shape& shape, double atomRadius) {
+  const auto depth = depthFunction(shape);
+  const OutlineBox box = boundingBox(shape.outline);
   const double pitch = 2.0 * atomRadius, rowPitch = std::sqrt(3.0) * atomRadius;
-  const int rows = static_cast<int>(std::floor(reach / rowPitch));
-  int atoms = 0;
-  for (int j = -rows; j <= rows; ++j) {
+  std::vector<OutlinePoint> centres;
+  const int rowFirst = static_cast<int>(std::floor(box.yMin / rowPitch)), rowLast = static_cast<int>(std::ceil(box.yMax / rowPitch));
+  const int columnFirst = static_cast<int>(std::floor(box.xMin / pitch)) - 1, columnLast = static_cast<int>(std::ceil(box.xMax / pitch));
+  for (int j = rowFirst; j <= rowLast; ++j) {
     const double y = j * rowPitch, shift = (j % 2 == 0) ? 0.0 : atomRadius;
-    const int columns = static_cast<int>(std::ceil(reach / pitch)) + 1;
-    for (int i = -columns; i <= columns; ++i) {
-      const double x = i * pitch + shift;
-      atoms += x * x + y * y <= reach * reach + 1e-12;
+    for (int i = columnFirst; i <= columnLast; ++i) {
+      const OutlinePoint c{i * pitch + shift, y};
+      if (depth(c) >= atomRadius - 1e-12) centres.push_back(c);
     }
   }
+  return centres;
+}
+
+double gluedDiskMass(MassModel model, double density, double atomRadius) {
+  const std::size_t atoms = gluedSphereBody(makeShape(ShapeName::Disk), atomRadius).size();
   const double r = atomRadius;
   const double atomMass = (model == MassModel::Sphere ? 4.0 / 3.0 * kPi * r * r * r : kPi * r * r) * density;
-  return atoms * atomMass;
+  return static_cast<double>(atoms) * atomMass;
+}
+
+std::uint32_t contactMassShares(const IntruderDef& def) {
+  if (def.contactMass == ContactMass::Body) return 1;
+  const Outline vertices(def.vertices.begin(), def.vertices.end());
+  return static_cast<std::uint32_t>(gluedSphereBody(makeShape(def.shape, vertices, 0.0)).size());
 }
 
 double intruderMass(const IntruderDef& def, MassModel model, double density) {
@@ -501,6 +513,7 @@ ClumpDef makeClump(const IntruderDef& def, const Shape& shape, MassModel model, 
   ClumpDef clump;
   clump.atomRadius = options.atomRadius;
   clump.mass = intruderMass(def, model, density);
+  clump.massShares = contactMassShares(def);
   for (const auto* list : {&atoms.surface, &atoms.guard})
     for (const OutlinePoint& p : *list) {
       clump.offsetX.push_back(p[0]);

@@ -44,10 +44,18 @@ Shape makeShape(const IntruderDef& def);
 // The default intruder mass (docs/PHYSICS.md §6): the disk outline's area pi 3.5^2 times the grain
 // material's mass per area, (2/3) rho d for spheres (a sphere's mass over its disc area) or rho for discs.
 double defaultIntruderMass(MassModel model, double density);  // [rho d^3]
-// The mass of the disk outline (diameter 7) built of glued atoms: a hexagonal packing of touching
-// spheres of radius atomRadius, one at the centre, every one inside the outline, each with the
-// grains' mass model and density. 151 atoms of radius 0.25: 9.88 rho d^3 as spheres (29.6 as discs).
+// The body of glued spheres an outline is built of (docs/SHAPES.md, "Mass"): a hexagonal packing of
+// touching spheres of radius atomRadius (rows along x, one sphere at the centre) of which every one
+// lies inside the outline. Their centres, in the outline's frame.
+std::vector<OutlinePoint> gluedSphereBody(const Shape& shape, double atomRadius = 0.25);
+// The mass of the disk outline (diameter 7) built of glued atoms, gluedSphereBody of the disk, each
+// atom with the grains' mass model and density. 151 atoms of radius 0.25: 9.88 rho d^3 as spheres
+// (29.6 as discs).
 double gluedDiskMass(MassModel model, double density, double atomRadius = 0.25);  // [rho d^3]
+// How many spheres share the intruder's mass in its contacts' meff (ClumpDef::massShares,
+// intruder.contact_mass): 1 for "body"; for "atom", the spheres of gluedSphereBody of the unrotated
+// outline (the body is built upright, then turned), whatever intruder.surface places.
+std::uint32_t contactMassShares(const IntruderDef& def);
 // def.mass when positive, else the one def.massRule names (the same for every shape).
 double intruderMass(const IntruderDef& def, MassModel model, double density);
 

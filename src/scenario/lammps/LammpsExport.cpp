@@ -127,8 +127,12 @@ std::string lammpsInput(const World& world, const RunConfig& config, const RunSc
   in += "variable nsteps index " + std::to_string(steps.total) + "\n";
   in += "group grains type 1\ngroup base type 2\ngroup intruder type 3\n";
   if (disc) in += "set group grains density/disc " + num(def.density) + "\nset group base density/disc " + num(def.density) + "\n";
-  in += "# Every intruder atom carries the clump's total mass M: meff = m M / (m + M) as in wiggle.\n";
-  in += "set group intruder mass " + num(clump.mass) + "\n\n";
+  if (clump.massShares == 1)
+    in += "# Every intruder atom carries the clump's total mass M: meff = m M / (m + M) as in wiggle.\n";
+  else
+    in += "# Every intruder atom carries one glued sphere's mass M / " + std::to_string(clump.massShares) +
+          " (intruder.contact_mass = \"atom\"):\n# meff = m m_atom / (m + m_atom) as in wiggle.\n";
+  in += "set group intruder mass " + num(clump.contactMass()) + "\n\n";
   in += contactLawTraits(p.law).lammpsPairStyle(p);
   in += "neighbor " + num(def.skin) + " bin\n";
   in += "neigh_modify delay 0 every 1 check yes\n";
@@ -155,8 +159,18 @@ std::string lammpsInput(const World& world, const RunConfig& config, const RunSc
     in += "variable dx equal " + num(motion.amplitude) + "*sin(v_w*(step*dt))\n";
     in += "variable vx equal " + num(motion.amplitude) + "*v_w*cos(v_w*(step*dt))\n";
   }
-  in += "# Free y: each atom gets the clump's force F_contact,y - M g (gravity is not applied to the atoms).\n";
-  in += "variable Fy equal fcm(intruder,y)-" + num(clump.mass * def.gravity) + "\n\n";
+  // Each atom's y force is its share m_atom / M of the clump's, so that it accelerates by (F - M g) / M
+  // whatever its mass (fix aveforce would give it F / n_atoms, which is that only when the atoms'
+  // masses add up to M: not so for a shell of atoms that each carry a sphere of the filled body).
+  if (clump.massShares == 1) {
+    in += "# Free y: each atom gets the clump's force F_contact,y - M g (gravity is not applied to the atoms).\n";
+    in += "variable Fy equal fcm(intruder,y)-" + num(clump.mass * def.gravity) + "\n\n";
+  } else {
+    in += "# Free y: each atom gets its share m_atom / M of the clump's force F_contact,y - M g, so that it\n"
+          "# accelerates by (F_contact,y - M g) / M (gravity is not applied to the atoms).\n";
+    in += "variable Fy equal (fcm(intruder,y)-" + num(clump.mass * def.gravity) + ")*" +
+          num(clump.contactMass() / clump.mass) + "\n\n";
+  }
   in += std::string("fix integrate grains nve/sphere") + (disc ? " disc" : "") + "\n";
   in += "fix grav grains gravity " + num(def.gravity) + " vector 0 -1 0\n";
   in += "fix hold base freeze\n";
