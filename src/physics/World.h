@@ -62,8 +62,8 @@ class SimulationError : public Error {
 // grains (base particles get none) and summed into the clump's contact force, in list order.
 void addIntruderPairForces(ParticleStore& s, ClumpState& state, const IntruderPairs& pairs);
 
-// Stage 5c of the step (ARCHITECTURE.md) alone: the intruder's pair forces in the default force
-// kernels, then addIntruderPairForces; for the micro-benchmarks.
+// The intruder's part of the step's ContactForces and IntruderSums stages (ARCHITECTURE.md) alone:
+// its pair forces in the default force kernels, then addIntruderPairForces; for the micro-benchmarks.
 double addIntruderContactForces(ParticleStore& s, const ClumpDef& clump, ClumpState& state, IntruderPairs& pairs,
                                 ContactParams params, double dt, double width, bool updateShear,
                                 double overlapRatio);
