@@ -55,10 +55,14 @@ struct ModelOptions {
   IntruderSurface surface = IntruderSurface::Smooth;
 };
 
-ClumpOptions clumpOptionsOf(const ModelOptions& opt) {
+// The intruder a row of the table stands for, its atoms placed as --surface says.
+IntruderDef intruderOf(ShapeName kind, const Outline& vertices, const ModelOptions& opt) {
   IntruderDef def;
+  def.shape = kind;
+  def.vertices.assign(vertices.begin(), vertices.end());
+  def.angle = opt.angle;
   def.surface = opt.surface;
-  return clumpOptionsFor(def);
+  return def;
 }
 
 Outline parseVertices(const std::string& text) {
@@ -165,7 +169,8 @@ void printRateTable(const std::vector<Row>& rows, const std::vector<double>& per
   }
 }
 
-void printClumpTable(const std::vector<Shape>& shapes, const ModelOptions& opt) {
+void printClumpTable(const std::vector<IntruderDef>& intruders, const std::vector<Shape>& shapes,
+                     const ModelOptions& opt) {
   const bool csv = opt.format == ModelFormat::Csv;
   if (csv)
     std::printf("shape,atoms,surface_atoms,guard_atoms,max_overshoot,max_outline_gap,"
@@ -173,9 +178,10 @@ void printClumpTable(const std::vector<Shape>& shapes, const ModelOptions& opt) 
   else
     std::printf("%-12s %6s %8s %6s %9s %9s %9s %8s %8s %8s\n", "shape", "atoms", "surface",
                 "guard", "overshoot", "out.gap", "env.depth", "spacing", "lodge", "corner");
-  for (const Shape& shape : shapes) {
-    const ClumpAtoms atoms = buildClumpAtoms(shape, clumpOptionsOf(opt));
-    const ClumpQuality q = measureClump(shape, atoms, clumpOptionsOf(opt));
+  for (std::size_t k = 0; k < shapes.size(); ++k) {
+    const Shape& shape = shapes[k];
+    const ClumpAtoms atoms = clumpAtomsFor(intruders[k], shape);
+    const ClumpQuality q = measureClump(shape, atoms, clumpOptionsFor(intruders[k]));
     std::printf(csv ? "%s,%zu,%zu,%zu,%.4f,%.4f,%.4f,%.4f,%.4f,%.1f\n"
                     : "%-12s %6zu %8zu %6zu %9.4f %9.4f %9.4f %8.4f %8.4f %8.1f\n",
                 std::string(choiceName(shape.kind)).c_str(), q.surfaceAtoms + q.guardAtoms, q.surfaceAtoms, q.guardAtoms,
@@ -188,8 +194,8 @@ void printClumpTable(const std::vector<Shape>& shapes, const ModelOptions& opt) 
                 "sinks between two surface atoms; sharpest convex corner in degrees)\n");
 }
 
-void writeGeometryJson(const Shape& shape, const ModelOptions& opt) {
-  const ClumpAtoms atoms = buildClumpAtoms(shape, clumpOptionsOf(opt));
+void writeGeometryJson(const IntruderDef& intruder, const Shape& shape, const ModelOptions& opt) {
+  const ClumpAtoms atoms = clumpAtomsFor(intruder, shape);
   const CavityGeometry g = cavityGeometry(shape.outline);
   nlohmann::json j;
   j["shape"] = choiceName(shape.kind);
@@ -224,21 +230,23 @@ void runModel(const ModelOptions& opt) {
       throw Error("--shape: unknown shape '" + opt.shape + "' (expected one of " +
                   joinedNames(choiceNameList<ShapeName>()) + ")");
   }
-  std::vector<Shape> shapes;
+  std::vector<IntruderDef> intruders;
   if (!opt.vertices.empty()) {
     if (chosen && *chosen != ShapeName::Polygon)
       throw Error("--vertices: only with --shape polygon (or no --shape), not '" + opt.shape + "'");
     const Outline vertices = parseVertices(opt.vertices);
     requireValidPolygon(vertices, "--vertices");  // the same check as makeShape, named for the CLI
-    shapes.push_back(makeShape(ShapeName::Polygon, vertices, opt.angle));
+    intruders.push_back(intruderOf(ShapeName::Polygon, vertices, opt));
   } else if (chosen) {
     if (*chosen == ShapeName::Polygon) throw Error("--shape polygon: needs --vertices \"x1,y1;x2,y2;...\"");
-    shapes.push_back(makeShape(*chosen, {}, opt.angle));
+    intruders.push_back(intruderOf(*chosen, {}, opt));
   } else {
     if (!opt.geometryPath.empty())
       throw Error("--geometry: choose one shape with --shape or --vertices");
-    for (const ShapeName kind : paperShapes()) shapes.push_back(makeShape(kind, {}, opt.angle));
+    for (const ShapeName kind : paperShapes()) intruders.push_back(intruderOf(kind, {}, opt));
   }
+  std::vector<Shape> shapes;
+  for (const IntruderDef& intruder : intruders) shapes.push_back(makeShape(intruder));
   std::vector<double> periods;
   if (!opt.periods.empty()) periods = parsePeriods(opt.periods);
 
@@ -247,14 +255,14 @@ void runModel(const ModelOptions& opt) {
     for (Row& row : rowsFor(shape)) rows.push_back(std::move(row));
 
   if (opt.clump) {
-    printClumpTable(shapes, opt);
+    printClumpTable(intruders, shapes, opt);
   } else if (opt.format == ModelFormat::Csv && !periods.empty()) {
     printRateTable(rows, periods, opt);  // one csv table per invocation: the rates replace Table 1
   } else {
     printGeometryTable(rows, opt);
     if (!periods.empty()) printRateTable(rows, periods, opt);
   }
-  if (!opt.geometryPath.empty()) writeGeometryJson(shapes.front(), opt);
+  if (!opt.geometryPath.empty()) writeGeometryJson(intruders.front(), shapes.front(), opt);
 }
 
 }  // namespace

@@ -16,7 +16,7 @@ namespace wiggle {
 // names, in the enums' order, are the config's (core/Choice.h).
 enum class ShapeName : std::uint8_t { Disk, Square, RectNarrow, RectWide, Triangle, Polygon };  // intruder.shape
 enum class MassRule : std::uint8_t { DiskArea, GluedDisk };      // intruder.mass_rule (docs/SHAPES.md, "Mass")
-enum class IntruderSurface : std::uint8_t { Smooth, Glued };     // intruder.surface (docs/SHAPES.md)
+enum class IntruderSurface : std::uint8_t { Smooth, Glued, Lattice };  // intruder.surface (docs/SHAPES.md)
 enum class ContactMass : std::uint8_t { Body, Atom };            // intruder.contact_mass (docs/PHYSICS.md §6)
 enum class DriveForm : std::uint8_t { Displacement, Velocity };  // drive.form (docs/PHYSICS.md §7)
 enum class BedPour : std::uint8_t { Lattice, Random };           // bed.pour (docs/PHYSICS.md §8)
@@ -32,7 +32,7 @@ struct ChoiceNames<MassRule> {
 };
 template <>
 struct ChoiceNames<IntruderSurface> {
-  static constexpr std::array<std::string_view, 2> names{"smooth", "glued"};
+  static constexpr std::array<std::string_view, 3> names{"smooth", "glued", "lattice"};
 };
 template <>
 struct ChoiceNames<ContactMass> {

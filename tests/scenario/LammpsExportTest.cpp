@@ -304,16 +304,22 @@ bool haveLammps() { return std::system("command -v lmp > /dev/null 2>&1") == 0; 
 // test's temporary directory) with drive.ramp_periods = `rampPeriods`, runs the deck in LAMMPS for
 // 2,000 steps (t = 0.2) of the drive at A = 3, T = 2 and compares its intruder with wiggle's.
 void expectLammpsFollowsWiggle(const std::string& rampPeriods, const std::string& form = "displacement",
-                               const std::string& law = "hertz", const std::string& contactMass = "body") {
+                               const std::string& law = "hertz", const std::string& intruderSets = "") {
   const testing_support::ScratchDir scratch("lammps-export");  // WIGGLE_KEEP_TEST_DIRS=1 keeps LAMMPS's log
   const fs::path& root = scratch.path();
-  RunConfig config = loadRunConfig(
-      std::nullopt, {"box.width=20", "box.bed_height=14", "box.seed=7", "intruder.y0=7", "drive.amplitude=3",
-                     "drive.period=2", "drive.ramp_periods=" + rampPeriods, "drive.form=" + form, "contact.law=" + law,
-                     "run.duration=0.2", "run.sample_interval=0.01", "run.dump_interval=0", "bed.rest_energy=1e-6",
-                     "intruder.contact_mass=" + contactMass});
+  std::vector<std::string> sets{"box.width=20", "box.bed_height=14", "box.seed=7", "intruder.y0=7", "drive.amplitude=3",
+                                "drive.period=2", "drive.ramp_periods=" + rampPeriods, "drive.form=" + form,
+                                "contact.law=" + law, "run.duration=0.2", "run.sample_interval=0.01",
+                                "run.dump_interval=0", "bed.rest_energy=1e-6"};
+  std::string label = "deck-ramp" + rampPeriods + "-" + form + "-" + law;
+  std::istringstream items(intruderSets);  // intruder keys, as "key=value key=value"
+  for (std::string item; items >> item;) {
+    sets.push_back("intruder." + item);
+    label += "-" + item.substr(item.find('=') + 1);
+  }
+  RunConfig config = loadRunConfig(std::nullopt, sets);
   config.bed.cacheDir = (root / "cache").string();
-  const std::string dir = (root / ("deck-ramp" + rampPeriods + "-" + form + "-" + law + "-" + contactMass)).string();
+  const std::string dir = (root / label).string();
   fs::remove_all(dir);
   const LammpsExportResult exported = exportLammps(prepareCase(config), dir, false);
   ASSERT_EQ(exported.deck.steps, 2000u);
@@ -392,7 +398,14 @@ TEST(LammpsExport, SlowLammpsRunOfAHookeBedFollowsWiggle) {
 // glued spheres' mass, M / 151, in meff, and gets that share of the clump's force.
 TEST(LammpsExport, SlowLammpsRunOfAnAtomContactMassFollowsWiggle) {
   if (!haveLammps()) GTEST_SKIP() << "lmp (LAMMPS) not found: apt-get install lammps to run this comparison";
-  expectLammpsFollowsWiggle("0", "displacement", "hertz", "atom");
+  expectLammpsFollowsWiggle("0", "displacement", "hertz", "contact_mass=atom");
+}
+
+// intruder.surface = "lattice": the triangle of touching spheres filling its outline (slant faces
+// as staircases), turned apex down, with its atoms' mass in the contacts.
+TEST(LammpsExport, SlowLammpsRunOfALatticeTriangleFollowsWiggle) {
+  if (!haveLammps()) GTEST_SKIP() << "lmp (LAMMPS) not found: apt-get install lammps to run this comparison";
+  expectLammpsFollowsWiggle("0", "displacement", "hertz", "shape=triangle angle=180 y0=9 surface=lattice contact_mass=atom");
 }
 
 TEST(LammpsExport, SlowLammpsRunOfAHertzLimitDampingBedFollowsWiggle) {

@@ -386,6 +386,75 @@ TEST(Shape, GluedSphereBodyFillsEachOutlineWithTouchingSpheres) {
   EXPECT_DOUBLE_EQ(clump.contactMass(), clump.mass / upright);
 }
 
+// intruder.surface = "lattice": the upright outline filled with touching spheres on a square lattice
+// whose lowest row rests on the base, turned with the outline; its shell traced in order around it.
+TEST(Shape, LatticeBodyFillsTheUprightOutlineAndTurnsWithIt) {
+  const double r = 0.25;
+  for (const ShapeName kind : paperShapes()) {
+    IntruderDef def;
+    def.shape = kind;
+    def.surface = IntruderSurface::Lattice;
+    const Shape shape = makeShape(def);
+    const ClumpAtoms atoms = clumpAtomsFor(def, shape);
+    std::vector<OutlinePoint> all = atoms.surface;
+    all.insert(all.end(), atoms.guard.begin(), atoms.guard.end());
+    double lowest = 1e300, closest = 1e300;
+    for (std::size_t a = 0; a < all.size(); ++a) {
+      const double depth = shape.isDisk() ? shape.diskRadius - std::hypot(all[a][0], all[a][1])
+                                          : depthInside(shape.outline, all[a]);
+      EXPECT_GE(depth, r - 1e-12) << choiceName(kind);  // wholly inside
+      lowest = std::min(lowest, all[a][1]);
+      for (std::size_t b = a + 1; b < all.size(); ++b) closest = std::min(closest, std::hypot(all[a][0] - all[b][0], all[a][1] - all[b][1]));
+      // on the square lattice of pitch 2r with a column through the centre
+      EXPECT_NEAR(std::remainder(all[a][0], 2 * r), 0.0, 1e-9) << choiceName(kind);
+    }
+    EXPECT_NEAR(closest, 2 * r, 1e-12) << choiceName(kind);  // touching
+    EXPECT_NEAR(lowest, boundingBox(shape.outline).yMin + r, 1e-12) << choiceName(kind);  // resting on the base
+    // The shell in order: consecutive boundary spheres are lattice neighbours (touching or diagonal).
+    for (std::size_t a = 0; a < atoms.surface.size(); ++a) {
+      const OutlinePoint p = atoms.surface[a], q = atoms.surface[(a + 1) % atoms.surface.size()];
+      EXPECT_LE(std::hypot(p[0] - q[0], p[1] - q[1]), 2 * std::sqrt(2.0) * r + 1e-9) << choiceName(kind) << " " << a;
+    }
+    // Its spheres share the mass in contacts with intruder.contact_mass = "atom".
+    def.contactMass = ContactMass::Atom;
+    EXPECT_EQ(contactMassShares(def), all.size()) << choiceName(kind);
+    EXPECT_EQ(makeClump(def, MassModel::Sphere, 1.0).offsetX.size(), all.size());
+  }
+  // The square and the rectangles hold whole rows and columns: their outline within the glued
+  // shell's 0.104 of the atoms; the triangle's slant faces cut the rows into steps.
+  IntruderDef def;
+  def.surface = IntruderSurface::Lattice;
+  for (const ShapeName kind : {ShapeName::Square, ShapeName::RectNarrow, ShapeName::RectWide}) {
+    def.shape = kind;
+    const Shape shape = makeShape(def);
+    EXPECT_LT(measureClump(shape, clumpAtomsFor(def, shape)).maxOutlineGap, 0.105) << choiceName(kind);
+  }
+  def.shape = ShapeName::Triangle;
+  const Shape triangle = makeShape(def);
+  EXPECT_GT(measureClump(triangle, clumpAtomsFor(def, triangle)).maxOutlineGap, 0.5);
+  // Apex down: the upright body turned by 180 degrees, sphere for sphere.
+  IntruderDef down = def;
+  down.angle = 180.0;
+  const ClumpAtoms up = clumpAtomsFor(def, triangle), turned = clumpAtomsFor(down, makeShape(down));
+  ASSERT_EQ(turned.surface.size(), up.surface.size());
+  ASSERT_EQ(turned.guard.size(), up.guard.size());
+  for (std::size_t a = 0; a < up.guard.size(); ++a) {
+    EXPECT_NEAR(turned.guard[a][0], -up.guard[a][0], 1e-12);
+    EXPECT_NEAR(turned.guard[a][1], -up.guard[a][1], 1e-12);
+  }
+  // An outline no sphere fits in is refused, naming the surface.
+  IntruderDef sliver;
+  sliver.shape = ShapeName::Polygon;
+  sliver.vertices = {{0.0, 0.0}, {3.0, 0.0}, {0.0, 0.3}};
+  sliver.surface = IntruderSurface::Lattice;
+  try {
+    clumpAtomsFor(sliver, makeShape(sliver));
+    FAIL() << "a sliver 0.3 d tall was given a lattice body";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("intruder.surface = lattice"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Shape, GluedSurfaceHasTouchingAtomsAndStillHoldsGrainsOut) {
   // intruder.surface = "glued": neighbouring surface atoms touch (spacing up to 2r = 0.5, against
   // 0.35 for the smooth surface), so the envelope has cusps 0.25 deep, but no grain of radius

@@ -53,8 +53,9 @@ std::vector<OutlinePoint> gluedSphereBody(const Shape& shape, double atomRadius 
 // (29.6 as discs).
 double gluedDiskMass(MassModel model, double density, double atomRadius = 0.25);  // [rho d^3]
 // How many spheres share the intruder's mass in its contacts' meff (ClumpDef::massShares,
-// intruder.contact_mass): 1 for "body"; for "atom", the spheres of gluedSphereBody of the unrotated
-// outline (the body is built upright, then turned), whatever intruder.surface places.
+// intruder.contact_mass): 1 for "body"; for "atom", the spheres of the body the intruder is built
+// of, upright (then turned): its own atoms for intruder.surface = "lattice", else gluedSphereBody's,
+// the body of glued spheres a shell stands for.
 std::uint32_t contactMassShares(const IntruderDef& def);
 // def.mass when positive, else the one def.massRule names (the same for every shape).
 double intruderMass(const IntruderDef& def, MassModel model, double density);
@@ -84,8 +85,9 @@ struct ClumpAtoms {
   double atomRadius = 0.25;           // [d]
 };
 
-// The construction an intruder definition asks for (intruder.surface): "smooth", the defaults
-// above; "glued", neighbouring surface atoms touching (maxSpacing = 2 atomRadius).
+// The shell an intruder definition asks for (intruder.surface): "smooth", the defaults above;
+// "glued", neighbouring surface atoms touching (maxSpacing = 2 atomRadius). ("lattice" places no
+// shell: clumpAtomsFor.)
 ClumpOptions clumpOptionsFor(const IntruderDef& def);
 
 // Places the atoms for a shape (no validation; see measureClump / makeClump).
@@ -116,8 +118,15 @@ ClumpQuality measureClump(const Shape& shape, const ClumpAtoms& atoms,
 // atoms (an envelope deviation beyond max(0.1, worst corner deviation)).
 ClumpAtoms buildClumpAtoms(const Shape& shape, const ClumpOptions& options = {});
 
+// The atoms an intruder definition asks for (intruder.surface): a shell built as clumpOptionsFor(def)
+// says ("smooth", "glued"; buildClumpAtoms), or "lattice": the upright outline filled with touching
+// spheres on a square lattice (its lowest row on the base, a column through the centre), turned
+// with the outline, its outer boundary in order as the shell and the rest as guards
+// (docs/SHAPES.md). Throws wiggle::Error when the outline cannot hold them. `shape` is makeShape(def).
+ClumpAtoms clumpAtomsFor(const IntruderDef& def, const Shape& shape);
+
 // The engine's clump for an intruder definition: atom offsets relative to the centroid and the mass,
-// built as clumpOptionsFor(def) says. The second form takes the shape makeShape(def) already made.
+// its atoms clumpAtomsFor(def). The second form takes the shape makeShape(def) already made.
 ClumpDef makeClump(const IntruderDef& def, MassModel model, double density);
 ClumpDef makeClump(const IntruderDef& def, const Shape& shape, MassModel model, double density);
 
