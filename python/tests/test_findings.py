@@ -207,5 +207,78 @@ class PairedChangesTest(unittest.TestCase):
         self.assertFalse(findings.change_resolved([], 0.05))
 
 
+class ShapeScatterTest(unittest.TestCase):
+    """One bed's sigma per shape: pooled over the shape's cells of two beds or more (shape_scatter)."""
+
+    def test_pooled_over_a_shapes_cells_with_their_degrees_of_freedom(self):
+        sigma, dof, cells = findings.pooled_scatter([[0.10, 0.12], [0.0, 0.01, 0.02], [0.5]])
+        # squares 0.0002 + 0.0002 over (1 + 2) degrees of freedom; the one-bed cell tells nothing
+        self.assertEqual((dof, cells), (3, 2))
+        self.assertAlmostEqual(sigma, math.sqrt(0.0004 / 3))
+
+    def test_a_quiet_shape_is_not_judged_by_another_shapes_scatter(self):
+        # the largest-sd rule gives every shape the triangle's 0.1 / sqrt(2); pooled by shape the square
+        # keeps its own, five times smaller, and the triangle's is its own
+        cells = {"square": [[0.020, 0.022], [0.016, 0.018], [0.030, 0.032, 0.034]], "triangle": [[-0.05, -0.15]]}
+        largest = findings.largest_sd([c for shape in cells.values() for c in shape])
+        scatter = findings.shape_scatter(cells)
+        self.assertAlmostEqual(largest, 0.1 / math.sqrt(2))
+        self.assertAlmostEqual(scatter["square"].sigma, math.sqrt((0.000002 + 0.000002 + 0.000008) / 4))
+        self.assertEqual((scatter["square"].dof, scatter["square"].cells, scatter["square"].own), (4, 3, True))
+        self.assertLess(scatter["square"].sigma, largest / 5)
+        self.assertAlmostEqual(scatter["triangle"].sigma, largest)
+        self.assertEqual(scatter["triangle"].dof, 1)
+        # the same cell judged by each: 2 beds at +0.019 from zero
+        rising = compare("square rises", [0.017, 0.021], None, +1)
+        self.assertEqual(judged(rising, largest)[1:], (0.4, "within"))
+        self.assertEqual(judged(rising, scatter["square"].sigma)[2], "for")
+
+    def test_a_shape_without_a_cell_of_two_beds_takes_every_shapes_pool(self):
+        cells = {"disk": [[0.0, 0.1]], "square": [[0.3, 0.5]], "triangle": [[-0.2]], "rect_wide": []}
+        scatter = findings.shape_scatter(cells)
+        pooled = math.sqrt((0.005 + 0.02) / 2)
+        for shape in ("triangle", "rect_wide"):
+            self.assertAlmostEqual(scatter[shape].sigma, pooled)
+            self.assertEqual((scatter[shape].dof, scatter[shape].cells, scatter[shape].own), (2, 2, False))
+        self.assertTrue(scatter["disk"].own)
+        self.assertAlmostEqual(scatter["disk"].sigma, 0.1 / math.sqrt(2))
+
+    def test_no_degrees_of_freedom_no_sigma(self):
+        sigma, dof, cells = findings.pooled_scatter([[0.1], [0.2]])
+        self.assertTrue(math.isnan(sigma))
+        self.assertEqual((dof, cells), (0, 0))
+        scatter = findings.shape_scatter({"disk": [[0.1]], "square": []})
+        self.assertTrue(all(math.isnan(s.sigma) and s.dof == 0 and not s.own for s in scatter.values()))
+
+    def test_students_t_for_few_degrees_of_freedom(self):
+        for dof, t in ((1, 12.706), (2, 4.303), (3, 3.182), (4, 2.776), (5, 2.571), (10, 2.228), (30, 2.042)):
+            self.assertAlmostEqual(findings.t_critical(dof), t, places=3)
+        self.assertAlmostEqual(findings.t_critical(100000), 1.960, places=3)
+        self.assertEqual(findings.t_critical(0), math.inf)
+        self.assertAlmostEqual(findings.t_critical(5, level=0.90), 2.015, places=3)
+
+
+class SignCrossingTest(unittest.TestCase):
+    """Where the mean turns positive (the paper's reading) against the paper's range."""
+
+    def test_at_or_below_inside_and_above(self):
+        paper = (3.0, 4.0)
+        self.assertEqual(findings.crossing_against_range(2.5, 3.0, paper), -1)
+        self.assertEqual(findings.crossing_against_range(2.0, 2.5, paper), -1)
+        self.assertEqual(findings.crossing_against_range(3.0, 4.0, paper), 0)
+        self.assertEqual(findings.crossing_against_range(3.5, 5.0, paper), 0)
+        self.assertEqual(findings.crossing_against_range(4.0, 5.0, paper), +1)
+
+    def test_what_the_periods_run_cannot_place(self):
+        paper = (2.0, 3.0)
+        # positive already at 2.5, its shortest run: below 2 or inside 2-3, the runs do not say
+        self.assertIsNone(findings.crossing_against_range(None, 2.5, paper))
+        # positive already at 2: at or below the lower end whatever lies below
+        self.assertEqual(findings.crossing_against_range(None, 2.0, paper), -1)
+        # never positive up to 8, past the upper end: above the range; up to 2.5 only: not placed
+        self.assertEqual(findings.crossing_against_range(8.0, None, paper), +1)
+        self.assertIsNone(findings.crossing_against_range(2.5, None, paper))
+
+
 if __name__ == "__main__":
     unittest.main()

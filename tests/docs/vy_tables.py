@@ -9,8 +9,9 @@ docs/PERFORMANCE.md, README.md, results/*/README.md) differs from what the scrip
 results/, when a marker names no declared table or a declared table has no markers. Fix: run
 `tools/study/vy_tables.py` and commit the documents. First it checks that the check can fail: a
 document with one digit of a table changed must be reported, and the phase profile's harmonics
-must give back those of a made-up profile, and a change resolved on sigma but not on its own
-beds' larger scatter must be shown within the scatter.
+must give back those of a made-up profile, a change resolved on sigma but not on its own beds'
+larger scatter must be shown within the scatter, and the words for the paper's side and for a rate
+through its window must follow their rules.
 """
 import math
 import os
@@ -68,8 +69,25 @@ def check_own_scatter():
     return problems
 
 
+def check_words():
+    """The paper's Table 1 says "not rising" at or below its range, not "sinking": a cell level within
+    the scatter there is on the paper's side, and not where the paper has it rising; a rate that falls
+    under a quarter of the first half's in the second is said to stall."""
+    problems = []
+    for values, paper, want in (([-0.001], -1, True), ([-0.05], -1, True), ([0.05], -1, False),
+                                ([-0.001], +1, False), ([0.05], +1, True)):
+        if vy_tables.on_paper_side(values, 0.01, paper) != want:
+            problems.append(f"on_paper_side({values}, 0.01, {paper}) is not {want}")
+    for first, second, want in ((0.070, 0.008, "then stalls"), (-0.026, -0.056, "then faster"),
+                                (0.05, 0.03, "then slower"), (0.05, -0.03, "then turns back")):
+        if vy_tables.course_words(first, second) != want:
+            problems.append(f"course_words({first}, {second}) is not {want!r}")
+    return problems
+
+
 def main():
-    problems = check_can_fail() + check_phase_profile() + check_own_scatter() + vy_tables.run(check=True)
+    problems = (check_can_fail() + check_phase_profile() + check_own_scatter() + check_words()
+                + vy_tables.run(check=True))
     for p in problems:
         print(p)
     print(f"vy_tables: {len(problems)} differences between the documents' tables and results/")

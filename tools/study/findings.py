@@ -5,8 +5,10 @@ and prints what these decide; python/tests/test_findings.py tests them on small 
 A cell is the beds of one case, a list of V_y values (one per bed). A comparison is a cell against
 another cell or against zero, with the direction the paper's finding predicts. Its difference is
 counted in standard errors, se = sigma sqrt(1/n_a + 1/n_b) (n: beds; 1/n_b = 0 against zero), where
-sigma is one bed's standard deviation at that scale (largest_sd over the scale's cells of several
-beds), or a cell's own when it has OWN_SCATTER_BEDS beds or more and they scatter more. A comparison
+sigma is one bed's standard deviation: for the findings, one per scale (largest_sd over the scale's
+cells of several beds); for a comparison within one shape, that shape's (shape_scatter: pooled over
+its cells of several beds, with its degrees of freedom); or a cell's own when it has
+OWN_SCATTER_BEDS beds or more and they scatter more. A comparison
 goes "for" the paper at >= RESOLVED standard errors its way (as printed, to 0.1), "against" at
 >= RESOLVED the other way, else "within". A finding at a scale is "reproduced" when every comparison
 goes for it, "not reproduced" when one goes against, "not resolved" otherwise, "not judged" when a
@@ -15,6 +17,12 @@ note says why it has no comparisons, "not measured" when nothing bears on it.
     comparison = compare(label, a, b, direction)      # b None: against zero; None when a cell is empty
     difference, z, outcome = judged(comparison, sigma)
     finding_verdict(sigma, [comparison, ...], note)   # 'reproduced', 'not reproduced', ...
+    shape_scatter({shape: [cell, ...]})               # {shape: Scatter(sigma, dof, cells, own)}
+
+The rule stays RESOLVED = 2 standard errors whatever sigma's degrees of freedom. With few of them
+2 se is a weaker test than it reads (a sigma from 2 degrees of freedom: Student's t puts the
+two-sided 95 % at 4.30 se, from 5 at 2.57); t_critical(dof) gives that value, for the documents to
+print beside a sigma and its degrees of freedom.
 """
 import math
 from typing import NamedTuple
@@ -240,3 +248,92 @@ def pooled_sd(changes):
 def change_resolved(changes, spread):
     """Whether a cell's mean change is >= RESOLVED standard errors (spread / sqrt(beds)) from zero."""
     return bool(changes) and abs(mean(changes)) >= RESOLVED * spread / math.sqrt(len(changes))
+
+
+# ---- one bed's scatter per shape
+
+def pooled_scatter(cells):
+    """(sigma, degrees of freedom, cells counted) of one bed, pooled over the cells of two beds or
+    more: sigma = sqrt(sum over cells of sum (x - the cell's mean)^2 / dof), dof = sum (n_cell - 1);
+    (nan, 0, 0) when no cell has two beds (cells of one bed tell nothing of the scatter)."""
+    sigma, dof, counted = pooled_sd(cells)
+    return (sigma if dof else math.nan), dof, counted
+
+
+class Scatter(NamedTuple):
+    """One bed's standard deviation for a shape: sigma, its degrees of freedom, the cells pooled, and
+    own: True when pooled over the shape's own cells, False when the shape has no cell of two beds
+    and takes the pool over every shape's cells."""
+    sigma: float
+    dof: int
+    cells: int
+    own: bool
+
+
+def shape_scatter(cells_by_shape):
+    """{shape: Scatter} from {shape: [cell, ...]} (a cell: its beds' values): each shape's
+    pooled_scatter over its own cells of two beds or more; a shape with none takes the pool over
+    every shape's cells (own False), nan with 0 degrees of freedom when no shape has one. Unlike
+    largest_sd, which takes the most scattered cell of a scale for every shape, a shape that scatters
+    little is not judged by another shape's scatter, nor one that scatters much by the scale's
+    quietest cells."""
+    every = pooled_scatter([cell for cells in cells_by_shape.values() for cell in cells])
+    scatter = {}
+    for shape, cells in cells_by_shape.items():
+        own = pooled_scatter(cells)
+        scatter[shape] = Scatter(*own, True) if own[1] else Scatter(*every, False)
+    return scatter
+
+
+def _t_within(t, dof):
+    """P(|T| < t) for Student's t with an integer number of degrees of freedom (Abramowitz and
+    Stegun 26.7.3 and 26.7.4, exact)."""
+    theta = math.atan(t / math.sqrt(dof))
+    c2, s = math.cos(theta) ** 2, math.sin(theta)
+    if dof % 2 == 0:
+        term = total = 1.0
+        for k in range(1, dof // 2):
+            term *= c2 * (2 * k - 1) / (2 * k)
+            total += term
+        return s * total
+    if dof == 1:
+        return 2 * theta / math.pi
+    term = total = 1.0
+    for k in range(1, (dof - 1) // 2):
+        term *= c2 * (2 * k) / (2 * k + 1)
+        total += term
+    return 2 / math.pi * (theta + s * math.cos(theta) * total)
+
+
+def t_critical(dof, level=0.95):
+    """Student's t two-sided critical value: |T| < t_critical with probability `level` for dof
+    degrees of freedom (inf for none). What 2 standard errors would have to be to hold at `level`
+    with a sigma estimated from dof degrees of freedom: 12.71 for 1, 4.30 for 2, 2.57 for 5."""
+    if dof < 1:
+        return math.inf
+    lo, hi = 0.0, 1.0
+    while _t_within(hi, dof) < level:
+        lo, hi = hi, 2 * hi
+    for _ in range(100):
+        mid = (lo + hi) / 2
+        lo, hi = (mid, hi) if _t_within(mid, dof) < level else (lo, mid)
+    return (lo + hi) / 2
+
+
+# ---- where V_y changes sign, as the paper reads it (by the mean, not by standard errors)
+
+def crossing_against_range(lo, hi, paper_range):
+    """How a sign crossing (lo: the last period with mean V_y <= 0, hi: the next; lo None when V_y is
+    positive already at the shortest period run, hi None when it never turns positive) stands against
+    the paper's observed range (plo, phi): -1 at or below the paper's lower end (hi <= plo), +1 at or
+    above its upper end (lo >= phi, or no crossing at periods reaching phi), 0 overlapping the range,
+    None when the runs cannot tell (positive already at a shortest period above plo, or never positive
+    at periods that stop below phi)."""
+    plo, phi = paper_range
+    if hi is None:
+        return +1 if lo is not None and lo >= phi else None
+    if hi <= plo:
+        return -1
+    if lo is None:
+        return None
+    return +1 if lo >= phi else 0
