@@ -224,6 +224,10 @@ const std::vector<KeyInfo>& keyTable() {
            "(atom_style sphere, as write_data and wiggle export-lammps write it; bed.lammps_types): its grains and base "
            "with this config's intruder at the box centre and intruder.y0, no contact history (docs/PHYSICS.md, "
            "section 8)"),
+      boolean("bed.swap_intruder", [](C& c) -> bool& { return c.bed.swapIntruder; },
+              "with bed.file a wiggle bed: its intruder's atoms replaced by this config's, held where the file's was "
+              "(the same intruder.y0), the contacts with the old atoms forgotten, e.g. another surface of the same "
+              "outline on the same bed; refused when a grain overlaps the new atoms by more than 0.1 d"),
       text("bed.lammps_types", [](C& c) -> std::string& { return c.bed.lammpsTypes; },
            "when bed.file is a LAMMPS data file: what each atom type is, as TYPE=ROLE items (grain = a grain, "
            "base = a frozen base particle, drop = left out: the intruder's atoms, replaced by this config's "

@@ -103,6 +103,8 @@ void checkShapeKeys(const RunConfig& c) {
     throw Error("bed.mu = " + num(c.bed.mu) +
                 ": the bed is bed.file's, poured with whatever friction it was; "
                 "set one of the two");
+  if (c.bed.swapIntruder && c.bed.file.empty())
+    throw Error("bed.swap_intruder = true: it replaces the intruder of bed.file's bed, and bed.file is not set");
   if (c.bed.intruderMass > 0.0 && !c.bed.file.empty())
     throw Error("bed.intruder_mass = " + num(c.bed.intruderMass) +
                 ": the bed is bed.file's, poured around whatever intruder mass it was; set one of the two");

@@ -99,6 +99,7 @@ struct BedDef {
   double intruderMass = 0.0;
   std::string cacheDir;        // bed.cache_dir: where beds are cached ("" = $WIGGLE_CACHE or ~/.cache/wiggle)
   std::string file;            // bed.file: run on the bed in this file instead of the config's own ("" = own)
+  bool swapIntruder = false;   // bed.swap_intruder: bed.file's intruder replaced by this config's
   // bed.lammps_types: when bed.file is a LAMMPS data file, the role of each atom type; the default
   // is the types `wiggle export-lammps` writes (and tools/validation/lammps_fix_pour.py pours).
   std::string lammpsTypes = "1=grain 2=base 3=drop";

@@ -78,6 +78,7 @@ std::vector<std::string> differingFields(const RunConfig& a, const RunConfig& b)
   num("bed.maxTime", a.bed.maxTime, b.bed.maxTime);
   other("bed.cacheDir", a.bed.cacheDir == b.bed.cacheDir);
   other("bed.file", a.bed.file == b.bed.file);
+  other("bed.swapIntruder", a.bed.swapIntruder == b.bed.swapIntruder);
   other("bed.lammpsTypes", a.bed.lammpsTypes == b.bed.lammpsTypes);
   num("run.dt", a.run.dt, b.run.dt);
   num("run.duration", a.run.duration, b.run.duration);
@@ -143,6 +144,7 @@ const std::vector<std::tuple<std::string, std::string, std::string>>& everyKey()
       {"bed.intruder_mass", "9.5", "bed.intruderMass"},
       {"bed.cache_dir", "/tmp/beds", "bed.cacheDir"},
       {"bed.file", "/tmp/bed.bin", "bed.file"},
+      {"bed.swap_intruder", "true", "bed.swapIntruder"},
       {"bed.lammps_types", "\"1=grain 2=base 3=drop 4=base\"", "bed.lammpsTypes"},
       {"run.dt", "2e-4", "run.dt"},
       {"run.duration", "10", "run.duration"},
@@ -175,7 +177,7 @@ TEST(Config, KeyListIsExactlyTheSpecKeys) {
   std::set<std::string> expected;
   for (const auto& [key, value, field] : everyKey()) expected.insert(key);
   const std::vector<std::string> keys = configKeys();
-  EXPECT_EQ(keys.size(), 55u);
+  EXPECT_EQ(keys.size(), 56u);
   EXPECT_EQ(std::set<std::string>(keys.begin(), keys.end()), expected);
 }
 

@@ -661,6 +661,53 @@ TEST(Experiment, PinnedBedServesAnotherFrictionAndRefusesAnotherGeometry) {
   fs::remove_all(root);
 }
 
+// bed.swap_intruder: another surface of the same outline on the same bed (the coupling screen's
+// lattice body on the glued shell's beds). The bed's grains stay; the intruder's atoms are the
+// config's, held where the file's were. Refused without the key, and for an outline the grains
+// overlap (another shape), naming the overlap.
+TEST(Experiment, PinnedBedTakesAnotherSurfaceOfItsOutlineWithSwapIntruder) {
+  const std::string root = scratch("swap");
+  const RunConfig own = tinyConfig(root);
+  const CachedBed made = obtainBed(own, prepareCase(own).clump);
+
+  RunConfig lattice = own;
+  lattice.intruder.surface = IntruderSurface::Lattice;
+  lattice.bed.file = made.path;
+  lattice.bed.cacheDir = root + "/empty-cache";
+  auto refusal = [](const RunConfig& c) {
+    try {
+      obtainBed(c, prepareCase(c).clump);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(refusal(lattice).find("bed.swap_intruder = true"), std::string::npos) << refusal(lattice);
+
+  lattice.bed.swapIntruder = true;
+  const ClumpDef latticeClump = prepareCase(lattice).clump;
+  const CachedBed swapped = obtainBed(lattice, latticeClump);
+  EXPECT_EQ(swapped.world.clump().offsetX, latticeClump.offsetX);
+  EXPECT_NE(swapped.world.clump().offsetX, made.world.clump().offsetX);
+  EXPECT_EQ(swapped.world.grainCount(), made.world.grainCount());
+  EXPECT_EQ(swapped.world.intruder().x, made.world.intruder().x);
+  EXPECT_EQ(swapped.world.intruder().y, made.world.intruder().y);
+  EXPECT_EQ(swapped.key, made.key);
+  EXPECT_NE(swapped.note.find("bed.swap_intruder"), std::string::npos) << swapped.note;
+  const RunOutcome run = runExperiment(prepareCase(lattice), quiet(root + "/lattice"));
+  EXPECT_EQ(run.summary.status, RunStatus::Ok);
+  EXPECT_FALSE(fs::exists(root + "/empty-cache"));  // no bed was made
+
+  RunConfig bigger = lattice;  // a 4 d square where the bed holds a 3 d one: grains inside its outline
+  bigger.intruder.vertices = {{-2.0, -2.0}, {2.0, -2.0}, {2.0, 2.0}, {-2.0, 2.0}};
+  EXPECT_NE(refusal(bigger).find("overlaps this config's intruder by"), std::string::npos) << refusal(bigger);
+
+  RunConfig alone = own;  // the key means nothing without a bed file: refused, not ignored
+  alone.bed.swapIntruder = true;
+  EXPECT_THROW(validateRunConfig(alone), Error);
+  fs::remove_all(root);
+}
+
 // bed.file = a LAMMPS data file. The case exported by export-lammps and read back runs to the very
 // state (hash, trajectory) that the original run reaches from its bed with run.bed_history = false:
 // the data file carries every particle's bits and id, and nothing of the contact history.

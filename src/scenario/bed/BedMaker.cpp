@@ -15,6 +15,7 @@
 #include "io/AtomicFile.h"
 #include "io/FileLock.h"
 #include "io/StateFile.h"
+#include "physics/PairKernel.h"
 #include "scenario/bed/EngineSettings.h"
 #include "scenario/bed/LammpsBed.h"
 
@@ -420,6 +421,34 @@ BedFile readBedFile(const std::string& file, const std::string& name) {
 // made with must be this config's; the rest (contact, time step, engine) is set anew. A file that is
 // not a wiggle state file is read as a LAMMPS data file (readLammpsBed), which holds particles only:
 // this config's intruder goes in, and every contact starts with zero shear.
+// bed.swap_intruder: the bed's held intruder replaced by `clump` at the same place, at rest; its
+// contacts (and their history) are found afresh. Refused when a grain overlaps the new atoms by
+// more than kSwapOverlap: a bed settled around another outline, not another surface of this one
+// (a grain lodged between two touching atoms of one surface reaches 0.046 d past their tops,
+// docs/SHAPES.md, and may meet an atom of the other there). Returns what the run's log and summary
+// say of it.
+constexpr double kSwapOverlap = 0.1;  // [d] twice that lodging depth
+std::string swapIntruder(World& world, const ClumpDef& clump, const std::string& what) {
+  const ClumpState at = world.intruder();
+  const ParticleStore& s = world.particles();
+  const double width = world.def().boxWidth;
+  double deepest = 0.0;
+  for (std::uint32_t g = 0; g < s.grainCount; ++g)
+    for (std::size_t a = 0; a < clump.offsetX.size(); ++a) {
+      const double dx = minimumImage(s.x[g] - (at.x + clump.offsetX[a]), width);
+      const double dy = s.y[g] - (at.y + clump.offsetY[a]);
+      deepest = std::max(deepest, s.radius[g] + clump.atomRadius - std::hypot(dx, dy));
+    }
+  if (deepest > kSwapOverlap)
+    throw Error(what + "bed.swap_intruder: a grain overlaps this config's intruder by " + formatNumber(deepest) +
+                " d, more than " + formatNumber(kSwapOverlap) + " d (the bed was made around another outline)");
+  const std::size_t before = world.clump().offsetX.size();
+  world.setIntruder(clump, at.x, at.y);
+  return "bed.swap_intruder: the bed's intruder of " + std::to_string(before) + " atoms replaced by this config's " +
+         std::to_string(clump.offsetX.size()) + "; the deepest overlap of a grain with them " + formatNumber(deepest) +
+         " d; their contacts start afresh";
+}
+
 CachedBed pinnedBed(const RunConfig& config, const ClumpDef& clump) {
   const std::string& path = config.bed.file;
   if (!std::filesystem::is_regular_file(path)) throw Error("bed.file = " + path + ": no such file");
@@ -440,20 +469,23 @@ CachedBed pinnedBed(const RunConfig& config, const ClumpDef& clump) {
     throw Error(what + "its box is " + formatNumber(made.boxWidth) + " d wide, box.width = " + formatNumber(config.box.width));
   if (made.massModel != config.grains.massModel) throw Error(what + "its grains have another grains.mass_model");
   const ClumpDef& held = world.clump();
-  if (!world.hasIntruder() || held.offsetX != clump.offsetX || held.offsetY != clump.offsetY ||
-      held.atomRadius != clump.atomRadius)
-    throw Error(what + "its intruder is not this config's (intruder.shape, vertices, angle or surface differ)");
+  if (!world.hasIntruder()) throw Error(what + "it has no intruder");
+  const bool sameAtoms = held.offsetX == clump.offsetX && held.offsetY == clump.offsetY && held.atomRadius == clump.atomRadius;
+  if (!sameAtoms && !config.bed.swapIntruder)
+    throw Error(what + "its intruder is not this config's (intruder.shape, vertices, angle or surface differ; "
+                "bed.swap_intruder = true puts this config's in its place)");
   if (held.mass != clump.mass)
     throw Error(what + "its intruder's mass is " + formatNumber(held.mass) + ", this config's " + formatNumber(clump.mass));
   if (world.intruder().y != config.intruder.y0)
     throw Error(what + "its intruder is at y = " + formatNumber(world.intruder().y) + ", intruder.y0 = " +
                 formatNumber(config.intruder.y0));
   world.setParameters(worldDefFor(config));
-  world.setIntruderMass(clump.mass, clump.massShares);  // this config's contact mass, whatever the file's was
   std::string note;
+  if (!sameAtoms) note = swapIntruder(world, clump, what) + "; ";
+  world.setIntruderMass(clump.mass, clump.massShares);  // this config's contact mass, whatever the file's was
   if (bed.key != bedKey(config, clump))
-    note = "bed.file: running on the bed made for other parameters (key " + bed.key + "), with this config's contact, "
-           "time step and engine settings";
+    note += "bed.file: running on the bed made for other parameters (key " + bed.key + "), with this config's contact, "
+            "time step and engine settings";
   return CachedBed{std::move(world), bed.key, path, true, note};
 }
 
