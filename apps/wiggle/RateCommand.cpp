@@ -105,6 +105,9 @@ void addRateCommand(CLI::App& app) {
                      "run, or one not finished): measured what there is, t = %s to %s\n",
                      dirs[k].c_str(), formatNumber(measured[k].cutShortAt).c_str(),
                      formatNumber(measured[k].rate.tInitial).c_str(), formatNumber(measured[k].rate.tFinal).c_str());
+    for (std::size_t k = 0; k < dirs.size(); ++k)
+      for (const std::string& warning : rateWarnings(measured[k].rate))
+        std::fprintf(stderr, "wiggle rate: warning: %s: %s\n", dirs[k].c_str(), warning.c_str());
     if (pending)
       std::fprintf(stderr, "wiggle rate: %d case%s not finished left out\n", pending,
                    pending == 1 ? "" : "s");

@@ -166,4 +166,24 @@ SettledRate measureSettledRate(const std::vector<TrajectorySample>& samples, Rat
   return rate;
 }
 
+std::vector<std::string> rateWarnings(const RiseRate& rate) {
+  std::vector<std::string> warnings;
+  const std::string window = "t = " + formatNumber(rate.tInitial) + " to " + formatNumber(rate.tFinal);
+  if (rate.windowTooShort())
+    warnings.push_back("V_y is measured over " + formatNumber(rate.windowPeriods) + " drive periods (" + window +
+                       "), fewer than " + formatNumber(RiseRate::kMinWindowPeriods) +
+                       ": it reflects the phase of the drive more than a drift; run longer (run.duration)");
+  const std::string transient = "the start-up transient of the drive (the first " +
+                                formatNumber(RiseRate::kStartupTime) + " time units, where the whole bed is set moving)";
+  if (rate.withinStartupTransient())
+    warnings.push_back("V_y is measured from " + window + ", within " + transient +
+                       ": it is not a steady rise or sink; run longer (run.duration; the presets run to t = 100)");
+  if (rate.startsInStartupTransient())
+    warnings.push_back("V_y is measured from " + window + ", " + formatNumber(std::round(100 * rate.startupShare())) +
+                       " % of it within " + transient + ": it mixes the start-up with what follows; measure from t = " +
+                       formatNumber(RiseRate::kStartupTime) + " on (wiggle rate DIR --from " +
+                       formatNumber(RiseRate::kStartupTime) + ") or run longer (the presets run to t = 100)");
+  return warnings;
+}
+
 }  // namespace wiggle

@@ -16,6 +16,8 @@
 // reach its final vertical position", wherever that position is (in the bed, at the surface, at the
 // base): SettleRule below says exactly when an intruder counts as settled and where t_f then is.
 // When it never settles, vy_settled == vy and t_settled is vy's t_f.
+#include <algorithm>
+#include <string>
 #include <vector>
 
 #include "analysis/Trajectory.h"
@@ -48,7 +50,19 @@ struct RiseRate {
   // sink (a T = 1 run of t = 5 gave V_y = 0.74): it is reported with a warning too.
   static constexpr double kStartupTime = 20.0;
   bool withinStartupTransient() const { return tFinal < kStartupTime; }
+  // A window that starts inside the transient and ends after it mixes the two: the share of it
+  // before kStartupTime (the presets' t = 10-100: 0.11), and past kMostStartupShare it is warned of
+  // too (a run to t = 30 measures over t = 3-30, 0.63 of it in the transient).
+  static constexpr double kMostStartupShare = 0.25;
+  double startupShare() const {
+    return tFinal > tInitial ? std::clamp((kStartupTime - tInitial) / (tFinal - tInitial), 0.0, 1.0) : 1.0;
+  }
+  bool startsInStartupTransient() const { return !withinStartupTransient() && startupShare() > kMostStartupShare; }
 };
+
+// What makes a measured V_y less than it seems, in sentences: a window too short, inside the
+// start-up transient, or starting in it (summary.json's warnings; `wiggle rate` on stderr).
+std::vector<std::string> rateWarnings(const RiseRate& rate);
 
 RiseRate measureRiseRate(const std::vector<TrajectorySample>& samples, RateWindow window, double period,
                          double surfacedHeight, double plateauTolerance = 0.5);

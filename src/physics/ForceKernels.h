@@ -1,10 +1,10 @@
 #pragma once
 // The step's pair loops (the ContactForces stage of ARCHITECTURE.md's step), compiled once per
-// instruction set and chosen when the program starts, so that one binary (the portable build included) runs the
-// widest lanes the CPU offers: eight doubles with AVX-512, four with AVX2, one otherwise. Every
-// width gives the scalar law's bits (core/Simd.h), so the choice never changes a result; it only
-// changes the speed. Each contact law (ContactLaws.h) has its own loops, the law a compile-time
-// policy of the pair kernels, so the default law pays nothing for the others' existence.
+// instruction set and chosen when the program starts, so that one binary (the portable build
+// included) runs the widest lanes the CPU offers: eight doubles with AVX-512, four with AVX2, one
+// otherwise. Every width gives the scalar law's bits (core/Simd.h), so the choice never changes a
+// result; it only changes the speed. Each contact law (ContactLaws.h) has its own loops, the law a
+// compile-time policy of the pair kernels, so the default law pays nothing for the others' existence.
 //
 // The variants are physics/ForceKernelVariant.cpp built three times (CMakeLists.txt, one object
 // library per instruction set); their inline functions live in per-instruction-set namespaces

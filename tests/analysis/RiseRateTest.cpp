@@ -51,6 +51,31 @@ TEST(RiseRate, AWindowEndingInTheStartupTransientIsFlagged) {
   EXPECT_FALSE(measureRiseRate(sampled(100, 0.05, y), paperWindow(100), 5, 200.0).withinStartupTransient());
 }
 
+// A window that starts inside the transient and ends after it: warned of when more than a quarter of
+// it lies in the transient (a run to t = 30: t = 3-30, 63 %), not for the presets' t = 10-100 (11 %).
+TEST(RiseRate, AWindowStartingInTheStartupTransientIsFlaggedWhenMostlyInIt) {
+  auto y = [](double t) { return 25.0 + 0.1 * t; };
+  const RiseRate thirty = measureRiseRate(sampled(30, 0.01, y), paperWindow(30), 5, 200.0);
+  EXPECT_FALSE(thirty.withinStartupTransient());
+  EXPECT_NEAR(thirty.startupShare(), 17.0 / 27.0, 1e-9);
+  EXPECT_TRUE(thirty.startsInStartupTransient());
+  const std::vector<std::string> said = rateWarnings(thirty);
+  ASSERT_EQ(said.size(), 1u);
+  EXPECT_NE(said[0].find("t = 3 to 30, 63 % of it within the start-up transient"), std::string::npos) << said[0];
+  EXPECT_NE(said[0].find("--from 20"), std::string::npos) << said[0];
+
+  const RiseRate preset = measureRiseRate(sampled(100, 0.05, y), paperWindow(100), 5, 200.0);
+  EXPECT_NEAR(preset.startupShare(), 10.0 / 90.0, 1e-9);
+  EXPECT_FALSE(preset.startsInStartupTransient());
+  EXPECT_TRUE(rateWarnings(preset).empty());
+  // From t = 20 on, none of it: the measure the warning proposes.
+  EXPECT_EQ(measureRiseRate(sampled(30, 0.01, y), {20.0, 30.0}, 5, 200.0).startupShare(), 0.0);
+  // A window wholly inside the transient is said once, as such, not also as starting in it.
+  const RiseRate early = measureRiseRate(sampled(5, 0.01, y), paperWindow(5), 1, 50.0);
+  EXPECT_TRUE(early.withinStartupTransient());
+  EXPECT_FALSE(early.startsInStartupTransient());
+}
+
 TEST(RiseRate, PlateauEndsTheWindow) {
   // Rises at 0.1 until t = 400, then stays: t_f is where the plateau starts (within the averaging
   // window and tolerance: 0.5 d / 0.1 = 5 time units early at most).

@@ -206,18 +206,7 @@ World startFromBed(const Case& run, RunState& state, LogFile& log, ProgressLine&
 // resumed with a longer run.duration (a run made in one go averages from its first measured step,
 // whatever its V_y window's first sample is).
 std::vector<std::string> runWarnings(const RiseRate& rate, double averagedFrom, bool extended) {
-  std::vector<std::string> warnings;
-  if (rate.windowTooShort())
-    warnings.push_back("V_y is measured over " + formatNumber(rate.windowPeriods) + " drive periods (t = " +
-                       formatNumber(rate.tInitial) + " to " + formatNumber(rate.tFinal) + "), fewer than " +
-                       formatNumber(RiseRate::kMinWindowPeriods) +
-                       ": it reflects the phase of the drive more than a drift; run longer (run.duration)");
-  if (rate.withinStartupTransient())
-    warnings.push_back("V_y is measured from t = " + formatNumber(rate.tInitial) + " to " + formatNumber(rate.tFinal) +
-                       ", within the start-up transient of the drive (the first " +
-                       formatNumber(RiseRate::kStartupTime) +
-                       " time units, where the whole bed is set moving): it is not a steady rise or sink; run longer "
-                       "(run.duration; the presets run to t = 100)");
+  std::vector<std::string> warnings = rateWarnings(rate);
   if (extended)
     warnings.push_back("phase_rates.csv and fields.csv average from t = " + formatNumber(averagedFrom) +
                        ", V_y from t = " + formatNumber(rate.tInitial) +
