@@ -280,5 +280,20 @@ class SignCrossingTest(unittest.TestCase):
         self.assertIsNone(findings.crossing_against_range(2.5, None, paper))
 
 
+class VerdictWordsTest(unittest.TestCase):
+    """The verdict beside the counts that decide it, so that a verdict of many 'for' reads as its rule."""
+
+    def test_one_against_is_named_as_what_decides(self):
+        outcomes = ["for"] * 12 + ["within"] * 6 + ["against"] * 2
+        self.assertEqual(findings.verdict_words(outcomes), "not reproduced: 2 of 20 against (12 for, 6 within)")
+
+    def test_reproduced_and_not_resolved(self):
+        self.assertEqual(findings.verdict_words(["for"] * 4), "reproduced: all 4 for")
+        self.assertEqual(findings.verdict_words(["for"] * 5 + ["within"] * 3),
+                         "not resolved: none against, 3 of 8 within (5 for)")
+        self.assertEqual(findings.verdict_words([]), "not measured")
+
+
+
 if __name__ == "__main__":
     unittest.main()

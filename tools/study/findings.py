@@ -108,6 +108,21 @@ def verdict(outcomes):
     return "reproduced" if all(o == "for" for o in outcomes) else "not resolved"
 
 
+def verdict_words(outcomes):
+    """The verdict with the counts that decide it, so that it reads as its rule: 'not reproduced: 2 of 20
+    against (12 for, 6 within)', 'reproduced: all 4 for', 'not resolved: none against, 3 of 8 within
+    (5 for)'; the bare verdict without outcomes."""
+    said = verdict(outcomes)
+    n, f, w, a = len(outcomes), outcomes.count("for"), outcomes.count("within"), outcomes.count("against")
+    if said == "not reproduced":
+        return f"{said}: {a} of {n} against ({f} for, {w} within)"
+    if said == "reproduced":
+        return f"{said}: all {n} for"
+    if said == "not resolved":
+        return f"{said}: none against, {w} of {n} within ({f} for)"
+    return said
+
+
 def finding_verdict(sig, comparisons, note=None):
     """The verdict of a finding at one scale: its comparisons (None for a cell without results is
     left out) judged with that scale's sigma; "not judged" when it has none and a note says why."""

@@ -1114,8 +1114,9 @@ def verdict_cell(sig, comparisons, note):
     kinds = [findings.judged(c, sig)[2] for c in comparisons]
     n = sorted({len(c[1]) for c in comparisons} | {len(c[2]) for c in comparisons if c[2]})
     beds_range = f"{n[0]}" + (f"-{n[-1]}" if n[-1] > n[0] else "")
-    return (f"**{verdict}** ({kinds.count('for')} for, {kinds.count('within')} within, "
-            f"{kinds.count('against')} against; {beds_range} bed{'s' if n[-1] > 1 else ''})")
+    assert findings.verdict(kinds) == verdict, (verdict, kinds)
+    said = findings.verdict_words(kinds)
+    return f"**{verdict}**{said[len(verdict):]} ({beds_range} bed{'s' if n[-1] > 1 else ''})"
 
 
 def findings_clock_sigma():
