@@ -13,7 +13,7 @@ from unittest import mock
 import numpy as np
 
 from tests import synthetic
-from wiggleplot import cli, geomplots, prepare, readers, report, runplots, sweepplots
+from wiggleplot import cli, geomplots, prepare, readers, report, runplots, style, sweepplots
 from wiggleplot.report import Report
 
 
@@ -111,6 +111,15 @@ class RunDataTest(DataDirs):
         model = dict(readers.read_model(self.run_dir), vy_at_period=0.123)
         self.assertEqual(prepare.model_rate_at(model, 5.0), 0.123)
         self.assertIsNone(prepare.model_rate_at(model, 2.0))  # below T_rise: no rise drawn
+
+    def test_phase_axes_say_what_the_phase_is_and_where_the_intruder_is(self):
+        fig, ax = style.plt.subplots()
+        top = style.phase_axis(ax)
+        self.assertIn(r"\varphi = 2\pi t/T", ax.get_xlabel())
+        self.assertIn("one period", ax.get_xlabel())
+        self.assertEqual([t.get_text() for t in top.get_xticklabels()][:2], ["centre →", "right end"])
+        self.assertEqual(ax.get_xlim(), (0.0, 20.0))
+        style.plt.close(fig)
 
     def test_phase_bars_blank_empty_bins(self):
         centers, vy, empty = prepare.phase_bars(readers.read_phase_rates(self.run_dir))

@@ -318,14 +318,7 @@ def plot_phase_rates(run, out_dir, formats):
     ax.axhline(0.0, color="0.3", lw=0.6)
     for c in (5, 10, 15):
         ax.axvline(c, color="0.6", lw=0.5, ls=":")
-    ax.set_xlim(0, 20)
-    ax.set_xticks(range(0, 21, 5))
-    # Where the intruder is at each phase (x = x0 + A sin(phi)), on a top axis.
-    top = ax.secondary_xaxis("top")
-    top.set_xticks([0, 5, 10, 15, 20])
-    top.set_xticklabels(["centre →", "right end", "centre ←", "left end", "centre →"], fontsize=6.5)
-    top.tick_params(length=2, colors="0.35")
-    ax.set_xlabel(style.PHASE_LABEL)
+    style.phase_axis(ax)
     ax.set_ylabel(r"mean $v_y$ [$\sqrt{g d}$]")
     ax.set_title(run.label())
     run.report.wrote(style.save(fig, out_dir, "phase_rates", formats))

@@ -16,7 +16,8 @@ PERIOD_LABEL = r"$T$ [$\sqrt{d/g}$]"
 AMPLITUDE_LABEL = r"$A$ [$d$]"
 DY_LABEL = r"$y(t) - y(0)$ [$d$]"
 VY_LABEL = r"$V_y$ [$\sqrt{g d}$]"
-PHASE_LABEL = r"phase $10\varphi/\pi$"
+# The drive's phase phi = 2 pi t / T in the paper's units, 20 to a period (phase_rates.csv's phase_center).
+PHASE_LABEL = r"phase $10\varphi/\pi$, $\varphi = 2\pi t/T$ (20 = one period)"
 X_LABEL = r"$x$ [$d$]"
 Y_LABEL = r"$y$ [$d$]"
 
@@ -90,3 +91,17 @@ def fmt_value(v):
     if isinstance(v, float):
         return f"{v:g}"
     return str(v)
+
+
+def phase_axis(ax):
+    """A phase axis over one period (0-20 in 10 phi / pi), labelled with what phi is, and on top where
+    the intruder is at each phase (x = x0 + A sin phi)."""
+    ax.set_xlim(0, 20)
+    ax.set_xticks(range(0, 21, 5))
+    ax.set_xlabel(PHASE_LABEL)
+    top = ax.secondary_xaxis("top")
+    top.set_xticks([0, 5, 10, 15, 20])
+    top.set_xticklabels(["centre →", "right end", "centre ←", "left end", "centre →"], fontsize=6.5)
+    top.tick_params(length=2, colors="0.35")
+    return top
+

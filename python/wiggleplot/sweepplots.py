@@ -506,10 +506,8 @@ def plot_sweep_phase_rates(sweep, out_dir, formats):
         for T, (c, v) in lines.items():
             ax.plot(c, v, "-o", ms=2.5, color=colours[T], lw=0.9, label=f"$T$ = {T:g}")
         ax.axhline(0.0, color="0.4", lw=0.6)
-        ax.set_xlim(0, 20)
-        ax.set_xticks(range(0, 21, 5))
-        ax.set_title(rf"{panel} ($A$ = {amplitude:g})")
-        ax.set_xlabel(style.PHASE_LABEL)
+        style.phase_axis(ax)
+        ax.set_title(rf"{panel} ($A$ = {amplitude:g})", pad=14)
         ax.set_ylabel(r"mean $v_y$ [$\sqrt{g d}$]")
     _legend_above(fig, _axes_legend_items(axes), most_columns=8)
     fig.tight_layout()
