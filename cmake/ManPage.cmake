@@ -40,7 +40,7 @@ endforeach()
 string(APPEND page ".SH EXIT STATUS\n0 when everything asked for succeeded; 2 for bad input (a one-line message names it); "
                    "other non-zero values for failures at run time (each subcommand's help says which).\n")
 string(APPEND page ".SH FILES\n.TP\n~/.cache/wiggle\nthe bed cache (bed.cache_dir, else $WIGGLE_CACHE)\n"
-                   ".TP\nshare/doc/wiggle\nREADME.md and the documents: CONFIG.md (every key), OUTPUT-FORMATS.md, "
-                   "SWEEPS.md, PHYSICS.md, VALIDATION.md\n")
+                   ".TP\nshare/doc/wiggle\nREADME.md and, in docs/, the documents: CONFIG.md (every key), "
+                   "OUTPUT-FORMATS.md, SWEEPS.md, PHYSICS.md, VALIDATION.md\n")
 string(APPEND page ".SH SEE ALSO\nlmp(1), the LAMMPS molecular dynamics program: wiggle export-lammps writes the same case as a LAMMPS deck.\n")
 file(WRITE "${OUT}" "${page}")

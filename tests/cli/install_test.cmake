@@ -19,11 +19,27 @@ endif()
 foreach(file share/wiggle/python/wiggleplot/__main__.py share/wiggle/python/wiggleplot/results-schema.json
              share/wiggle/configs/small.toml
              share/wiggle/examples/figures.ipynb share/wiggle/results/paper_depth/fig5/results.csv
-             share/wiggle/configs/paper.toml share/doc/wiggle/README.md share/doc/wiggle/CONFIG.md
+             share/wiggle/configs/paper.toml share/doc/wiggle/README.md share/doc/wiggle/docs/CONFIG.md
              share/bash-completion/completions/wiggle share/man/man1/wiggle.1)
   if(NOT EXISTS "${PREFIX}/${file}")
     message(FATAL_ERROR "not installed: ${file}")
   endif()
+endforeach()
+# Every relative link of the installed documents reaches an installed file (anchors aside).
+file(GLOB_RECURSE documents "${PREFIX}/share/doc/wiggle/*.md")
+foreach(document IN LISTS documents)
+  file(READ "${document}" text)
+  get_filename_component(folder "${document}" DIRECTORY)
+  string(REGEX MATCHALL "\\]\\([^) ]+\\)" links "${text}")
+  foreach(link IN LISTS links)
+    string(REGEX REPLACE "^\\]\\(([^)#]*).*\\)$" "\\1" target "${link}")
+    if(target STREQUAL "" OR target MATCHES "^[a-z]+:")
+      continue()
+    endif()
+    if(NOT EXISTS "${folder}/${target}")
+      message(FATAL_ERROR "${document}: the link ${link} reaches nothing installed")
+    endif()
+  endforeach()
 endforeach()
 # The man page has a section for every subcommand the installed binary lists.
 file(READ "${PREFIX}/share/man/man1/wiggle.1" man)
