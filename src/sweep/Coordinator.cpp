@@ -377,7 +377,7 @@ class Coordinator {
     results_[c] = CaseResult{};
     if (stopping_) {
       results_[c].status = CaseStatus::Pending;
-      results_[c].error = "interrupted: " + o.error;
+      results_[c].error = interruptedError(o.error);
       monitor_.event("stopped " + name + where + ": " + o.error);
     } else {
       results_[c].status = CaseStatus::Failed;

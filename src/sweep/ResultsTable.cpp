@@ -53,6 +53,10 @@ std::string csvCell(const std::string& text) {
   return out + '"';
 }
 
+std::string interruptedError(const std::string& why) {
+  return why.starts_with("interrupted") ? why : "interrupted: " + why;
+}
+
 CaseStatus caseStatusNamed(std::string_view word, const std::string& where) {
   if (const std::optional<CaseStatus> status = choiceNamed<CaseStatus>(word)) return *status;
   throw Error(where + ": status '" + std::string(word) + "' is none of " + joinedNames(choiceNameList<CaseStatus>()));

@@ -55,6 +55,10 @@ struct CaseResult {
   double particleSteps() const;
 };
 
+// The error column of a case the sweep's stop interrupted (pending, to resume): the child's own
+// words when they already say so ("interrupted at t = 12.5"), else "interrupted: " and its words.
+std::string interruptedError(const std::string& why);
+
 // Whether the case in runDir is finished: its summary.json reads whole and says "ok". The one rule
 // for every reader: the sweep skips such a case and reruns any other, and `wiggle status`,
 // `wiggle report` and `wiggle plot` (python/wiggleplot/readers.py) count a case as done only when

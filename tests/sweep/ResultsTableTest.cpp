@@ -60,6 +60,14 @@ TEST(ResultsTable, ACaseTaskPacesByItsOwnCaseOnly) {
   EXPECT_DOUBLE_EQ(sweepNsPerParticleStep(results, std::size_t{1}, 55.0), 30.0);
 }
 
+// A case stopped with the sweep says so once: "interrupted at t = 12.5", not "interrupted:
+// interrupted at t = 12.5"; other words get the prefix.
+TEST(ResultsTable, AnInterruptedCaseSaysSoOnce) {
+  EXPECT_EQ(interruptedError("interrupted at t = 12.5 (checkpoint written)"), "interrupted at t = 12.5 (checkpoint written)");
+  EXPECT_EQ(interruptedError("interrupted by signal 15 while making the bed"), "interrupted by signal 15 while making the bed");
+  EXPECT_EQ(interruptedError("child exited with status 1"), "interrupted: child exited with status 1");
+}
+
 TEST(ResultsTable, QuotesCellsThatNeedIt) {
   EXPECT_EQ(csvCell("disk"), "disk");
   EXPECT_EQ(csvCell("[0, 5]"), "\"[0, 5]\"");
