@@ -145,6 +145,9 @@ void printGeometryTable(const std::vector<Row>& rows, const ModelOptions& opt) {
     std::printf("(a model, not a simulation. paper l, T_rise: the model's columns of the paper's Table 1, which\n"
                 " truncates: T_rise = sqrt(8) = 2.828 is printed 2.82. observed: the T_rising range the paper's\n"
                 " simulations found at A = 5. wiggle's simulated ranges: docs/VALIDATION.md, \"Table 1\")\n");
+  if (std::any_of(rows.begin(), rows.end(), [](const Row& r) { return r.side.l == 0.0; }))
+    std::printf("(l = 0: the outline's lowest point with a vertical tangent is its top, as for the triangle apex\n"
+                " down: no fall is needed below the top, so T_rise = sqrt(2 l' / g) with l' = d/2 alone, 1.0)\n");
 }
 
 void printRateTable(const std::vector<Row>& rows, const std::vector<double>& periods,
@@ -157,7 +160,8 @@ void printRateTable(const std::vector<Row>& rows, const std::vector<double>& per
                     cavityRiseRate(r.geometry, r.side, t, opt.amplitude));
     return;
   }
-  std::printf("\nV_y(T) [sqrt(g d)] at A = %g (A_min = %g)\n", opt.amplitude, minimumAmplitude());
+  std::printf("\nV_y(T) [sqrt(g d)] at A = %g (A_min = %g), the model's own (eq. 3.17)\n", opt.amplitude,
+              minimumAmplitude());
   std::printf("%8s", "T");
   for (const Row& r : rows) std::printf(" %14s", r.label.c_str());
   std::printf("\n");
@@ -167,6 +171,8 @@ void printRateTable(const std::vector<Row>& rows, const std::vector<double>& per
       std::printf(" %14.4f", cavityRiseRate(r.geometry, r.side, t, opt.amplitude));
     std::printf("\n");
   }
+  std::printf("(the paper uses its model for where rising starts, T_rise; these rates are the model's own\n"
+              " magnitude, not a simulated V_y: set them beside a simulation's only on their own axis)\n");
 }
 
 void printClumpTable(const std::vector<IntruderDef>& intruders, const std::vector<Shape>& shapes,
