@@ -101,16 +101,24 @@ class RunDataTest(DataDirs):
         self.assertAlmostEqual(yy[1], float(np.interp(60.0, t, dy)), places=12)
         self.assertEqual(yy[0], prepare.rate_lines(settled, traj)["vy"][1][0])
 
-    def test_model_rate_interpolates_the_curve_and_stays_silent_below_t_rise(self):
-        model = readers.read_model(self.run_dir)
-        self.assertAlmostEqual(prepare.model_rate_at(model, 5.0), 0.15, places=12)
-        self.assertIsNone(prepare.model_rate_at(model, 2.0))
-        self.assertIsNone(prepare.model_rate_at(model, 20.0))
+    def test_the_trajectory_names_the_models_t_rise_and_draws_no_model_rate(self):
+        # Issue 80: the model's V_y drawn on the trajectory read as a prediction of the run; only
+        # where rising starts is the model's to say.
+        figures = {}
 
-    def test_model_rate_prefers_the_value_written_for_the_run(self):
-        model = dict(readers.read_model(self.run_dir), vy_at_period=0.123)
-        self.assertEqual(prepare.model_rate_at(model, 5.0), 0.123)
-        self.assertIsNone(prepare.model_rate_at(model, 2.0))  # below T_rise: no rise drawn
+        def keep(fig, out_dir, name, formats):
+            figures[name] = fig
+            return []
+
+        with mock.patch.object(runplots.style, "save", keep):
+            runplots.plot_trajectory(runplots.Run(self.run_dir, quiet_report()), self.tmp, ("png",))
+        ax = figures["trajectory"].axes[0]
+        labels = [line.get_label() for line in ax.get_lines()]
+        self.assertTrue(any("cavity model: rising" in l and "T_{rise}" in l for l in labels), labels)
+        model_lines = [line for line in ax.get_lines() if "cavity model" in line.get_label()]
+        self.assertTrue(all(len(line.get_xdata()) == 0 for line in model_lines), "a model line was drawn")
+        from matplotlib import pyplot
+        pyplot.close(figures["trajectory"])
 
     def test_phase_axes_say_what_the_phase_is_and_where_the_intruder_is(self):
         fig, ax = style.plt.subplots()
@@ -267,11 +275,15 @@ class SweepDataTest(DataDirs):
                 what = f"{line.get_label()!r} in {ax.get_title() or 'a model axis'}"
                 self.assertTrue(np.all((x[drawn] >= x_lo) & (x[drawn] <= x_hi)), f"{what} leaves the axes in x")
                 self.assertTrue(np.all((y[drawn] >= y_lo) & (y[drawn] <= y_hi)), f"{what} leaves the axes in y")
-                if line.get_linestyle() == "--":  # the model: no step of a third of the axis between neighbours
+            # The cavity model as its T_rise only (issue 80): a dashed line across the panel at it,
+            # no curve of its V_y on these axes or on a second one scaled to fit.
+            for line in ax.get_lines():
+                if "cavity model" in line.get_label() or (line.get_transform() != ax.transData
+                                                          and line.get_linestyle() == "--"):
                     models += 1
-                    steps = np.abs(np.diff(y)) / (y_hi - y_lo)
-                    self.assertTrue(np.all(steps[np.isfinite(steps)] < 1 / 3), f"{what} has a vertical drop")
-        self.assertEqual(models, 5)  # one per shape
+                    self.assertEqual(len(set(np.asarray(line.get_xdata(), float))), 1, "not a T_rise marker")
+        self.assertEqual(len([ax for ax in fig.axes if ax.get_visible() and ax.get_ylabel() == "cavity model"]), 0)
+        self.assertEqual(models, 5)  # one per shape: every T_rise (2.8-4.5) lies within the periods run
         from matplotlib import pyplot
         pyplot.close(fig)
 

@@ -68,30 +68,6 @@ def settled_point(summary, traj):
     return ts, float(np.interp(ts, t, dy))
 
 
-def model_rate_at(model, period):
-    """The cavity model's V_y at this period: model.json's vy_at_period when it was written for
-    this period, else read off its curve; None when the model predicts no rise (T <= T_rise) or T
-    lies outside the tabulated curve. Pass the run's own period (vy_at_period is for it)."""
-    if model is None or period is None:
-        return None
-    curve = model.get("curve")
-    if curve is None or len(curve) < 2:
-        return None
-    t_rise = model.get("T_rise", model.get("T_rise_left"))
-    if t_rise is not None and period <= t_rise:
-        return None
-    run_period = model.get("period")  # model.json files before 0.1.0 (git ...) lack it: trust vy_at_period
-    if "vy_at_period" in model and (run_period is None or abs(run_period - period) < 1e-12):
-        # The C++ side evaluated the model at the run's own period: exact, no interpolation.
-        return float(model["vy_at_period"])
-    T, v = curve[:, 0], curve[:, 1]
-    order = np.argsort(T)
-    T, v = T[order], v[order]
-    if period < T[0] or period > T[-1]:
-        return None
-    return float(np.interp(period, T, v))
-
-
 def phase_bars(rates):
     """(phase_center, vy_mean, empty) for fig. 8; empty bins (samples = 0) get vy NaN."""
     order = np.argsort(rates["bin"])

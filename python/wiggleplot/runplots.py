@@ -189,15 +189,13 @@ def plot_trajectory(run, out_dir, formats):
     if "slope" in lines:
         tt, yy, v = lines["slope"]
         ax.plot(tt, yy, "--", color="#1b9e77", lw=1.2, label=rf"least squares: {v:.3g}")
-    vm = prepare.model_rate_at(run.model, run.period)
-    if vm is not None and "vy" in lines:
-        tt, yy, _ = lines["vy"]
-        ax.plot(tt, yy[0] + vm * (tt - tt[0]), ":", color=style.MODEL_COLOUR, lw=1.4,
-                label=rf"cavity model: {vm:.3g}")
-    elif run.model is not None and run.period is not None:
-        t_rise = run.model.get("T_rise")
-        if t_rise is not None and run.period <= t_rise:
-            ax.plot([], [], " ", label=rf"cavity model: no rise ($T \leq T_{{rise}}$ = {t_rise:.3g})")
+    # The cavity model says where rising starts (T_rise), in words only: its own V_y is the model's
+    # magnitude, many times a simulated rate, and drawn here it would read as a prediction of this run.
+    t_rise = run.model.get("T_rise") if run.model is not None else None
+    if isinstance(t_rise, (int, float)) and run.period is not None:
+        side = r">" if run.period > t_rise else r"\leq"
+        expect = "rising" if run.period > t_rise else "no rise"
+        ax.plot([], [], " ", label=rf"cavity model: {expect} ($T$ = {run.period:g} {side} $T_{{rise}}$ = {t_rise:.3g})")
     ti = run.summary.get("t_i")
     if ti is not None:
         ax.axvline(ti, color="0.6", lw=0.6, ls="-")

@@ -25,7 +25,6 @@ GRAIN_COLOURS = ("#d9c9a3", "#b8a57a")  # alternating bands of grains (by initia
 BASE_COLOUR = "#2b4c9b"                 # the frozen base row (blue, as in the paper's fig. 1)
 INTRUDER_COLOUR = "#c8102e"             # intruder atoms
 MODEL_COLOUR = "black"
-MODEL_AXIS_COLOUR = "0.35"  # the cavity model's own V_y axis (fig. 5's right-hand axis)
 
 RC = {
     "font.size": 9,

@@ -98,41 +98,22 @@ def _axes_legend_items(axes):
     return [item for ax in axes for item in zip(*ax.get_legend_handles_labels())]
 
 
-def _draw_model(ax, model, label=True):
-    """The cavity model's V_y(T) over the panel's periods, on an axis of its own (right) with its
-    zero level with the data's: the model's rates reach ten times the measured ones, and on the
-    data's scale the curve ran off the axes. A jump in the curve (it drops to 0 at T_max, where the
-    cavity no longer closes) is left as a gap, not drawn as a vertical line. Call it once the
-    panel's limits are set; returns the line (for the legend) or None."""
-    if model is None or len(model["curve"]) < 2:
+def _mark_t_rise(ax, model):
+    """The cavity model's T_rise (where the paper's model lets rising start, its use in Table 1) as a
+    dashed line on a V_y-vs-T panel, where it falls within the panel's periods; the model's own V_y(T)
+    is not drawn: its magnitude is the model's, many times a simulated rate, and on these axes
+    (or a second one scaled to fit) it would read as an agreement or a disagreement it is not
+    (`wiggle model --periods` prints it). Call it once the panel's limits are set; returns the
+    line (for the legend) or None."""
+    if model is None:
         return None
-    curve = model["curve"][np.argsort(model["curve"][:, 0])]
+    rises = sorted({model[k] for k in ("T_rise", "T_rise_left", "T_rise_right") if isinstance(model.get(k), (int, float))})
     x_lo, x_hi = ax.get_xlim()
-    curve = curve[(curve[:, 0] >= x_lo) & (curve[:, 0] <= x_hi)]
-    if len(curve) < 2:
-        return None
-    T, vy = curve[:, 0].copy(), curve[:, 1].copy()
-    amplitude = model.get("amplitude")
-    about = [f"$A$ = {amplitude:g}"] if isinstance(amplitude, (int, float)) else []
-    lo, hi = min(vy.min(), 0.0), max(vy.max(), 0.0)
-    y_lo, y_hi = ax.get_ylim()
-    zero = -y_lo / (y_hi - y_lo)  # where the data's 0 sits, as a fraction of the panel's height
-    if hi - lo == 0.0 or not 0.0 < zero < 1.0:  # zero over the whole panel: on the data's axis
-        text = "cavity model" + (f" ({about[0]})" if about else "")
-        (line,) = ax.plot(T, vy, "--", color=style.MODEL_COLOUR, lw=1.0, label=text if label else None)
-        return line
-    text = "cavity model (" + ", ".join(about + ["right axis"]) + ")"
-    # A step between neighbours larger than a third of the curve's range is a jump: break the line.
-    jumps = np.nonzero(np.abs(np.diff(vy)) > (hi - lo) / 3.0)[0]
-    T, vy = np.insert(T, jumps + 1, np.nan), np.insert(vy, jumps + 1, np.nan)
-    model_ax = ax.twinx()
-    (line,) = model_ax.plot(T, vy, "--", color=style.MODEL_COLOUR, lw=1.0, label=text if label else None)
-    # The model's zero at the height of the data's zero.
-    top = 1.15 * max(hi, -lo * (1.0 - zero) / zero)
-    model_ax.set_ylim(-top * zero / (1.0 - zero), top)
-    model_ax.grid(False)
-    model_ax.tick_params(axis="y", colors=style.MODEL_AXIS_COLOUR, labelsize=7)
-    model_ax.set_ylabel("cavity model", color=style.MODEL_AXIS_COLOUR, fontsize=7.5, labelpad=2)
+    line = None
+    for t_rise in rises:
+        if x_lo <= t_rise <= x_hi:
+            line = ax.axvline(t_rise, color=style.MODEL_COLOUR, ls="--", lw=0.9,
+                              label="cavity model's $T_{rise}$ (paper section 3.5)")
     return line
 
 
@@ -178,8 +159,8 @@ def _plot_rate_curves(sweep, curves, line_key, line_label, name, title_extra, fo
         ax.set_xlabel(style.PERIOD_LABEL)
         ax.set_ylabel(style.VY_LABEL)
         legend += _axes_legend_items([ax])
-        model = _draw_model(ax, sweep.model(panel))
-        if model is not None:
+        model = _mark_t_rise(ax, sweep.model(panel))
+        if model is not None and model.get_label() not in [label for _, label in legend]:
             legend.append((model, model.get_label()))
     _legend_above(fig, legend, most_columns=6)
     fig.tight_layout()
