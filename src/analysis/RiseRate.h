@@ -46,10 +46,10 @@ struct RiseRate {
   bool windowTooShort() const { return windowPeriods < kMinWindowPeriods; }
   // The drive starts at full speed and sets the whole bed moving: the first 10-20 time units are
   // a start-up transient (docs/VALIDATION.md: the disk at T = 1 climbs 8 d in the first 12, then
-  // stays). A window that ends before kStartupTime measures that transient, not a steady rise or
+  // stays). A window that ends by kStartupTime measures that transient, not a steady rise or
   // sink (a T = 1 run of t = 5 gave V_y = 0.74): it is reported with a warning too.
   static constexpr double kStartupTime = 20.0;
-  bool withinStartupTransient() const { return tFinal < kStartupTime; }
+  bool withinStartupTransient() const { return tFinal <= kStartupTime; }
   // A window that starts inside the transient and ends after it mixes the two: the share of it
   // before kStartupTime (the presets' t = 10-100: 0.11), and past kMostStartupShare it is warned of
   // too (a run to t = 30 measures over t = 3-30, 0.63 of it in the transient).

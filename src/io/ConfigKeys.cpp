@@ -161,6 +161,12 @@ const std::vector<KeyInfo>& keyTable() {
                     "mass (LAMMPS's fix rigid); atom = M' the mass of one of the n glued 0.5 d spheres that fill its "
                     "outline, M / n (LAMMPS's fix move with the atoms' own masses; docs/PHYSICS.md, section 6). The "
                     "body moves with M either way")),
+      choice("intruder.rotation", choiceNameList<IntruderRotation>(),
+             [](const C& c) -> std::string { return std::string(choiceName(c.intruder.rotation)); },
+             [](C& c, const std::string& v) { c.intruder.rotation = *choiceNamed<IntruderRotation>(v); },
+             "locked = the intruder never turns (the paper's model); free = it turns about its centre under the "
+             "contact torques while it is driven, with the moment of inertia of the glued spheres it is built of "
+             "(docs/PHYSICS.md, section 6); held still while the bed is made either way"),
       // [drive]
       number("drive.amplitude", [](C& c) -> double& { return c.drive.amplitude; }, atLeast(0),
              noBound, "d",

@@ -18,6 +18,7 @@ enum class ShapeName : std::uint8_t { Disk, Square, RectNarrow, RectWide, Triang
 enum class MassRule : std::uint8_t { DiskArea, GluedDisk };      // intruder.mass_rule (docs/SHAPES.md, "Mass")
 enum class IntruderSurface : std::uint8_t { Smooth, Glued, Lattice };  // intruder.surface (docs/SHAPES.md)
 enum class ContactMass : std::uint8_t { Body, Atom };            // intruder.contact_mass (docs/PHYSICS.md §6)
+enum class IntruderRotation : std::uint8_t { Locked, Free };     // intruder.rotation (docs/PHYSICS.md §6)
 enum class DriveForm : std::uint8_t { Displacement, Velocity };  // drive.form (docs/PHYSICS.md §7)
 enum class BedPour : std::uint8_t { Lattice, Random };           // bed.pour (docs/PHYSICS.md §8)
 enum class BedCavity : std::uint8_t { Poured, Carved };          // bed.cavity (docs/PHYSICS.md §8)
@@ -37,6 +38,10 @@ struct ChoiceNames<IntruderSurface> {
 template <>
 struct ChoiceNames<ContactMass> {
   static constexpr std::array<std::string_view, 2> names{"body", "atom"};
+};
+template <>
+struct ChoiceNames<IntruderRotation> {
+  static constexpr std::array<std::string_view, 2> names{"locked", "free"};
 };
 template <>
 struct ChoiceNames<DriveForm> {
@@ -72,6 +77,7 @@ struct IntruderDef {
   MassRule massRule = MassRule::DiskArea;             // intruder.mass_rule
   IntruderSurface surface = IntruderSurface::Smooth;  // intruder.surface
   ContactMass contactMass = ContactMass::Body;        // intruder.contact_mass
+  IntruderRotation rotation = IntruderRotation::Locked;  // intruder.rotation
 };
 
 struct DriveDef {

@@ -86,22 +86,28 @@ double forceBlock(std::uint32_t b, ParticleStore& s, const Kinematics* kin, Neig
 }
 
 template <class Law>
-double intruderPairForces(const ParticleStore& s, const ClumpDef& clump, const ClumpState& state, IntruderPairs& ip,
-                          const ContactParams params, double dt, double width, bool updateShear, double overlapRatio) {
+double intruderPairForces(const ParticleStore& s, const ClumpDef& clump, const ClumpState& state, double omega,
+                          IntruderPairs& ip, const ContactParams params, double dt, double width, bool updateShear,
+                          double overlapRatio) {
   double worstExcess = -std::numeric_limits<double>::infinity();
   const double invClumpMass = 1.0 / clump.contactMass();
   const PairSlots slots{ip.shearX.data(), ip.shearY.data(), ip.forceX.data(), ip.forceY.data(),
                         ip.torqueArm.data()};
+  // A turning clump's atom moves at v + omega x r and spins at omega (as a rigid body's atoms do in
+  // LAMMPS's fix rigid); a clump that does not turn keeps the plain expressions, and their bits.
+  const bool turning = omega != 0.0;
   auto inputs = [&](std::uint32_t p) {
     const std::uint32_t g = ip.grain[p], a = ip.atom[p];
+    const double atomVx = turning ? state.vx - omega * clump.offsetY[a] : state.vx;
+    const double atomVy = turning ? state.vy + omega * clump.offsetX[a] : state.vy;
     return PairInputs<double>{minimumImage(s.x[g] - (state.x + clump.offsetX[a]), width),
                               s.y[g] - (state.y + clump.offsetY[a]),
-                              s.vx[g] - state.vx,
-                              s.vy[g] - state.vy,
+                              s.vx[g] - atomVx,
+                              s.vy[g] - atomVy,
                               s.radius[g],
                               clump.atomRadius,
                               s.omega[g],
-                              0.0,
+                              turning ? omega : 0.0,
                               s.invMass[g] + invClumpMass,
                               s.radius[g]};
   };

@@ -37,8 +37,9 @@ struct ForceKernels {
   // The contacts between grains and the clump's atoms: each pair's force, torque arm and new history
   // written into its slots (IntruderPairs), nothing summed yet (World adds them to the grains and
   // the clump, in list order), so that it can run beside the force blocks. Returns the largest
-  // overlap excess. An atom enters meff with the clump's contact mass (ClumpDef::contactMass).
-  double (*intruderPairForces)(const ParticleStore& s, const ClumpDef& clump, const ClumpState& state,
+  // overlap excess. An atom enters meff with the clump's contact mass (ClumpDef::contactMass) and
+  // moves with the clump, turning at `omega` about its centre (0: not turning).
+  double (*intruderPairForces)(const ParticleStore& s, const ClumpDef& clump, const ClumpState& state, double omega,
                                IntruderPairs& pairs, ContactParams params, double dt, double width, bool updateShear,
                                double overlapRatio);
 };

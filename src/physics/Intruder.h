@@ -1,8 +1,9 @@
 #pragma once
-// The intruder as the engine sees it (docs/PHYSICS.md §6): a rigid clump of small atoms that does not rotate.
-// Its horizontal position is prescribed; its vertical position is either held or integrated from
-// the sum of the contact forces on its atoms plus gravity on its total mass. Atoms do not interact
-// with each other. Shapes (how atoms fill an outline) live in scenario/.
+// The intruder as the engine sees it (docs/PHYSICS.md §6): a rigid clump of small atoms. Its
+// horizontal position is prescribed; its vertical position is either held or integrated from the
+// sum of the contact forces on its atoms plus gravity on its total mass; it turns about its centre
+// under their torque only when its motion lets it (rotationFree). Atoms do not interact with each
+// other. Shapes (how atoms fill an outline) live in scenario/.
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -19,6 +20,9 @@ struct ClumpDef {
   // whole body meets each grain (LAMMPS's fix rigid); n, each contact sees one of the n spheres the
   // body is built of, M / n (LAMMPS's fix move with the atoms' own masses). The y equation keeps M.
   std::uint32_t massShares = 1;
+  // Moment of inertia about the centre [rho d^5]: used only when the clump may turn
+  // (ClumpMotion::rotationFree; docs/PHYSICS.md §6).
+  double inertia = 0.0;
 
   double contactMass() const { return mass / massShares; }  // an atom's mass in meff [rho d^3]
 };
@@ -50,6 +54,9 @@ struct ClumpMotion {
   // engine refuses a vx beyond it). Not saved: a world with it cannot be checkpointed.
   std::function<Position(double)> prescribed = nullptr;
   double peakSpeed = 0.0;  // [sqrt(g d)]
+  // The clump turns about its centre under the contact torques (intruder.rotation = "free"); false:
+  // it never turns (the paper's model, and while the bed is made).
+  bool rotationFree = false;
 
   double omega() const { return 2.0 * std::numbers::pi / period; }  // angular frequency of the sinusoids
   bool sinusoidal() const {  // one of the drives with a period
@@ -87,6 +94,14 @@ struct ClumpMotion {
     }
     return {x0, 0.0};
   }
+};
+
+// The clump's turn about its centre when it may turn (ClumpMotion::rotationFree): kept apart from
+// ClumpState, whose bytes the state hash of every non-turning run holds.
+struct ClumpSpin {
+  double angle = 0.0;   // turned since the run's start, counter-clockwise [rad]
+  double omega = 0.0;   // [sqrt(g/d)]
+  double torque = 0.0;  // of the contact forces about the centre [m g d]
 };
 
 struct ClumpState {

@@ -8,6 +8,7 @@
 
 #include "core/Assert.h"
 #include "core/Format.h"
+#include "physics/ClumpTurn.h"
 
 #include <omp.h>
 
@@ -139,7 +140,7 @@ double addIntruderContactForces(ParticleStore& s, const ClumpDef& clump, ClumpSt
                                 const ContactParams params, double dt, double width, bool updateShear,
                                 double overlapRatio) {
   const double excess = forceKernels(defaultSimdLevel(), params.law)
-                            .intruderPairForces(s, clump, state, pairs, params, dt, width, updateShear, overlapRatio);
+                            .intruderPairForces(s, clump, state, 0.0, pairs, params, dt, width, updateShear, overlapRatio);
   addIntruderPairForces(s, state, pairs);
   return excess;
 }
@@ -205,6 +206,9 @@ void World::setIntruder(const ClumpDef& clump, double x, double y) {
     requireFinite(clump.offsetY[a], "intruder atom offset");
   }
   clump_ = clump;
+  bodyOffsetX_ = clump.offsetX;
+  bodyOffsetY_ = clump.offsetY;
+  spin_ = ClumpSpin{};
   hasIntruder_ = true;
   clumpState_ = ClumpState{x, y, 0.0, 0.0, 0.0, 0.0};
   motion_ = ClumpMotion{};
@@ -224,7 +228,10 @@ void World::setIntruderMotion(const ClumpMotion& motion) {
   requireFinite(motion.x0, "drive centre");
   requireFinite(motion.amplitude, "drive amplitude");
   requireFinite(motion.velocity, "drive velocity");
+  if (motion.rotationFree && !(clump_.inertia > 0 && std::isfinite(clump_.inertia)))
+    throw Error("a clump that turns needs a moment of inertia > 0");
   motion_ = motion;
+  if (!motion_.rotationFree) spin_.omega = 0.0;
   if (!motion_.verticalFree) clumpState_.vy = 0.0;
   placeIntruder();
   prepared_ = false;  // the drive velocity enters the contact forces: re-evaluate them
@@ -284,13 +291,22 @@ void World::setParameters(const WorldDef& def) {
   prepared_ = false;
 }
 
-void World::setIntruderMass(double mass, std::uint32_t massShares) {
+void World::setIntruderMass(double mass, std::uint32_t massShares, double inertia) {
   if (!hasIntruder_) throw Error("set an intruder before its mass");
   if (!(mass > 0) || !std::isfinite(mass)) throw Error("intruder mass must be > 0");
   if (massShares == 0) throw Error("intruder mass shares must be >= 1");
+  if (!(inertia >= 0) || !std::isfinite(inertia)) throw Error("intruder moment of inertia must be >= 0");
   clump_.mass = mass;
   clump_.massShares = massShares;
+  clump_.inertia = inertia;
   prepared_ = false;
+}
+
+void World::setIntruderSpin(double omega) {
+  if (!hasIntruder_ || !motion_.rotationFree) throw Error("only a clump that may turn takes a spin");
+  requireFinite(omega, "intruder spin");
+  spin_.omega = omega;
+  prepared_ = false;  // the atoms' velocities enter the contact forces
 }
 
 void World::scaleGrainVelocities(double factor) {
@@ -445,10 +461,19 @@ void World::kickIntruder() {
   clumpState_.vy += 0.5 * def_.dt * (clumpState_.contactFy - clump_.mass * def_.gravity) / clump_.mass;
 }
 
+void World::kickIntruderSpin() { spin_.omega += 0.5 * def_.dt * spin_.torque / clump_.inertia; }
+
+void World::turnIntruder() { turnedOffsets(bodyOffsetX_, bodyOffsetY_, spin_.angle, clump_.offsetX, clump_.offsetY); }
+
 void World::startIntruder() {
   if (hasIntruder_ && motion_.verticalFree) {
     kickIntruder();
     clumpState_.y += def_.dt * clumpState_.vy;
+  }
+  if (hasIntruder_ && motion_.rotationFree) {
+    kickIntruderSpin();
+    spin_.angle += def_.dt * spin_.omega;
+    turnIntruder();
   }
 }
 
@@ -523,6 +548,10 @@ bool World::intruderPairsStale() const {
   // A pair outside the list was farther than radI + radJ + intruderSkin at the build. Since then
   // the clump moved by |d| and the grain by at most skin/2 + (its displacement bound at the build).
   const double margin = def_.intruderSkin - 0.5 * def_.skin - grainDisplacementAtIntruderBuild_;
+  if (motion_.rotationFree) {  // an atom moves by at most its distance from the centre times the turn
+    const double moved = std::hypot(dx, dy) + clumpReach(clump_) * std::fabs(spin_.angle - clumpAngleAtBuild_);
+    return moved > margin || margin <= 0.0;
+  }
   return dx * dx + dy * dy > margin * margin || margin <= 0.0;
 }
 
@@ -577,6 +606,7 @@ void World::rebuildIntruderPairs(const std::vector<std::uint32_t>& newToOld) {
   pairs.torqueArm.assign(pairs.size(), 0.0);
   clumpXAtBuild_ = cx;
   clumpYAtBuild_ = cy;
+  clumpAngleAtBuild_ = spin_.angle;
   grainDisplacementAtIntruderBuild_ = std::sqrt(maxDisplacementSq_);
   profile_.lap(StepStage::IntruderPairs);
 }
@@ -606,8 +636,10 @@ void World::computeContactForces(bool updateShear) {
     const auto threads = static_cast<std::uint32_t>(omp_get_num_threads());
     const auto t = static_cast<std::uint32_t>(omp_get_thread_num());
     if (t == 0 && hasIntruder_)
-      worstExcess = std::max(worstExcess, kernels_->intruderPairForces(s, clump_, clumpState_, intruderPairs_, params,
-                                                                       dt, width, updateShear, overlapRatio));
+      worstExcess = std::max(worstExcess, kernels_->intruderPairForces(s, clump_, clumpState_,
+                                                                       motion_.rotationFree ? spin_.omega : 0.0,
+                                                                       intruderPairs_, params, dt, width, updateShear,
+                                                                       overlapRatio));
     const NeighbourList::Strip strip = list.strip(t, threads, firstThreadPairs());
     for (std::uint32_t b = strip.firstBlock; b < strip.lastBlock; ++b)
       worstExcess = std::max(worstExcess, kernels_->forceBlock(b, s, kinematics_.data(), list, params, dt, width,
@@ -619,6 +651,7 @@ void World::computeContactForces(bool updateShear) {
   // 2. The intruder's pair forces onto its grains and the clump, serially in list order (after the
   //    blocks, which start their grains' sums from zero), so that no sum depends on the thread count.
   if (hasIntruder_) addIntruderPairForces(s, clumpState_, intruderPairs_);
+  if (hasIntruder_ && motion_.rotationFree) spin_.torque = clumpContactTorque(clump_, intruderPairs_);
   overlapAlarm_ = worstExcess > 0.0;
   profile_.lap(StepStage::IntruderSums);
 }
@@ -631,6 +664,7 @@ void World::completeForces(bool kick, bool startNextStep) {
       GrainPass{.finishForces = true, .kick = kick, .start = startNextStep, .track = startNextStep && !listsStale_});
   if (startNextStep) maxDisplacementSq_ = maxSq;
   if (kick && hasIntruder_ && motion_.verticalFree) kickIntruder();
+  if (kick && hasIntruder_ && motion_.rotationFree) kickIntruderSpin();
   profile_.lap(StepStage::CompleteForces);
 }
 

@@ -95,9 +95,11 @@ class World {
   // the particles were made with. The lists are rebuilt and the forces evaluated afresh.
   void setParameters(const WorldDef& def);
   // Another mass for the same intruder atoms (a bed poured around a held intruder of one mass, or
-  // with one contact mass, run with another: ClumpDef::mass and massShares); the forces are
+  // with one contact mass, run with another: ClumpDef::mass, massShares and inertia); the forces are
   // evaluated afresh, since the mass enters the contacts' meff.
-  void setIntruderMass(double mass, std::uint32_t massShares);
+  void setIntruderMass(double mass, std::uint32_t massShares, double inertia);
+  // The turning clump's angular velocity now [sqrt(g/d)] (a spin given before its first step).
+  void setIntruderSpin(double omega);
   // Every grain's velocity and spin multiplied by `factor` (bed making's damped relaxation); the
   // forces are evaluated afresh before the next step, as after any change of the state.
   void scaleGrainVelocities(double factor);
@@ -142,6 +144,7 @@ class World {
   bool hasIntruder() const { return hasIntruder_; }
   const ClumpDef& clump() const { return clump_; }
   const ClumpState& intruder() const { return clumpState_; }
+  const ClumpSpin& intruderSpin() const { return spin_; }  // its turn, when it may turn
   const ClumpMotion& intruderMotion() const { return motion_; }
   std::uint64_t stepCount() const { return step_; }
   double time() const { return static_cast<double>(step_) * def_.dt; }
@@ -181,6 +184,8 @@ class World {
   };
   double passOverGrains(GrainPass pass);
   void kickIntruder();            // the free intruder's half kick in y
+  void kickIntruderSpin();        // the turning intruder's half kick of its angular velocity
+  void turnIntruder();            // its atoms' offsets at its angle
   void startIntruder();           // the intruder's first half kick and drift in y, when it is free
   void placeIntruder();           // prescribed x, vx at the current time
   void rebuildNeighbours();       // wrap, maybe re-sort, rebuild both lists carrying history
@@ -210,6 +215,10 @@ class World {
   ClumpDef clump_;
   ClumpState clumpState_;
   ClumpMotion motion_;
+  // A turning clump (motion_.rotationFree): its turn, and its atoms' offsets at angle 0 (clump_'s
+  // offsets are those at spin_.angle, which every reader of the atoms sees).
+  ClumpSpin spin_;
+  std::vector<double> bodyOffsetX_, bodyOffsetY_;
 
   std::uint64_t step_ = 0;
   std::uint64_t rebuilds_ = 0;
@@ -230,6 +239,7 @@ class World {
   double maxDisplacementSq_ = 0.0;
   // Intruder list validity: clump position at its build and the grains' displacement bound then.
   double clumpXAtBuild_ = 0.0, clumpYAtBuild_ = 0.0, grainDisplacementAtIntruderBuild_ = 0.0;
+  double clumpAngleAtBuild_ = 0.0;  // a turning clump's angle then
   // Old-index map for structural changes between prepare() calls (identity when empty).
   std::vector<std::uint32_t> pendingNewToOld_;
 };

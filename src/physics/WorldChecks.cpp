@@ -241,6 +241,7 @@ std::string World::stateHash() const {
   h.add(intruderPairs_.shearX);
   h.add(intruderPairs_.shearY);
   h.addValue(clumpState_);
+  if (motion_.rotationFree) h.addValue(spin_);  // a clump that never turns keeps its runs' hashes
   return h.hex();
 }
 

@@ -20,6 +20,9 @@ constexpr std::uint32_t kFirstFormatWithLaw = 3;
 // The version that added the clump's mass shares (ClumpDef::massShares) at the end; older files
 // hold clumps whose whole mass enters meff (1 share).
 constexpr std::uint32_t kFirstFormatWithMassShares = 4;
+// The version that added whether the clump may turn after the shares, and, when it may, its turn, its
+// angle at the intruder pairs' build, its moment of inertia and its atoms' offsets at angle 0.
+constexpr std::uint32_t kFirstFormatWithRotation = 5;
 
 void World::save(BinaryWriter& out) const {
   if (motion_.kind == HorizontalMotion::Prescribed)
@@ -95,6 +98,16 @@ void World::save(BinaryWriter& out) const {
   out.value(margins_.overlap);
   out.value(margins_.speed);
   out.value(clump_.massShares);
+  out.value(static_cast<std::uint8_t>(motion_.rotationFree));
+  if (motion_.rotationFree) {
+    out.value(spin_.angle);
+    out.value(spin_.omega);
+    out.value(spin_.torque);
+    out.value(clumpAngleAtBuild_);
+    out.value(clump_.inertia);
+    out.array(bodyOffsetX_);
+    out.array(bodyOffsetY_);
+  }
 }
 
 namespace {
@@ -246,6 +259,21 @@ World World::load(BinaryReader& in) {
   if (in.formatVersion() >= kFirstFormatWithMassShares) {
     w.clump_.massShares = in.value<std::uint32_t>();
     if (w.clump_.massShares == 0) throw Error(in.what() + " is corrupt: an intruder of 0 mass shares");
+  }
+  w.bodyOffsetX_ = w.clump_.offsetX;
+  w.bodyOffsetY_ = w.clump_.offsetY;
+  if (in.formatVersion() >= kFirstFormatWithRotation && in.value<std::uint8_t>() != 0) {
+    w.motion_.rotationFree = true;
+    w.spin_.angle = in.value<double>();
+    w.spin_.omega = in.value<double>();
+    w.spin_.torque = in.value<double>();
+    w.clumpAngleAtBuild_ = in.value<double>();
+    w.clump_.inertia = in.value<double>();
+    w.bodyOffsetX_ = in.array<double>();
+    w.bodyOffsetY_ = in.array<double>();
+    if (w.bodyOffsetX_.size() != w.clump_.offsetX.size() || w.bodyOffsetY_.size() != w.clump_.offsetY.size() ||
+        !(w.clump_.inertia > 0))
+      throw Error(in.what() + " is corrupt: a turning intruder's body does not match its atoms");
   }
   if (!w.listsStale_ && (w.xAtBuild_.size() != s.grainCount || w.yAtBuild_.size() != s.grainCount))
     throw Error(in.what() + " is corrupt: build positions do not match the grains");

@@ -70,7 +70,11 @@ TEST(RiseRate, AWindowStartingInTheStartupTransientIsFlaggedWhenMostlyInIt) {
   EXPECT_TRUE(rateWarnings(preset).empty());
   // From t = 20 on, none of it: the measure the warning proposes.
   EXPECT_EQ(measureRiseRate(sampled(30, 0.01, y), {20.0, 30.0}, 5, 200.0).startupShare(), 0.0);
-  // A window wholly inside the transient is said once, as such, not also as starting in it.
+  // A window wholly inside the transient (to t = 20 included) is said once, as such, not also as
+  // starting in it.
+  const RiseRate twenty = measureRiseRate(sampled(20, 0.01, y), paperWindow(20), 5, 200.0);
+  EXPECT_TRUE(twenty.withinStartupTransient());
+  EXPECT_EQ(rateWarnings(twenty).size(), 1u);
   const RiseRate early = measureRiseRate(sampled(5, 0.01, y), paperWindow(5), 1, 50.0);
   EXPECT_TRUE(early.withinStartupTransient());
   EXPECT_FALSE(early.startsInStartupTransient());

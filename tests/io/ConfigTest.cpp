@@ -61,6 +61,7 @@ std::vector<std::string> differingFields(const RunConfig& a, const RunConfig& b)
   other("intruder.massRule", a.intruder.massRule == b.intruder.massRule);
   other("intruder.surface", a.intruder.surface == b.intruder.surface);
   other("intruder.contactMass", a.intruder.contactMass == b.intruder.contactMass);
+  other("intruder.rotation", a.intruder.rotation == b.intruder.rotation);
   num("drive.amplitude", a.drive.amplitude, b.drive.amplitude);
   num("drive.period", a.drive.period, b.drive.period);
   other("drive.rampPeriods", a.drive.rampPeriods == b.drive.rampPeriods);
@@ -127,6 +128,7 @@ const std::vector<std::tuple<std::string, std::string, std::string>>& everyKey()
       {"intruder.mass_rule", "glued_disk", "intruder.massRule"},
       {"intruder.surface", "glued", "intruder.surface"},
       {"intruder.contact_mass", "atom", "intruder.contactMass"},
+      {"intruder.rotation", "free", "intruder.rotation"},
       {"drive.amplitude", "1", "drive.amplitude"},
       {"drive.period", "2", "drive.period"},
       {"drive.ramp_periods", "3", "drive.rampPeriods"},
@@ -177,7 +179,7 @@ TEST(Config, KeyListIsExactlyTheSpecKeys) {
   std::set<std::string> expected;
   for (const auto& [key, value, field] : everyKey()) expected.insert(key);
   const std::vector<std::string> keys = configKeys();
-  EXPECT_EQ(keys.size(), 56u);
+  EXPECT_EQ(keys.size(), 57u);
   EXPECT_EQ(std::set<std::string>(keys.begin(), keys.end()), expected);
 }
 

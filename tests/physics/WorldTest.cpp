@@ -230,9 +230,9 @@ TEST(World, HistorySurvivesRebuildAndResort) {
   EXPECT_GE(rebuildsSeen, 3);
 }
 
-std::string runPileWithThreads(int threads, int steps, SimdLevel simd = defaultSimdLevel(), bool profile = false) {
-  const int saved = omp_get_max_threads();
-  omp_set_num_threads(threads);
+// A pile settled for steps / 2 around a ring clump, then the clump driven for steps / 2 (turning
+// under the contact torques too when `turning`).
+World drivenPile(int steps, SimdLevel simd = defaultSimdLevel(), bool profile = false, bool turning = false) {
   World w = makePile(20, 15, 3, 12.0, 9.0, 1.8);
   w.useSimdLevel(simd);
   w.enableStepProfile(profile);
@@ -242,19 +242,45 @@ std::string runPileWithThreads(int threads, int steps, SimdLevel simd = defaultS
     clump.offsetY.push_back(0.75 * std::sin(a * 0.5236));
   }
   clump.mass = 3.0;
+  clump.inertia = 1.0;
   w.setIntruder(clump, 12.0, 9.0);
   w.run(steps / 2);
-  w.setIntruderMotion({HorizontalMotion::Sinusoid, 12.0, 1.5, 0.5, 0.0, true});
+  ClumpMotion motion{HorizontalMotion::Sinusoid, 12.0, 1.5, 0.5, 0.0, true};
+  motion.rotationFree = turning;
+  w.setIntruderMotion(motion);
   w.resetClock();  // the drive starts at its t = 0, where x = x0 (else the clump jumps into the grains)
   w.run(steps / 2);
+  return w;
+}
+
+std::string runPileWithThreads(int threads, int steps, SimdLevel simd = defaultSimdLevel(), bool profile = false,
+                               bool turning = false) {
+  const int saved = omp_get_max_threads();
+  omp_set_num_threads(threads);
+  const std::string hash = drivenPile(steps, simd, profile, turning).stateHash();
   omp_set_num_threads(saved);
-  return w.stateHash();
+  return hash;
 }
 
 TEST(World, BitwiseIdenticalForAnyThreadCount) {
   const std::string one = runPileWithThreads(1, 4000);
   EXPECT_EQ(runPileWithThreads(2, 4000), one);
   EXPECT_EQ(runPileWithThreads(3, 4000), one);
+}
+
+// A clump that turns (intruder.rotation = "free") keeps the same bits at any thread count and
+// through save and load, like everything else.
+TEST(World, ATurningClumpIsTheSameAtAnyThreadCountAndThroughSaveAndLoad) {
+  const std::string one = runPileWithThreads(1, 4000, defaultSimdLevel(), false, true);
+  EXPECT_EQ(runPileWithThreads(2, 4000, defaultSimdLevel(), false, true), one);
+  EXPECT_EQ(runPileWithThreads(3, 4000, defaultSimdLevel(), false, true), one);
+  EXPECT_NE(one, runPileWithThreads(1, 4000));  // it turned: not the locked clump's course
+  World a = drivenPile(4000, defaultSimdLevel(), false, true);
+  EXPECT_NE(a.intruderSpin().angle, 0.0);
+  World b = savedAndLoaded(a);
+  EXPECT_EQ(b.intruderSpin().angle, a.intruderSpin().angle);
+  EXPECT_EQ(b.clump().offsetX, a.clump().offsetX);
+  expectSameCourse(a, b, 2000);
 }
 
 // The step's profile (physics/StepProfile.h) reads clocks only: the same bits with it on, at 1 and 2
@@ -352,7 +378,8 @@ TEST(World, StateOfTheOldestFormatLoadsAsHertz) {
   const std::size_t lawAt = 4 * sizeof(double) + 1 + 5 * sizeof(double);  // width, dt, g, rho; mass model; kn..mu
   ASSERT_EQ(bytes[lawAt], static_cast<char>(contactLaw<HertzLaw>));
   bytes.erase(lawAt, 1);
-  bytes.resize(bytes.size() - sizeof(std::uint32_t));  // nor the intruder's mass shares (format 4) at the end
+  // nor, at the end, the intruder's mass shares (format 4) and whether it may turn (format 5)
+  bytes.resize(bytes.size() - sizeof(std::uint32_t) - sizeof(std::uint8_t));
   ASSERT_EQ(kOldestStateFormatVersion, 2u) << "a format without the law byte is no longer read: drop this test";
   BinaryReader in(bytes.data(), bytes.size(), "old state", kOldestStateFormatVersion);
   World b = World::load(in);
@@ -624,8 +651,104 @@ TEST(World, ClumpOfSharedMassMovesWithItsWholeMassAndKeepsItsSharesThroughSaveAn
   EXPECT_EQ(b.clump().massShares, 151u);
   EXPECT_EQ(b.clump().mass, 3.0);
   expectSameCourse(w, b, 3000);
-  EXPECT_THROW(w.setIntruderMass(3.0, 0), Error);
+  EXPECT_THROW(w.setIntruderMass(3.0, 0, 0.0), Error);
   EXPECT_THROW(World(smallBox()).setIntruder(ClumpDef{{0.0}, {0.0}, 0.25, 3.0, 0}, 5, 5), Error);
+}
+
+// intruder.rotation = "free" (ClumpMotion::rotationFree, docs/PHYSICS.md §6). A dumbbell of two
+// atoms at (-1, 0) and (1, 0), held in x and y, free to turn.
+ClumpMotion turningInPlace(double x0) {
+  ClumpMotion motion;
+  motion.x0 = x0;
+  motion.rotationFree = true;
+  return motion;
+}
+
+// No contact, no torque: the spin stays what it was given, to the bit, and the atoms turn rigidly
+// by omega t.
+TEST(World, TorqueFreeSpinKeepsItsAngularMomentum) {
+  World w(smallBox());
+  w.addGrain(1.0, 50.0, 0.5);  // far away
+  w.setIntruder(ClumpDef{{-1.0, 1.0}, {0.0, 0.0}, 0.25, 3.0, 1, 2.0}, 10.0, 30.0);
+  w.setIntruderMotion(turningInPlace(10.0));
+  w.setIntruderSpin(0.7);
+  w.run(10000);  // t = 1
+  EXPECT_EQ(w.intruderSpin().omega, 0.7);
+  EXPECT_EQ(w.intruderSpin().torque, 0.0);
+  EXPECT_NEAR(w.intruderSpin().angle, 0.7, 1e-12);
+  EXPECT_NEAR(w.clump().offsetX[1], std::cos(0.7), 1e-12);
+  EXPECT_NEAR(w.clump().offsetY[1], std::sin(0.7), 1e-12);
+  EXPECT_NEAR(std::hypot(w.clump().offsetX[0], w.clump().offsetY[0]), 1.0, 1e-15);
+  EXPECT_EQ(w.intruder().x, 10.0);  // it turns in place
+  EXPECT_EQ(w.intruder().y, 30.0);
+  // A clump without its moment of inertia cannot turn, and a locked one takes no spin.
+  World v(smallBox());
+  v.setIntruder(ClumpDef{{-1.0, 1.0}, {0.0, 0.0}, 0.25, 3.0}, 10.0, 30.0);
+  EXPECT_THROW(v.setIntruderMotion(turningInPlace(10.0)), Error);
+  EXPECT_THROW(v.setIntruderSpin(1.0), Error);
+}
+
+// A grain pressed at rest onto the right atom from above: the contact pushes that atom down with
+// the Hertz force kn delta sqrt(delta Reff), a torque -F about the centre, and after one step the
+// clump turns at the angular acceleration torque / I.
+TEST(World, AKnownTorqueGivesTheAnalyticAngularAcceleration) {
+  const double grainR = 0.5, atomR = 0.25, overlap = 1e-3, inertia = 2.5;
+  World w(smallBox());
+  w.addGrain(11.0, 30.0 + grainR + atomR - overlap, grainR);
+  w.setIntruder(ClumpDef{{-1.0, 1.0}, {0.0, 0.0}, atomR, 3.0, 1, inertia}, 10.0, 30.0);
+  w.setIntruderMotion(turningInPlace(10.0));
+  w.evaluateForces();
+  const double reff = grainR * atomR / (grainR + atomR);
+  const double force = WorldDef{}.contact.kn * overlap * std::sqrt(overlap * reff);
+  EXPECT_NEAR(w.intruderSpin().torque, -force, 1e-9 * force);
+  w.step();
+  const double expected = WorldDef{}.dt * -force / inertia;  // dt/2 (torque now + torque after): the same to O(dt)
+  EXPECT_NEAR(w.intruderSpin().omega, expected, 2e-3 * std::fabs(expected));
+  EXPECT_LT(w.intruderSpin().angle, 0.0);  // clockwise: the right end goes down
+}
+
+// A grain thrown without gravity or friction at the upper half of the right atom of a clump free in
+// y and in turning: the kinetic energy of both plus the contact's elastic energy never rises above
+// where it started (damping only takes), to velocity Verlet's error, and the clump turns.
+TEST(World, EnergyNeverRisesInADampedCollisionWithATurningClump) {
+  WorldDef def = smallBox();
+  def.gravity = 0.0;
+  def.contact.mu = 0.0;
+  World w(def);
+  const double grainR = 0.5, atomR = 0.25, mass = 3.0, inertia = 2.5;
+  w.addGrain(12.5, 30.3, grainR, -1.0, 0.0);
+  w.setIntruder(ClumpDef{{-1.0, 1.0}, {0.0, 0.0}, atomR, mass, 1, inertia}, 10.0, 30.0);
+  ClumpMotion motion = turningInPlace(10.0);
+  motion.verticalFree = true;
+  w.setIntruderMotion(motion);
+  const double kn = def.contact.kn, reff = grainR * atomR / (grainR + atomR);
+  auto energy = [&] {
+    const ParticleStore& p = w.particles();
+    const double m = p.mass[0];
+    double e = 0.5 * m * (p.vx[0] * p.vx[0] + p.vy[0] * p.vy[0]) + 0.5 * 0.4 * m * grainR * grainR * p.omega[0] * p.omega[0] +
+               0.5 * mass * w.intruder().vy * w.intruder().vy +
+               0.5 * inertia * w.intruderSpin().omega * w.intruderSpin().omega;
+    for (std::size_t a = 0; a < 2; ++a) {
+      const double delta = grainR + atomR - std::hypot(p.x[0] - (w.intruder().x + w.clump().offsetX[a]),
+                                                       p.y[0] - (w.intruder().y + w.clump().offsetY[a]));
+      if (delta > 0) e += 0.4 * kn * std::sqrt(reff) * std::pow(delta, 2.5);
+    }
+    return e;
+  };
+  const double start = energy();
+  double highest = start, previous = start;
+  double largestRise = 0.0;
+  for (int k = 0; k < 20000; ++k) {  // t = 2: the grain arrives at t = 1.25, meets the atom, leaves
+    w.step();
+    const double e = energy();
+    largestRise = std::max(largestRise, e - previous);
+    highest = std::max(highest, e);
+    previous = e;
+  }
+  EXPECT_LT(highest, start * (1 + 1e-6));
+  EXPECT_LT(largestRise, 1e-6 * start);
+  EXPECT_LT(previous, 0.99 * start);  // the collision took energy
+  EXPECT_GT(std::fabs(w.intruderSpin().omega), 0.01);  // and set the clump turning
 }
 
 // drive.ramp_periods: x = x0 + A min(1, t / t_ramp) sin(w t) starts at rest, and from t_ramp on it is

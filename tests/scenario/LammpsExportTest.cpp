@@ -168,7 +168,7 @@ TEST(LammpsExport, DeckHoldsTheCaseParameters) {
 
   // intruder.contact_mass = "atom": the atoms carry M / n in meff and the matching share of the force.
   World shared = smallWorld(MassModel::Sphere);
-  shared.setIntruderMass(shared.clump().mass, 151);
+  shared.setIntruderMass(shared.clump().mass, 151, 0.0);
   const std::string inShared = makeLammpsDeck(shared, prepareCase(config)).input;
   char atomMass[64], share[64], weight[64];
   std::snprintf(atomMass, sizeof atomMass, "%.17g", shared.clump().mass / 151);
@@ -204,6 +204,18 @@ TEST(LammpsExport, RefusesAWorldNotAtTheStartOfADrivenRun) {
   held.addFrozen(0, 0, 0.5);
   held.setIntruder(makeClump(IntruderDef{}, MassModel::Sphere, 1.0), 10, 9);
   EXPECT_THROW(makeLammpsDeck(held, prepareCase(config)), Error);  // intruder held, not driven
+  // A clump that turns has no deck (fix rigid cannot be combined with fix move): refused by name.
+  World turning = smallWorld(MassModel::Sphere);
+  turning.setIntruderMass(turning.clump().mass, 1, 10.0);
+  ClumpMotion motion = turning.intruderMotion();
+  motion.rotationFree = true;
+  turning.setIntruderMotion(motion);
+  try {
+    makeLammpsDeck(turning, prepareCase(config));
+    FAIL() << "a turning clump was exported";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("intruder.rotation"), std::string::npos) << e.what();
+  }
 }
 
 TEST(LammpsExport, WithoutContactHistoryKeepsEveryParticle) {

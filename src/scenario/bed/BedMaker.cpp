@@ -482,7 +482,7 @@ CachedBed pinnedBed(const RunConfig& config, const ClumpDef& clump) {
   world.setParameters(worldDefFor(config));
   std::string note;
   if (!sameAtoms) note = swapIntruder(world, clump, what) + "; ";
-  world.setIntruderMass(clump.mass, clump.massShares);  // this config's contact mass, whatever the file's was
+  world.setIntruderMass(clump.mass, clump.massShares, clump.inertia);  // this config's, whatever the file's were
   if (bed.key != bedKey(config, clump))
     note += "bed.file: running on the bed made for other parameters (key " + bed.key + "), with this config's contact, "
             "time step and engine settings";
@@ -649,9 +649,10 @@ CachedBed obtainBed(const RunConfig& config, const ClumpDef& clump, const BedPro
                       ? obtainCarvedBed(made, madeClump, progress)
                       : obtainPouredBed(made, madeClump, bedKey(made, madeClump), progress);
   // The bed of another friction (bed.mu) or intruder mass (bed.intruder_mass): run with this
-  // config's. summary.json's bed_key names the bed.
+  // config's. summary.json's bed_key names the bed. The clump's masses are always this config's: a
+  // bed file holds no moment of inertia for an intruder that did not turn.
   if (config.bed.mu >= 0.0) bed.world.setParameters(worldDefFor(config));
-  if (config.bed.intruderMass > 0.0) bed.world.setIntruderMass(clump.mass, clump.massShares);
+  bed.world.setIntruderMass(clump.mass, clump.massShares, clump.inertia);
   return bed;
 }
 

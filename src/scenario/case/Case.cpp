@@ -99,6 +99,7 @@ Case prepareCase(const RunConfig& config, BedNeeded bed) {
   c.drive.period = config.drive.period;
   c.drive.rampTime = static_cast<double>(config.drive.rampPeriods) * config.drive.period;
   c.drive.verticalFree = true;
+  c.drive.rotationFree = config.intruder.rotation == IntruderRotation::Free;
 
   const double dt = config.run.dt;
   RunSchedule& s = c.steps;

@@ -371,11 +371,6 @@ Shape uprightShape(const IntruderDef& def) {
   return makeShape(def.shape, vertices, 0.0);
 }
 
-std::size_t squareBodySize(const IntruderDef& def, double r) {
-  const Shape upright = uprightShape(def);
-  return bodySites(upright, frameFor(Lattice::Square, upright, r)).size();
-}
-
 }  // namespace
 
 std::vector<OutlinePoint> gluedSphereBody(const Shape& shape, double atomRadius) {
@@ -426,12 +421,33 @@ double gluedDiskMass(MassModel model, double density, double atomRadius) {
   return static_cast<double>(atoms) * atomMass;
 }
 
+namespace {
+
+// The centres of the spheres of the body an intruder is built of, upright: a lattice body's own,
+// else the hexagonal body of glued spheres a shell stands for.
+std::vector<OutlinePoint> builtOfSpheres(const IntruderDef& def, double r) {
+  const Shape upright = uprightShape(def);
+  if (def.surface != IntruderSurface::Lattice) return gluedSphereBody(upright, r);
+  const LatticeFrame frame = frameFor(Lattice::Square, upright, r);
+  std::vector<OutlinePoint> centres;
+  for (const LatticeSite& site : bodySites(upright, frame)) centres.push_back(frame.position(site));
+  return centres;
+}
+
+}  // namespace
+
 std::uint32_t contactMassShares(const IntruderDef& def) {
   if (def.contactMass == ContactMass::Body) return 1;
+  return static_cast<std::uint32_t>(builtOfSpheres(def, ClumpOptions{}.atomRadius).size());
+}
+
+double bodyInertia(const IntruderDef& def, double mass, MassModel model) {
   const double r = ClumpOptions{}.atomRadius;
-  const std::size_t spheres =
-      def.surface == IntruderSurface::Lattice ? squareBodySize(def, r) : gluedSphereBody(uprightShape(def), r).size();
-  return static_cast<std::uint32_t>(spheres);
+  const std::vector<OutlinePoint> spheres = builtOfSpheres(def, r);
+  const double own = (model == MassModel::Sphere ? 0.4 : 0.5) * r * r;  // a sphere's about its centre, per mass
+  double sum = 0.0;
+  for (const OutlinePoint& c : spheres) sum += c[0] * c[0] + c[1] * c[1] + own;
+  return mass / static_cast<double>(spheres.size()) * sum;
 }
 
 double intruderMass(const IntruderDef& def, MassModel model, double density) {
@@ -640,6 +656,7 @@ ClumpDef makeClump(const IntruderDef& def, const Shape& shape, MassModel model, 
   clump.atomRadius = atoms.atomRadius;
   clump.mass = intruderMass(def, model, density);
   clump.massShares = contactMassShares(def);
+  if (def.rotation == IntruderRotation::Free) clump.inertia = bodyInertia(def, clump.mass, model);
   for (const auto* list : {&atoms.surface, &atoms.guard})
     for (const OutlinePoint& p : *list) {
       clump.offsetX.push_back(p[0]);

@@ -57,6 +57,10 @@ double gluedDiskMass(MassModel model, double density, double atomRadius = 0.25);
 // of, upright (then turned): its own atoms for intruder.surface = "lattice", else gluedSphereBody's,
 // the body of glued spheres a shell stands for.
 std::uint32_t contactMassShares(const IntruderDef& def);
+// The intruder's moment of inertia about its centre when it may turn (intruder.rotation = "free"):
+// its mass M spread evenly over the spheres of the body it is built of (as contactMassShares counts
+// them), each a point M / n at its centre plus its own (2/5 for spheres, 1/2 for discs) (M / n) r^2.
+double bodyInertia(const IntruderDef& def, double mass, MassModel model);
 // def.mass when positive, else the one def.massRule names (the same for every shape).
 double intruderMass(const IntruderDef& def, MassModel model, double density);
 

@@ -207,6 +207,9 @@ LammpsDeck makeLammpsDeck(const World& world, const Case& run) {
   const ClumpMotion& motion = world.intruderMotion();
   if (!motion.sinusoidal() || !motion.verticalFree)
     throw Error("export-lammps: the intruder must be driven sinusoidally with y free");
+  if (motion.rotationFree)
+    throw Error("export-lammps: intruder.rotation = \"free\" has no LAMMPS deck: a body that turns is LAMMPS's fix "
+                "rigid, which cannot be combined with the fix move that drives x (docs/LAMMPS-EXPORT.md)");
   if (world.stepCount() != 0) throw Error("export-lammps: the world's clock must be at t = 0");
   LammpsDeck deck;
   deck.grains = world.particles().grainCount;
