@@ -229,6 +229,7 @@ RunSummary summarise(const Case& run, const std::string& dir, const World& world
   summary.tFinal = rate.tFinal;
   summary.yInitial = rate.yInitial;
   summary.yFinal = rate.yFinal;
+  summary.angleEnd = world.intruderSpin().angle;
   summary.yStart = state.samples.front().y;
   summary.vyWindowPeriods = rate.windowPeriods;
   summary.vySettled = settled.vy;

@@ -23,6 +23,8 @@ const std::vector<SummaryField>& summaryFields() {
       {"y_initial", "d", "intruder centre height at t_i", &S::yInitial},
       {"y_final", "d", "intruder centre height at t_f", &S::yFinal},
       {"y_start", "d", "intruder centre height at t = 0", &S::yStart},
+      {"angle_end", "rad", "how far the intruder turned by the end, counter-clockwise (0 unless intruder.rotation = free)",
+       &S::angleEnd},
       {"vy_window_periods", "", "(t_f - t_i) / T: the drive periods V_y is measured over", &S::vyWindowPeriods},
       {"vy_settled", "sqrt(g d)",
        "the rate by the paper's t_f rule: (y(t_settled) - y_i) / (t_settled - t_i); vy when the intruder never settled",

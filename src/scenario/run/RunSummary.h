@@ -30,6 +30,7 @@ struct RunSummary {
   std::string vyRule;
   bool plateau = false;
   double tInitial = 0.0, tFinal = 0.0, yInitial = 0.0, yFinal = 0.0, yStart = 0.0;
+  double angleEnd = 0.0;  // how far the intruder turned by the end [rad] (intruder.rotation = "free")
   double vyWindowPeriods = 0.0, averagedFromT = 0.0;
   double vySettled = 0.0, tSettled = 0.0, settleBand = 0.0;  // the paper's t_f rule (measureSettledRate)
   bool settled = false;
