@@ -62,7 +62,8 @@ def paper_observed(shape, printed=False):
 
 # Keys added after some of the committed cases were run, with the value every earlier run had.
 LATER_KEYS = {"intruder.surface": "smooth", "intruder.mass_rule": "disk_area", "bed.pour": "lattice",
-              "bed.cavity": "poured", "bed.relax_damping": 0.0, "drive.form": "displacement"}
+              "bed.cavity": "poured", "bed.relax_damping": 0.0, "drive.form": "displacement",
+              "intruder.contact_mass": "body", "intruder.rotation": "locked"}
 
 
 class Case:
@@ -1690,13 +1691,91 @@ UNMEASURED_SHORT = ("what the paper leaves open (the grains' diameter distributi
                     "fraction) and its own scatter (no repeated beds, no error bars)")
 
 
+# The coupling screen (issue 79): each factor on the factor screen's beds of the paper's protocol in the
+# 60 d box, paired bed by bed with that protocol's own run there (its `*_paper` cases; the square at
+# T = 4, the control, has its baseline in COUPLING).
+COUPLING_CELLS = [("square", 3.0), ("triangle", 5.0), ("square", 4.0)]
+COUPLING_BASE = dict(PAPER_PROTOCOL, **{"intruder.contact_mass": "body", "intruder.rotation": "locked",
+                                        "drive.form": "displacement"})
+COUPLING_ROWS = [('the atoms\' mass in the contacts (intruder.contact_mass = "atom")', {"intruder.contact_mass": "atom"}),
+                 ('the lattice body (intruder.surface = "lattice", on the same bed)', {"intruder.surface": "lattice"}),
+                 ('turning (intruder.rotation = "free")', {"intruder.rotation": "free"}),
+                 ('the drive read as a velocity (drive.form = "velocity")', {"drive.form": "velocity"})]
+
+
+def coupling_beds(shape, period, changes):
+    """{seed: V_y} of the coupling screen's cell with `changes` from the paper's protocol (none: its baseline)."""
+    where = dict(COUPLING_BASE, **changes, **{"intruder.shape": shape, "drive.period": period, "drive.amplitude": 5.0,
+                                              "box.width": 60.0})
+    return protocol_beds(COUPLING + ["results/paper_depth/factors_t1000"], where)
+
+
+def coupling_change(shape, period, changes):
+    """(change, z, which way, the factor's short name, the cell) of a coupling row in one cell, over the beds it
+    shares with the baseline; None while there are none."""
+    values, base = coupling_beds(shape, period, changes), coupling_beds(shape, period, {})
+    paired = sorted(set(values) & set(base))
+    if not paired:
+        return None
+    paper_sign = findings.paper_side(period, PAPER_RANGE[shape])
+    comparison = findings.Comparison(shape, [values[b] for b in paired], [base[b] for b in paired], paper_sign)
+    diff, z, _ = findings.judged(comparison, clock_sigma(shape))
+    toward = {+1: "toward the paper", -1: "away from the paper", 0: "within the scatter"}[findings.resolved_side(z)]
+    name = next(label.split(" (")[0] for label, c in COUPLING_ROWS if c == changes)
+    return diff, z, toward, name, f"the {shape} at T = {period:g}", len(paired)
+
+
+def answer_coupling(spec):
+    """The coupling screen: each factor's V_y per bed and its change from the paper's protocol on the
+    same beds, in standard errors of the shape's sigma by the paper's clock, and which way it moves the
+    cell against the paper's side there."""
+    head = "| what changes | " + " | ".join(f"{s}, A = 5, T = {t:g}: V_y; change (se)" for s, t in COUPLING_CELLS) + " |"
+    lines = [head, "|---|" + "---|" * len(COUPLING_CELLS)]
+    rows = [("none: the paper's protocol in the 60 d box (baseline)", {})] + COUPLING_ROWS
+    for label, changes in rows:
+        cells = []
+        for shape, period in COUPLING_CELLS:
+            values = coupling_beds(shape, period, changes)
+            if not values:
+                cells.append("not run yet")
+                continue
+            each = ", ".join(f"{v:+.4f} (bed {seed:g})" for seed, v in sorted(values.items()))
+            change = coupling_change(shape, period, changes) if changes else None
+            if not change:
+                cells.append(each)
+                continue
+            diff, z, toward, _, _, paired = change
+            cells.append(f"{each}; {diff:+.4f} ({abs(z):.1f} se, {toward}; {paired} bed{'s' if paired > 1 else ''} paired)")
+        lines.append(f"| {label} | " + " | ".join(cells) + " |")
+    shapes = list(dict.fromkeys(s for s, _ in COUPLING_CELLS))
+    lines += ["", "(V_y over t = 100-1000 of runs to t = 1000, A = 5 d, on the factor screen's beds of the paper's "
+              "protocol in the 60 d box (random pour, glued 0.5 d shell, the glued disk's mass 9.88; bed = box.seed); "
+              "configs/sweeps/paper_depth_coupling_t1000.toml. The paper's side: not rising at T = 3 for the square "
+              "(the lower end of its 3-4), rising at T = 4; rising at T = 5 for the triangle (the upper end of its 4-5). "
+              "A change is the row's mean minus the baseline's over the beds both have, in standard errors se = sigma "
+              "sqrt(1/n + 1/n), sigma " + scatter_words(shapes) + ". The pairing on one bed is expected to make a "
+              f"change's own scatter smaller than that (not measured). A change moves the cell toward the paper's side "
+              f"when >= {RESOLVED:g} se that way)"]
+    return lines, committed(COUPLING + ["results/paper_depth/factors_t1000"])
+
+
 def unmeasured(short=False):
     """What is left unexplained, in words: the coupling (as far as its screen has gone), then UNMEASURED
     (short: UNMEASURED_SHORT)."""
     done = [c for f in committed(COUPLING) for c in load(f)]
-    status = ("its screen, configs/sweeps/paper_depth_coupling_t1000.toml, being run, no results committed yet"
-              if not done else f"its screen in {', '.join(committed(COUPLING))}, {len(done)} case"
-              f"{'s' if len(done) > 1 else ''} finished, not read here yet")
+    if not done:
+        status = "its screen, configs/sweeps/paper_depth_coupling_t1000.toml, being run, no results committed yet"
+    else:
+        changes = [coupling_change(shape, period, changes) for _, changes in COUPLING_ROWS
+                   for shape, period in COUPLING_CELLS]
+        changes = [c for c in changes if c]
+        moved = [c for c in changes if c[2] != "within the scatter"]
+        beds_each = sorted({c[5] for c in changes}) or [0]
+        on = f"{beds_each[0]}" + (f"-{beds_each[-1]}" if beds_each[-1] > beds_each[0] else "")
+        status = (f"its screen being run, {len(changes)} change{'s' if len(changes) > 1 else ''} measured so far, on "
+                  f"{on} bed{'s' if beds_each[-1] > 1 else ''} each: " + ("none moves a cell by 2 standard errors so far" if not moved else
+                                                "; ".join(f"the {c[3]} moves {c[4]} {c[2]}" for c in moved))
+                  + "; docs/VALIDATION.md, \"The intruder's coupling\"")
     if short:
         return f"how the paper's glued LAMMPS body met its grains ({status}), " + UNMEASURED_SHORT
     return ("how the paper's glued LAMMPS body met its grains (its atoms' masses in the contacts' damping, a body "
@@ -1800,6 +1879,7 @@ TABLES += [
     {"name": "answer_findings", "kind": answer_findings, "sources": FINDING_SOURCES},
     {"name": "answer_differences", "kind": answer_differences, "sources": ANSWER_SOURCES},
     {"name": "answer_protocol", "kind": answer_protocol, "sources": PROTOCOL_FOLDERS + T1000_BEDS},
+    {"name": "answer_coupling", "kind": answer_coupling, "sources": COUPLING + ["results/paper_depth/factors_t1000"]},
     {"name": "answer_paper_box", "kind": answer_paper_box, "sources": PAPER_BOX + CLOCK_SCATTER},
     {"name": "answer_per_shape", "kind": answer_per_shape, "sources": PROTOCOL_FOLDERS + T1000_BEDS},
     {"name": "readme_answer", "kind": readme_answer, "sources": CLOCK_A5 + PROTOCOL_FOLDERS, "bare": True},
