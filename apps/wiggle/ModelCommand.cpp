@@ -203,7 +203,7 @@ void printClumpTable(const std::vector<IntruderDef>& intruders, const std::vecto
 void writeGeometryJson(const IntruderDef& intruder, const Shape& shape, const ModelOptions& opt) {
   const ClumpAtoms atoms = clumpAtomsFor(intruder, shape);
   const CavityGeometry g = cavityGeometry(shape.outline);
-  nlohmann::json j;
+  nlohmann::json j = cavityGeometryJson(g);
   j["shape"] = choiceName(shape.kind);
   j["surface"] = choiceName(opt.surface);
   j["outline"] = shape.outline;
@@ -212,15 +212,6 @@ void writeGeometryJson(const IntruderDef& intruder, const Shape& shape, const Mo
   j["atoms"] = all;
   j["n_surface_atoms"] = atoms.surface.size();  // atoms[0 .. n) are the shell, the rest guards
   j["atom_radius"] = atoms.atomRadius;
-  j["y0"] = g.y0;
-  j["y_nr_left"] = g.left.yNoReturn;
-  j["y_nr_right"] = g.right.yNoReturn;
-  j["l_left"] = g.left.l;
-  j["l_right"] = g.right.l;
-  j["h"] = g.h;
-  j["T_rise_left"] = g.left.tRise;
-  j["T_rise_right"] = g.right.tRise;
-  j["T_max"] = g.tMax;
   writeFileAtomically(opt.geometryPath, j.dump() + "\n");
 }
 

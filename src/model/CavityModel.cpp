@@ -1,5 +1,7 @@
 #include "model/CavityModel.h"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -78,6 +80,20 @@ double cavityRiseRate(const CavityGeometry& geometry, const CavitySide& side, do
   return 0.5 * gravity * period *
          ((1.0 - 2.0 / (pi * pi)) - ratio * ratio - 2.0 / (pi * pi) * std::cos(pi * ratio) -
           2.0 / pi * ratio * std::sin(pi * ratio));
+}
+
+nlohmann::json cavityGeometryJson(const CavityGeometry& g) {
+  nlohmann::json j;
+  j["y0"] = g.y0;
+  j["h"] = g.h;
+  j["T_max"] = g.tMax;
+  j["y_nr_left"] = g.left.yNoReturn;
+  j["y_nr_right"] = g.right.yNoReturn;
+  j["l_left"] = g.left.l;
+  j["l_right"] = g.right.l;
+  j["T_rise_left"] = g.left.tRise;
+  j["T_rise_right"] = g.right.tRise;
+  return j;
 }
 
 }  // namespace wiggle

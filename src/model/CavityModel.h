@@ -8,6 +8,7 @@
 // (leftmost x for the cavity on the left, rightmost x on the right; on a vertical edge its lower
 // end; for a disk its equator). A grain that falls below y_nr ends under the intruder.
 #include <array>
+#include <nlohmann/json_fwd.hpp>
 #include <vector>
 
 namespace wiggle {
@@ -32,6 +33,10 @@ struct CavityGeometry {
 // Throws wiggle::Error for fewer than 3 vertices or non-finite coordinates.
 CavityGeometry cavityGeometry(const std::vector<std::array<double, 2>>& outline,
                               double grainDiameter = 1.0, double gravity = 1.0);
+
+// The geometry's keys as every file that carries them writes them (a run's model.json, `wiggle
+// model --geometry`; docs/OUTPUT-FORMATS.md): y0, h, T_max and per side y_nr, l, T_rise.
+nlohmann::json cavityGeometryJson(const CavityGeometry& geometry);
 
 // Smallest amplitude for a rise: the cavity 2A must hold a grain, A_min = d/2.
 double minimumAmplitude(double grainDiameter = 1.0);

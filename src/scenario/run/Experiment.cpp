@@ -64,21 +64,14 @@ void writePhaseRates(const std::string& path, const RunState& state) {
 void writeModel(const std::string& path, const RunConfig& config, const Shape& shape) {
   std::vector<std::array<double, 2>> outline(shape.outline.begin(), shape.outline.end());
   const CavityGeometry g = cavityGeometry(outline);
-  nlohmann::json j;
+  nlohmann::json j = cavityGeometryJson(g);
   j["shape"] = std::string(choiceName(config.intruder.shape));
   j["angle"] = config.intruder.angle;
-  j["y0"] = g.y0;
-  j["h"] = g.h;
-  j["T_max"] = g.tMax;
   // The side with the smaller T_rise sets when rising can start; both are given.
   const CavitySide& main = g.left.tRise <= g.right.tRise ? g.left : g.right;
   j["l"] = main.l;
   j["l_prime"] = main.lPrime;
   j["T_rise"] = main.tRise;
-  j["l_left"] = g.left.l;
-  j["l_right"] = g.right.l;
-  j["T_rise_left"] = g.left.tRise;
-  j["T_rise_right"] = g.right.tRise;
   // The model's amplitude is the swing either side of the motion's centre: drive.amplitude in the
   // displacement form, A T / 2 pi in the velocity form (so it varies along the curve).
   auto modelRate = [&](double period) {
