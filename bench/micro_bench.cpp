@@ -26,6 +26,7 @@
 #include "physics/World.h"
 #include "scenario/bed/BedMaker.h"
 #include "scenario/bed/EngineSettings.h"
+#include "scenario/geometry/Clump.h"
 #include "scenario/geometry/Shape.h"
 
 namespace wiggle {

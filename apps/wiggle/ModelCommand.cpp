@@ -19,6 +19,7 @@
 #include "io/AtomicFile.h"
 #include "model/CavityModel.h"
 #include "model/PaperTable1.h"
+#include "scenario/geometry/Clump.h"
 #include "scenario/geometry/Shape.h"
 
 namespace wiggle::cli {

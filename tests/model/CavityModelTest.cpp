@@ -15,6 +15,7 @@
 
 #include "core/Error.h"
 #include "model/PaperTable1.h"
+#include "scenario/geometry/Clump.h"
 #include "scenario/geometry/Shape.h"
 
 namespace wiggle {

@@ -21,6 +21,7 @@
 #include "scenario/bed/EngineSettings.h"
 #include "scenario/run/Experiment.h"
 #include "scenario/bed/LammpsBed.h"
+#include "scenario/geometry/Clump.h"
 #include "scenario/geometry/Shape.h"
 #include "support/TestSupport.h"
 

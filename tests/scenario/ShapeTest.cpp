@@ -1,6 +1,7 @@
 // Intruder shapes and their atom clumps: outline dimensions from the paper's table, the two-sided
 // envelope tolerance (checked here with the test's own geometry, not measureClump's), the no-lodge
 // argument, interior coverage, polygon validation and the mass rule.
+#include "scenario/geometry/Clump.h"
 #include "scenario/geometry/Shape.h"
 
 #include <gtest/gtest.h>

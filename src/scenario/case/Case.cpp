@@ -9,6 +9,7 @@
 #include "core/Error.h"
 #include "core/Format.h"
 #include "io/Config.h"
+#include "scenario/geometry/Clump.h"
 
 namespace wiggle {
 

@@ -9,6 +9,7 @@
 // the disk, square and rectangles it is also the centre of the bounding box; for the apex-up
 // triangle (side a, height H = a sqrt(3)/2) it lies H/3 above the base, not H/2. Rotation by
 // intruder.angle is about this centre. A user polygon is shifted so that its centroid is at (0, 0).
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -41,28 +42,10 @@ const std::vector<ShapeName>& paperShapes();
 Shape makeShape(ShapeName kind, const Outline& vertices = {}, double angleDegrees = 0.0);
 Shape makeShape(const IntruderDef& def);
 
-// The default intruder mass (docs/PHYSICS.md §6): the disk outline's area pi 3.5^2 times the grain
-// material's mass per area, (2/3) rho d for spheres (a sphere's mass over its disc area) or rho for discs.
-double defaultIntruderMass(MassModel model, double density);  // [rho d^3]
-// The body of glued spheres an outline is built of (docs/SHAPES.md, "Mass"): a hexagonal packing of
-// touching spheres of radius atomRadius (rows along x, one sphere at the centre) of which every one
-// lies inside the outline. Their centres, in the outline's frame.
-std::vector<OutlinePoint> gluedSphereBody(const Shape& shape, double atomRadius = 0.25);
-// The mass of the disk outline (diameter 7) built of glued atoms, gluedSphereBody of the disk, each
-// atom with the grains' mass model and density. 151 atoms of radius 0.25: 9.88 rho d^3 as spheres
-// (29.6 as discs).
-double gluedDiskMass(MassModel model, double density, double atomRadius = 0.25);  // [rho d^3]
-// How many spheres share the intruder's mass in its contacts' meff (ClumpDef::massShares,
-// intruder.contact_mass): 1 for "body"; for "atom", the spheres of the body the intruder is built
-// of, upright (then turned): its own atoms for intruder.surface = "lattice", else gluedSphereBody's,
-// the body of glued spheres a shell stands for.
-std::uint32_t contactMassShares(const IntruderDef& def);
-// The intruder's moment of inertia about its centre when it may turn (intruder.rotation = "free"):
-// its mass M spread evenly over the spheres of the body it is built of (as contactMassShares counts
-// them), each a point M / n at its centre plus its own (2/5 for spheres, 1/2 for discs) (M / n) r^2.
-double bodyInertia(const IntruderDef& def, double mass, MassModel model);
-// def.mass when positive, else the one def.massRule names (the same for every shape).
-double intruderMass(const IntruderDef& def, MassModel model, double density);
+// How deep a point lies inside a shape's outline [d] (negative outside): the disk's exact circle,
+// else the polygon's (depthInside).
+std::function<double(OutlinePoint)> depthFunction(const Shape& shape);
+
 
 struct ClumpOptions {
   double atomRadius = 0.25;  // [d] spheres of diameter 0.5 (docs/PHYSICS.md §6)
@@ -122,16 +105,5 @@ ClumpQuality measureClump(const Shape& shape, const ClumpAtoms& atoms,
 // atoms (an envelope deviation beyond max(0.1, worst corner deviation)).
 ClumpAtoms buildClumpAtoms(const Shape& shape, const ClumpOptions& options = {});
 
-// The atoms an intruder definition asks for (intruder.surface): a shell built as clumpOptionsFor(def)
-// says ("smooth", "glued"; buildClumpAtoms), or "lattice": the upright outline filled with touching
-// spheres on a square lattice (its lowest row on the base, a column through the centre), turned
-// with the outline, its outer boundary in order as the shell and the rest as guards
-// (docs/SHAPES.md). Throws wiggle::Error when the outline cannot hold them. `shape` is makeShape(def).
-ClumpAtoms clumpAtomsFor(const IntruderDef& def, const Shape& shape);
-
-// The engine's clump for an intruder definition: atom offsets relative to the centroid and the mass,
-// its atoms clumpAtomsFor(def). The second form takes the shape makeShape(def) already made.
-ClumpDef makeClump(const IntruderDef& def, MassModel model, double density);
-ClumpDef makeClump(const IntruderDef& def, const Shape& shape, MassModel model, double density);
 
 }  // namespace wiggle
