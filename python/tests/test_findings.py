@@ -294,6 +294,96 @@ class VerdictWordsTest(unittest.TestCase):
         self.assertEqual(findings.verdict_words([]), "not measured")
 
 
+class CellSideTest(unittest.TestCase):
+    """A cell's side of zero by the rule, and whether it says what the paper's Table 1 says."""
+
+    def test_side_of_zero_at_two_standard_errors(self):
+        self.assertEqual(findings.cell_side([0.1], SIGMA), +1)       # 2.0 se
+        self.assertEqual(findings.cell_side([-0.1], SIGMA), -1)
+        self.assertEqual(findings.cell_side([0.09], SIGMA), 0)       # 1.8 se: level within the scatter
+
+    def test_not_rising_is_the_papers_side_below_its_range_whether_level_or_sinking(self):
+        self.assertTrue(findings.on_paper_side([-0.001], 0.01, -1))
+        self.assertTrue(findings.on_paper_side([-0.05], 0.01, -1))
+        self.assertFalse(findings.on_paper_side([0.05], 0.01, -1))
+
+    def test_rising_is_the_papers_side_above_its_range_and_level_is_not(self):
+        self.assertTrue(findings.on_paper_side([0.05], 0.01, +1))
+        self.assertFalse(findings.on_paper_side([-0.001], 0.01, +1))
+
+
+class OwnScatterTest(unittest.TestCase):
+    """A change resolved on sigma whose side of 2 beds scatters more than sigma (own_scatter_judged)."""
+
+    BASE = [-0.047, -0.039]
+
+    def test_resolved_on_sigma_not_by_its_own_beds_larger_scatter(self):
+        # 0.0205 is 2.6 se on sigma 0.008 (2 beds a side); the row's 2 beds scatter by 0.019: 1.1 se by that
+        scattered = compare("t", [-0.036, -0.009], self.BASE, +1)
+        z = judged(scattered, 0.008)[1]
+        self.assertEqual(z, 2.6)
+        side, n, own, z_own = findings.own_scatter_judged(scattered, z, 0.008)
+        self.assertEqual((side, n, z_own), ("a", 2, 1.1))
+        self.assertAlmostEqual(own, findings.sd([-0.036, -0.009]))
+
+    def test_beds_that_agree_leave_the_change_as_it_stands(self):
+        agreeing = compare("t", [-0.022, -0.023], self.BASE, +1)
+        self.assertIsNone(findings.own_scatter_judged(agreeing, judged(agreeing, 0.008)[1], 0.008))
+
+    def test_the_compared_sides_scatter_counts_too(self):
+        loose_base = compare("t", [-0.022, -0.023], [-0.060, -0.026], +1)
+        z = judged(loose_base, 0.008)[1]
+        self.assertEqual(findings.own_scatter_judged(loose_base, z, 0.008)[:2], ("b", 2))
+
+    def test_a_change_within_the_scatter_needs_no_second_look(self):
+        within = compare("t", [-0.036, -0.009], [-0.030, -0.029], +1)
+        self.assertEqual(judged(within, 0.008)[2], "within")
+        self.assertIsNone(findings.own_scatter_judged(within, judged(within, 0.008)[1], 0.008))
+
+    def test_three_beds_are_counted_by_judged_itself(self):
+        three = compare("t", [-0.036, -0.009, -0.020], self.BASE, +1)
+        self.assertIsNone(findings.own_scatter_judged(three, 2.6, 0.008))
+
+
+class ChangeInStandardErrorsTest(unittest.TestCase):
+    def test_a_paired_change_in_standard_errors_of_the_pooled_deviation(self):
+        self.assertAlmostEqual(findings.change_z([0.1, 0.1], 0.05), 0.1 / (0.05 / math.sqrt(2)))
+        self.assertAlmostEqual(findings.change_z([-0.03], 0.01), -3.0)
+
+    def test_resolved_by_the_rule_yet_short_of_students_t(self):
+        # 2 dof: Student's 95 % is 4.30 se; 3.0 se passes the rule of 2 and falls short of it
+        self.assertAlmostEqual(findings.below_student(3.0, 2), findings.t_critical(2))
+        self.assertAlmostEqual(findings.below_student(-3.0, 2), findings.t_critical(2))
+        self.assertIsNone(findings.below_student(1.9, 2))      # not resolved by the rule at all
+        self.assertIsNone(findings.below_student(5.0, 2))      # holds by Student's t too
+        self.assertIsNone(findings.below_student(3.0, 30))     # 2.04 for 30 dof: holds
+
+
+class RunShapeTest(unittest.TestCase):
+    """A run's slope and its phase profile's harmonics."""
+
+    def test_least_squares_slope_of_a_line_and_of_a_scatter_about_it(self):
+        ts = [0.0, 1.0, 2.0, 3.0]
+        self.assertAlmostEqual(findings.least_squares_slope(ts, [1.0 + 0.5 * t for t in ts]), 0.5)
+        self.assertAlmostEqual(findings.least_squares_slope(ts, [0.0, 1.0, 1.0, 2.0]), 0.6)
+
+    def test_harmonics_give_back_a_made_up_profile(self):
+        # 0.05 + 0.2 cos(2 (phi - 3.3 pi / 10)) + 0.1 cos(phi - 1) over 20 bins
+        centres = [k + 0.5 for k in range(20)]
+        bins = [0.05 + 0.2 * math.cos(2 * (c * math.pi / 10 - 3.3 * math.pi / 10)) + 0.1 * math.cos(c * math.pi / 10 - 1)
+                for c in centres]
+        h = findings.phase_harmonics(centres, bins)
+        for got, want in zip(h, (0.05, 0.1, 0.2, 3.3, 0.0)):
+            self.assertAlmostEqual(got, want, places=12)
+
+    def test_what_the_first_two_harmonics_leave_is_the_rest(self):
+        # a third harmonic of 0.03 alone: its rms per bin is 0.03 / sqrt(2)
+        centres = [k + 0.5 for k in range(20)]
+        h = findings.phase_harmonics(centres, [0.03 * math.cos(3 * c * math.pi / 10) for c in centres])
+        self.assertAlmostEqual(h.whole, 0.0, places=12)
+        self.assertAlmostEqual(h.half, 0.0, places=12)
+        self.assertAlmostEqual(h.rest, 0.03 / math.sqrt(2), places=12)
+
 
 if __name__ == "__main__":
     unittest.main()

@@ -1,6 +1,8 @@
 """The statistics behind the paper's findings (docs/PHYSICS.md §12, docs/FINDINGS.md): pure functions
-of the beds' V_y values, no files read. tools/study/vy_tables.py gathers the values from results/
-and prints what these decide; python/tests/test_findings.py tests them on small made-up tables.
+of the beds' V_y values, no files read. tools/study/vy_tables.py's modules gather the values from
+results/ and print what these decide; python/tests/test_findings.py tests them on small made-up
+tables. Every number the documents' blocks compute from the values (a mean, a standard error, a
+scatter, a change in standard errors, a slope, a phase profile's harmonics) is computed here.
 
 A cell is the beds of one case, a list of V_y values (one per bed). A comparison is a cell against
 another cell or against zero, with the direction the paper's finding predicts. Its difference is
@@ -94,6 +96,37 @@ def judged(comparison, sig):
 def z_from_zero(values, sig):
     """A cell's mean in standard errors from zero (positive: rising), as judged() prints it."""
     return judged(Comparison(None, values, [], 1), sig)[1]
+
+
+def cell_side(values, sig):
+    """A cell's side of zero by the rule: +1 rising, -1 sinking, 0 within the scatter."""
+    return resolved_side(z_from_zero(values, sig))
+
+
+def on_paper_side(values, sig, paper_sign):
+    """Whether a cell says what the paper's Table 1 says at its period (paper_sign, paper_side's):
+    rising where the paper has it rising (+1), not rising (sinking or level within the scatter) where
+    the paper has it not rising (-1); the paper's Table 1 says "not rising" at or below its range,
+    not "sinking"."""
+    return (cell_side(values, sig) > 0) == (paper_sign > 0)
+
+
+def own_scatter_judged(comparison, z, sig):
+    """A change resolved on sig (z: its standard errors, judged()'s) whose side of 2 to
+    OWN_SCATTER_BEDS - 1 beds, too few for judged() to count their own scatter, scatters more than
+    sig and by that larger standard deviation would not be resolved: (that side, "a" or "b"; its beds;
+    its standard deviation; the change's standard errors by it). None otherwise. Such a change is
+    shown within the scatter: a cell is never shown as better known than its own beds show, even
+    before judged() counts them."""
+    few = [(sd(v), side, len(v)) for v, side in ((comparison.a, "a"), (comparison.b, "b"))
+           if 2 <= len(v) < OWN_SCATTER_BEDS]
+    own, side, n = max(few, default=(0.0, "", 0))
+    if resolved_side(z) == 0 or own <= sig:
+        return None
+    z_own = judged(comparison, own)[1]
+    if resolved_side(z_own) != 0:
+        return None
+    return side, n, own, z_own
 
 
 VERDICTS = ("reproduced", "not reproduced", "not resolved", "not judged", "not measured")
@@ -260,6 +293,11 @@ def pooled_sd(changes):
     return (math.sqrt(sum((x - mean(d)) ** 2 for d in groups for x in d) / dof) if dof else 0.0), dof, len(groups)
 
 
+def change_z(changes, spread):
+    """A cell's mean change in standard errors (spread / sqrt(beds)) from zero."""
+    return mean(changes) / (spread / math.sqrt(len(changes)))
+
+
 def change_resolved(changes, spread):
     """Whether a cell's mean change is >= RESOLVED standard errors (spread / sqrt(beds)) from zero."""
     return bool(changes) and abs(mean(changes)) >= RESOLVED * spread / math.sqrt(len(changes))
@@ -335,6 +373,14 @@ def t_critical(dof, level=0.95):
     return (lo + hi) / 2
 
 
+def below_student(z, dof, level=0.95):
+    """Student's two-sided critical value for dof degrees of freedom when |z| standard errors are
+    resolved by the rule (>= RESOLVED) yet below it, else None: a difference the rule counts that a
+    sigma from so few degrees of freedom does not hold at `level`."""
+    t = t_critical(dof, level)
+    return t if RESOLVED <= abs(z) < t else None
+
+
 # ---- where V_y changes sign, as the paper reads it (by the mean, not by standard errors)
 
 def crossing_against_range(lo, hi, paper_range):
@@ -352,3 +398,40 @@ def crossing_against_range(lo, hi, paper_range):
     if lo is None:
         return None
     return +1 if lo >= phi else 0
+
+
+# ---- a run's rate and its phase profile
+
+def least_squares_slope(ts, ys):
+    """The least-squares slope of ys against ts."""
+    n = len(ts)
+    mt, my = sum(ts) / n, sum(ys) / n
+    return sum((t - mt) * (y - my) for t, y in zip(ts, ys)) / sum((t - mt) ** 2 for t in ts)
+
+
+class Harmonics(NamedTuple):
+    """A phase profile v(phi) = mean + whole cos(phi - a1) + half cos(2 phi - a2) + the rest: `half`
+    largest at `half_peak` and half_peak + 10 (in 10 phi / pi); `rest`, the rms per bin of what the
+    mean and the first two harmonics leave."""
+    mean: float
+    whole: float
+    half: float
+    half_peak: float
+    rest: float
+
+
+def phase_harmonics(centres, bins):
+    """The Harmonics of mean v_y per phase bin, bins at centres given as 10 phi / pi over a whole cycle."""
+    n = len(bins)
+    phis = [c * math.pi / 10 for c in centres]
+    average = sum(bins) / n
+
+    def harmonic(k):
+        return complex(sum(v * math.cos(k * p) for v, p in zip(bins, phis)),
+                       sum(v * math.sin(k * p) for v, p in zip(bins, phis))) * 2 / n
+    h1, h2 = harmonic(1), harmonic(2)
+    half_peak = (10 / math.pi * math.atan2(h2.imag, h2.real) / 2) % 10
+    fit = [average + abs(h1) * math.cos(p - math.atan2(h1.imag, h1.real))
+           + abs(h2) * math.cos(2 * p - math.atan2(h2.imag, h2.real)) for p in phis]
+    rest = math.sqrt(sum((v - f) ** 2 for v, f in zip(bins, fit)) / n)
+    return Harmonics(average, abs(h1), abs(h2), half_peak, rest)
