@@ -48,10 +48,11 @@ def median(v):
     return v[n // 2] if n % 2 else 0.5 * (v[n // 2 - 1] + v[n // 2])
 
 
-def run_case(wiggle, config, extra, steps, dt, threads, out_dir, env):
+def run_case(wiggle, config, extra, steps, dt, threads, out_dir, env, flags=()):
+    """One run of `steps` steps at `threads` threads (`flags`: more `wiggle run` options); its summary."""
     shutil.rmtree(out_dir, ignore_errors=True)
     sets = COMMON + extra + ["run.duration=%r" % (steps * dt), "run.sample_interval=%r" % (max(1, steps // 4) * dt)]
-    cmd = [wiggle, "run", config, "--out", out_dir, "--threads", str(threads)]
+    cmd = [wiggle, "run", config, "--out", out_dir, "--threads", str(threads)] + list(flags)
     for s in sets:
         cmd += ["--set", s]
     r = subprocess.run(cmd, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)

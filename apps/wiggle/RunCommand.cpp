@@ -26,6 +26,7 @@ struct RunArgs {
   std::vector<std::string> sets;
   std::string out = "wiggle-out";
   int threads = 0;
+  bool fixedThreads = false;
   bool resume = false;
   bool noPlot = false;
   bool check = false;
@@ -90,6 +91,10 @@ void addRunCommand(CLI::App& app) {
   cmd->add_option("--threads", args->threads,
                   "OpenMP threads (default: the cores other work leaves idle, by the 1-minute load average; at least 1)")
       ->check(CLI::Range(1, 1024));
+  cmd->add_flag("--fixed-threads", args->fixedThreads,
+                "Step on all the --threads always, even while another process holds a core (by default a run sheds "
+                "threads that only wait for each other and takes them back when the core is free: the same bits); "
+                "for benchmarks of a thread count");
   cmd->add_flag("--resume", args->resume,
                 "Continue the run in --out from its newest good checkpoint (a finished run: extended or rewritten); "
                 "refused when --out holds no run");
@@ -130,9 +135,12 @@ void addRunCommand(CLI::App& app) {
                    "--threads N to choose\n", loadAverage(), availableCores(), options.threads,
                    options.threads == 1 ? "" : "s");
     options.resume = args->resume;
+    if (args->fixedThreads) options.threadPolicy = ThreadPolicy::Fixed;
     const RunOutcome outcome = runExperiment(prepareCase(config), options);
     std::printf("%s\n", outcome.resultLine().c_str());
     for (const std::string& w : outcome.summary.warnings) std::fprintf(stderr, "wiggle: warning: %s\n", w.c_str());
+    if (const std::string shed = threadsShedWarning(outcome.summary); !shed.empty())
+      std::fprintf(stderr, "wiggle: warning: %s\n", shed.c_str());
     std::fflush(stdout);  // before the plotter writes to the same stream
     if (config.run.plot && !args->noPlot) {
       int status = 1;

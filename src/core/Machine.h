@@ -13,6 +13,11 @@ double processCpuSeconds();
 // The 1-minute load average (runnable processes, ours included once they run), 0 if unknown.
 double loadAverage();
 
+// Seconds the CPUs this process may run on have been idle since boot, summed over those CPUs (from
+// /proc/stat); negative where the system does not say. Its change over a stretch of wall time is
+// the cores other work left idle in that stretch: how a run sees that a core it gave up is free again.
+double idleCpuSeconds();
+
 // The default thread count of a single run: the available cores minus the load of other work (the
 // 1-minute load average, rounded), at least 1. OpenMP threads wait for each other at every step's
 // barriers by spinning, so on a core that another process also wants, a run's threads keep waiting

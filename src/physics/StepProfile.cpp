@@ -35,19 +35,27 @@ std::string_view stageKindName(StageKind kind) {
 }
 
 void StepProfile::enable() {
+  const RegionTotals sampled = regions_;  // the governor's running sums go on
   *this = StepProfile{};
+  regions_ = sampled;
   on_ = true;
 }
 
 void StepProfile::beginStepNow() {
   inStep_ = true;
+  sampleNext_ = false;
   regionPending_ = false;
+  stepThreads_ = 1;
   stepStart_ = last_ = Clock::now();
 }
 
 void StepProfile::endStepNow() {
-  stepSeconds_ += secondsBetween(stepStart_, last_);  // ends at the last lap: the stages sum to it
-  ++steps_;
+  if (on_) {
+    const double seconds = secondsBetween(stepStart_, last_);  // ends at the last lap: the stages sum to it
+    stepSeconds_ += seconds;
+    threadStepSeconds_ += stepThreads_ * seconds;
+    ++steps_;
+  }
   inStep_ = false;
 }
 
@@ -55,22 +63,31 @@ void StepProfile::lapNow(StepStage stage) {
   const Clock::time_point now = Clock::now();
   const double wall = secondsBetween(last_, now);
   last_ = now;
-  StageTotals& totals = stages_[static_cast<std::size_t>(stage)];
-  totals.seconds += wall;
-  ++totals.calls;
+  StageTotals region;
   if (regionPending_) {
     // Each thread of the region worked slot.seconds of the stage's wall time and waited the rest
     // (at the region's end, or while the first thread ran the stage's serial parts).
     regionPending_ = false;
     const int threads = std::min<int>(regionThreads_, static_cast<int>(slots_.size()));
     threads_ = std::max(1, threads);
+    stepThreads_ = std::max(stepThreads_, threads_);
     for (int t = 0; t < threads; ++t) {
       const double work = std::min(wall, slots_[static_cast<std::size_t>(t)].seconds);
-      totals.workSeconds += work;
-      totals.waitSeconds += wall - work;
+      region.workSeconds += work;
+      region.waitSeconds += wall - work;
     }
-    totals.threadSeconds += threads * wall;
+    region.threadSeconds = threads * wall;
+    regions_.workSeconds += region.workSeconds;
+    regions_.waitSeconds += region.waitSeconds;
+    regions_.threadSeconds += region.threadSeconds;
   }
+  if (!on_) return;
+  StageTotals& totals = stages_[static_cast<std::size_t>(stage)];
+  totals.seconds += wall;
+  ++totals.calls;
+  totals.workSeconds += region.workSeconds;
+  totals.waitSeconds += region.waitSeconds;
+  totals.threadSeconds += region.threadSeconds;
 }
 
 void StepProfile::beginRegion(int maxThreads) {
@@ -97,7 +114,7 @@ double StepProfile::waitShare() const {
   if (!(stepSeconds_ > 0)) return 0.0;
   double wait = 0.0;
   for (const StageTotals& s : stages_) wait += s.waitSeconds;
-  return wait / (threads_ * stepSeconds_);
+  return wait / threadStepSeconds_;
 }
 
 }  // namespace wiggle

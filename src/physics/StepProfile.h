@@ -2,7 +2,7 @@
 // Where a step's wall time goes (World::enableStepProfile; `run.profile`, summary.json's
 // `step_profile`): the seconds of each named stage of World::advance, and inside the step's
 // parallel regions each thread's time working and waiting at the region's end (load imbalance).
-// Opt-in and cheap: when off, each stage boundary costs one predictable branch; when on, one
+// Opt-in and cheap: when off (and the step not sampled), each stage boundary costs one predictable branch; when on, one
 // steady_clock read per stage per step on the first thread and two per thread per parallel region,
 // into per-thread slots of a cache line each. It reads clocks only: the bits do not change.
 #include <array>
@@ -52,22 +52,33 @@ class StepProfile {
     std::uint64_t calls = 0;
   };
 
+  // The parallel regions' time, summed over regions and threads: what the thread governor
+  // (physics/ThreadGovernor.h) reads of the steps it samples, whether or not the profile is on.
+  struct RegionTotals {
+    double workSeconds = 0.0, waitSeconds = 0.0, threadSeconds = 0.0;
+  };
+
   bool on() const { return on_; }
   void enable();  // from zero
   void disable() { on_ = false; }
+  // Measure the next step's parallel regions into regionTotals() even when the profile is off; its
+  // stages and steps count only when it is on, so a sampled step never shows in the report.
+  void sampleNextStep() { sampleNext_ = true; }
+  const RegionTotals& regionTotals() const { return regions_; }
   const StageTotals& stage(StepStage s) const { return stages_[static_cast<std::size_t>(s)]; }
   double stepSeconds() const { return stepSeconds_; }  // wall time inside World::advance
   std::uint64_t steps() const { return steps_; }
   int threads() const { return threads_; }  // of the last parallel region
   double stagedSeconds() const;             // the stages' seconds summed (= stepSeconds but for the clock reads)
   // Fractions of stepSeconds: in serial stages (the other threads idle); and the parallel stages'
-  // waiting, as a fraction of all threads' time in the step (threads x stepSeconds).
+  // waiting, as a fraction of all threads' time in the steps (each step's threads x its seconds:
+  // the thread governor may change the count between steps).
   double serialShare() const;
   double waitShare() const;
 
   // --- for World: a step's stages are laps of one clock ---
   void beginStep() {
-    if (on_) beginStepNow();
+    if (on_ || sampleNext_) beginStepNow();
   }
   void endStep() {
     if (inStep_) endStepNow();
@@ -94,11 +105,14 @@ class StepProfile {
   struct alignas(64) ThreadSlot {  // one cache line per thread: no false sharing
     double seconds = 0.0;
   };
-  bool on_ = false, inStep_ = false, regionPending_ = false;
+  bool on_ = false, sampleNext_ = false, inStep_ = false, regionPending_ = false;
   int threads_ = 1, regionThreads_ = 0;
   Clock::time_point stepStart_{}, last_{};
   std::array<StageTotals, kStages> stages_{};
+  RegionTotals regions_;
   double stepSeconds_ = 0.0;
+  double threadStepSeconds_ = 0.0;  // each step's seconds x its regions' threads
+  int stepThreads_ = 1;
   std::uint64_t steps_ = 0;
   std::vector<ThreadSlot> slots_;
 };

@@ -327,6 +327,26 @@ void World::run(std::uint64_t steps) {
   runWatchingIntruder(steps, [](const ClumpState&, std::uint64_t, double) {});
 }
 
+namespace {
+// The governor's thread count for the parallel regions of one step, the run's own count after it
+// (an exception included), so that whatever runs between steps sees the count the run was given.
+class ThreadCountForStep {
+ public:
+  ThreadCountForStep(int threads, int ceiling) : ceiling_(ceiling), changed_(threads != ceiling) {
+    if (changed_) omp_set_num_threads(threads);
+  }
+  ~ThreadCountForStep() {
+    if (changed_) omp_set_num_threads(ceiling_);
+  }
+  ThreadCountForStep(const ThreadCountForStep&) = delete;
+  ThreadCountForStep& operator=(const ThreadCountForStep&) = delete;
+
+ private:
+  int ceiling_;
+  bool changed_;
+};
+}  // namespace
+
 void World::step() { advance(false); }
 
 // One velocity-Verlet step. Within run(), nothing looks at the grains between two steps, so the
@@ -335,6 +355,8 @@ void World::step() { advance(false); }
 // values, so the same bits. The step after such a pass starts with its grains already moved
 // (grainsStarted_); the last step of run() ends whole, as step() always does.
 void World::advance(bool startNextStep) {
+  const int ceiling = omp_get_max_threads();
+  const ThreadCountForStep threads(governor_.beforeStep(step_, ceiling, profile_), ceiling);
   profile_.beginStep();
   if (!prepared_) prepare();
   if (!grainsStarted_) startGrains();
@@ -361,6 +383,7 @@ void World::advance(bool startNextStep) {
     profile_.lap(StepStage::HealthScan);
   }
   profile_.endStep();
+  governor_.afterStep(step_, profile_);
 }
 
 void World::enableStepProfile(bool on) {

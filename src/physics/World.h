@@ -18,6 +18,7 @@
 #include "physics/PairKernel.h"
 #include "physics/ParticleStore.h"
 #include "physics/StepProfile.h"
+#include "physics/ThreadGovernor.h"
 
 namespace wiggle {
 
@@ -110,6 +111,10 @@ class World {
   // it reads clocks only.
   void enableStepProfile(bool on = true);
   const StepProfile& stepProfile() const { return profile_; }
+  // How many of the run's threads (omp_get_max_threads(), the ceiling) each step uses: shed while
+  // another process holds a core (physics/ThreadGovernor.h). Not saved, never in the hash.
+  ThreadGovernor& threadGovernor() { return governor_; }
+  const ThreadGovernor& threadGovernor() const { return governor_; }
   // The force stage's load imbalance at `threads` threads on the current list: the heaviest
   // thread's pairs over the mean (NeighbourList::stripImbalance, the intruder's pairs on the first
   // thread). A prediction for any thread count, whatever this machine has.
@@ -234,6 +239,7 @@ class World {
   bool overlapAlarm_ = false;  // the last force evaluation saw an overlap beyond the detector's bound
   HealthMargins margins_;
   StepProfile profile_;  // off unless enableStepProfile
+  ThreadGovernor governor_;
   // Neighbour-list validity: positions at the last build, the largest squared displacement since.
   std::vector<double> xAtBuild_, yAtBuild_;
   double maxDisplacementSq_ = 0.0;

@@ -150,6 +150,7 @@ SweepStatus readSweepStatus(const std::string& dir) {
       const RunProgress progress = readRunProgress(caseDir).value_or(RunProgress{RunPhase::Starting, "starting"});
       c.fraction = progress.fraction;
       c.stage = progress.stage;
+      c.threadsNow = threadsNowWords(progress);
       c.warnings = readRunWarnings(caseDir);
       c.interrupted = !runHeld && s.sweepLock != FileLock::Holders::Exclusive;
       running += !c.interrupted;
@@ -202,7 +203,8 @@ std::string formatSweepStatus(const SweepStatus& s) {
       out << "  running  " << c.name
           << (c.fraction < 0 ? " (" + c.stage + ")"
                              : " (" + formatNumber(100.0 * c.fraction, 3) + " % of its run" +
-                                   (c.etaSeconds > 0 ? ", about " + formatDuration(c.etaSeconds) + " to go" : "") + ")")
+                                   (c.etaSeconds > 0 ? ", about " + formatDuration(c.etaSeconds) + " to go" : "") +
+                                   c.threadsNow + ")")
           << (c.interrupted ? "  [stale: interrupted]" : "") << "\n";
     else if (c.status == CaseStatus::Failed)
       out << "  failed   " << c.name << ": " << c.error << "\n";
@@ -276,7 +278,7 @@ std::string formatRunDirStatus(const RunDirStatus& r) {
         << ", summary in " << r.dir << "/summary.json";
   else if (r.state == RunDirState::Running)
     out << "running, " << (p.fraction >= 0 ? "t = " + formatNumber(p.t) + ofDuration : p.stage)
-        << (p.etaSeconds >= 0 ? ", about " + formatDuration(p.etaSeconds) + " to go" : "");
+        << (p.etaSeconds >= 0 ? ", about " + formatDuration(p.etaSeconds) + " to go" : "") << threadsNowWords(p);
   else if (p.phase == RunPhase::Failed)
     out << p.stage;
   else if (p.phase == RunPhase::Interrupted)

@@ -24,6 +24,7 @@ struct CaseAtAGlance {
   double wallSeconds = 0.0;  // ok: the case's wall time
   double fraction = -1.0;    // running: the fraction of its steps done (its progress.json), else -1
   double etaSeconds = -1.0;  // running: its run's own estimate of the wall seconds left (progress.json), else -1
+  std::string threadsNow;    // running: ", on 2 threads" (threadsNowWords), else 
   std::string stage;         // running, before its first step: what its progress.json says it is doing
   std::vector<std::string> warnings;  // ok: summary.json's; running: its warnings.txt so far
   // running: no process runs it now (neither its run's lock nor a whole sweep's is held): the

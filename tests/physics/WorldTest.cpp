@@ -232,10 +232,16 @@ TEST(World, HistorySurvivesRebuildAndResort) {
 
 // A pile settled for steps / 2 around a ring clump, then the clump driven for steps / 2 (turning
 // under the contact torques too when `turning`).
-World drivenPile(int steps, SimdLevel simd = defaultSimdLevel(), bool profile = false, bool turning = false) {
+// `threadSchedule`, when given, the thread counts the steps run on (ThreadPolicy::Scheduled).
+World drivenPile(int steps, SimdLevel simd = defaultSimdLevel(), bool profile = false, bool turning = false,
+                 std::vector<std::pair<std::uint64_t, int>> threadSchedule = {}) {
   World w = makePile(20, 15, 3, 12.0, 9.0, 1.8);
   w.useSimdLevel(simd);
   w.enableStepProfile(profile);
+  if (!threadSchedule.empty()) {
+    w.threadGovernor().setPolicy(ThreadPolicy::Scheduled);
+    w.threadGovernor().setSchedule(std::move(threadSchedule));
+  }
   ClumpDef clump;
   for (int a = 0; a < 12; ++a) {
     clump.offsetX.push_back(0.75 * std::cos(a * 0.5236));
@@ -266,6 +272,25 @@ TEST(World, BitwiseIdenticalForAnyThreadCount) {
   const std::string one = runPileWithThreads(1, 4000);
   EXPECT_EQ(runPileWithThreads(2, 4000), one);
   EXPECT_EQ(runPileWithThreads(3, 4000), one);
+}
+
+// The thread governor changes the count between two steps (physics/ThreadGovernor.h), inside a
+// run() too, where the grains are already half a step into the next one: a run made to change it at
+// chosen steps, list builds and health scans among them, ends with the one-thread run's bits.
+TEST(World, AThreadCountChangedBetweenStepsKeepsTheBits) {
+  const std::string one = runPileWithThreads(1, 4000);
+  const int saved = omp_get_max_threads();
+  omp_set_num_threads(3);
+  const World w = drivenPile(4000, defaultSimdLevel(), false, false,
+                             {{0, 3}, {137, 1}, {138, 2}, {700, 3}, {1001, 1}, {1400, 2}, {1999, 3}});
+  omp_set_num_threads(saved);
+  EXPECT_EQ(w.stateHash(), one);
+  // Each half of the pile's run (its clock is reset between them) went through the schedule.
+  const std::vector<ThreadChange>& changes = w.threadGovernor().changes();
+  ASSERT_EQ(changes.size(), 2u * 6);
+  EXPECT_EQ(changes.front().step, 137u);
+  EXPECT_EQ(changes.front().from, 3);
+  EXPECT_EQ(changes.front().to, 1);
 }
 
 // A clump that turns (intruder.rotation = "free") keeps the same bits at any thread count and
@@ -303,6 +328,7 @@ TEST(World, StepProfileStagesSumToTheStepsWallTime) {
     omp_set_num_threads(threads);
     World w = makePile(20, 15, 3);
     w.enableStepProfile();
+    w.threadGovernor().setPolicy(ThreadPolicy::Fixed);  // every step at `threads`, however busy the machine
     const auto start = std::chrono::steady_clock::now();
     w.run(2000);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -216,6 +216,18 @@ TEST(Experiment, ThreadCountDoesNotChangeTheResult) {
   const RunOutcome b = runExperiment(prepareCase(config), three);
   EXPECT_EQ(a.summary.stateHash, b.summary.stateHash);
   EXPECT_EQ(readFile(one.outDir + "/fields.csv"), readFile(three.outDir + "/fields.csv"));
+  // The seconds at each thread count (physics/ThreadGovernor.h): none at one thread; at three, every
+  // count used is one to three, and they add up to no more than the run's own wall time.
+  EXPECT_TRUE(a.summary.threadsUsed.is_null());
+  ASSERT_TRUE(b.summary.threadsUsed.is_object());
+  double seconds = 0.0;
+  for (const auto& [count, s] : b.summary.threadsUsed.items()) {
+    EXPECT_GE(std::stoi(count), 1);
+    EXPECT_LE(std::stoi(count), 3);
+    seconds += s.get<double>();
+  }
+  EXPECT_GT(seconds, 0.0);
+  EXPECT_LE(seconds, b.summary.runWallSeconds);
 }
 
 // The lines of a bed cache's speed.log (scenario/cost/SpeedRecord.h), each split at its tabs.

@@ -63,5 +63,24 @@ TEST(RunSummary, EveryKeyIsDocumented) {
     EXPECT_NE(section.find(std::string("`") + f.name + "`"), std::string::npos) << f.name;
 }
 
+// A run that shed threads says so (log and terminal) with the share of its stepping, from
+// threads_used; one that kept them, or had one, says nothing.
+TEST(RunSummary, SaysWhenTheRunShedThreads) {
+  RunSummary summary;
+  summary.threads = 2;
+  EXPECT_EQ(threadsShedWarning(summary), "");
+  summary.threadsUsed = {{"2", 10.0}};
+  EXPECT_EQ(threadsShedWarning(summary), "");
+  summary.threadsUsed = {{"2", 1.0}, {"1", 3.0}};
+  EXPECT_EQ(threadsShedWarning(summary),
+            "another process took a core: ran on 1 thread (of 2) for 75 % of this process's stepping "
+            "(summary.json threads_used; the result is the same)");
+  summary.threads = 8;
+  summary.threadsUsed = {{"8", 3.0}, {"7", 0.5}, {"6", 0.5}};
+  EXPECT_NE(threadsShedWarning(summary).find("ran on as few as 6 threads (of 8) for 25 %"), std::string::npos);
+  EXPECT_EQ(toJson(summary)["threads_used"]["6"], 0.5);
+  EXPECT_EQ(summaryFromJson(toJson(summary)).threadsUsed, summary.threadsUsed);
+}
+
 }  // namespace
 }  // namespace wiggle

@@ -24,7 +24,7 @@ _wiggle() {
   esac
   local options
   case "${words[1]}" in
-    run) options="--set --out --threads --resume --no-plot --check --help" ;;
+    run) options="--set --out --threads --fixed-threads --resume --no-plot --check --help" ;;
     sweep) options="--out --jobs --threads --dry-run --local --case --help" ;;
     model) options="--shape --vertices --angle --format --periods --amplitude --geometry --clump --surface --help" ;;
     plot) options="--format --movie --times --out --geometry --help" ;;

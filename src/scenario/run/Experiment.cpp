@@ -139,7 +139,7 @@ class ProgressFile {
  public:
   ProgressFile(std::string dir, double duration) : dir_(std::move(dir)), duration_(duration) {}
   void stage(RunPhase phase, const std::string& words, double fraction = -1.0, double t = 0.0) {
-    writeRunProgress(dir_, {phase, words, fraction, t, duration_, -1.0});
+    writeRunProgress(dir_, {phase, words, fraction, t, duration_, -1.0, 0});
     last_ = Clock::now();
   }
   // Why the run stopped, as it stops (SIGINT or SIGTERM, after its checkpoint; an error), so that
@@ -151,9 +151,9 @@ class ProgressFile {
     } catch (...) {
     }
   }
-  void running(double fraction, double t, double etaSeconds) {
+  void running(double fraction, double t, double etaSeconds, int threads) {
     if (secondsSince(last_) < 10.0) return;
-    writeRunProgress(dir_, {RunPhase::Running, "running", fraction, t, duration_, etaSeconds});
+    writeRunProgress(dir_, {RunPhase::Running, "running", fraction, t, duration_, etaSeconds, threads});
     last_ = Clock::now();
   }
 
@@ -254,6 +254,7 @@ RunSummary summarise(const Case& run, const std::string& dir, const World& world
   summary.intruderPairs = world.intruderPairs().size();
   summary.stateBytesPerGrain = static_cast<double>(world.stateBytes()) / std::max(1u, world.grainCount());
   if (world.stepProfile().on()) summary.stepProfile = stepProfileJson(world);
+  summary.threadsUsed = threadsUsedJson(world);
   summary.shape = std::string(choiceName(config.intruder.shape));
   summary.amplitude = config.drive.amplitude;
   summary.period = config.drive.period;
@@ -292,6 +293,18 @@ void saveProgress(const std::string& dir, const std::string& configToml, const W
   writeTrajectoryCsv(dir + "/trajectory.csv", state.samples);
 }
 
+// The thread governor's changes since the last call, a log line each (physics/ThreadGovernor.h).
+void logThreadChanges(const World& world, LogFile& log, std::size_t& logged) {
+  const std::vector<ThreadChange>& changes = world.threadGovernor().changes();
+  for (; logged < changes.size(); ++logged) {
+    const ThreadChange& c = changes[logged];
+    log.line("threads " + std::to_string(c.from) + " -> " + std::to_string(c.to) + " at step " +
+             std::to_string(c.step) +
+             (c.to < c.from ? ": its threads waited for each other (another process holds a core)"
+                            : ": a core stands idle again"));
+  }
+}
+
 // Steps `world` to the end of the run, feeding the observers, with the progress line, periodic
 // checkpoints and the stop on a signal (a checkpoint, then an Error saying how to continue).
 // Returns false when options.stopAfterSteps stopped it first.
@@ -304,6 +317,8 @@ bool stepToTheEnd(const Case& run, const RunOptions& options, const std::string&
   auto lastCheckpoint = Clock::now();
   auto chunkStart = Clock::now();
   const std::uint64_t startStep = world.stepCount();
+  world.threadGovernor().setPolicy(options.threadPolicy);
+  std::size_t loggedChanges = 0;
   const double wallAtStart = state.runWallSeconds;  // a resumed run's earlier stretches
   // Every 200 steps and at the end the progress line, the signal and the checkpoint clock are looked at.
   auto progressAt = [&](std::uint64_t step) { return step % 200 == 0 || step == steps.total; };
@@ -321,7 +336,8 @@ bool stepToTheEnd(const Case& run, const RunOptions& options, const std::string&
       const double eta = pace.etaSeconds(steps.total - step);
       const double nsPerParticleStep = pace.nsPerParticleStep(particles);
       const double fraction = static_cast<double>(step) / static_cast<double>(steps.total);
-      progressFile.running(fraction, world.time(), eta);
+      progressFile.running(fraction, world.time(), eta, world.threadGovernor().threads());
+      logThreadChanges(world, log, loggedChanges);
       progress.update("[run] " + formatNumber(100.0 * fraction) + "%  t = " + formatNumber(world.time()) + " / " +
                       formatNumber(run.config.run.duration) + "  ETA " + formatDuration(eta) + "  " +
                       formatNumber(nsPerParticleStep) + " ns/particle-step  y = " + formatNumber(world.intruder().y));
@@ -345,6 +361,7 @@ bool stepToTheEnd(const Case& run, const RunOptions& options, const std::string&
     }
   }
   state.runWallSeconds += secondsSince(chunkStart);
+  logThreadChanges(world, log, loggedChanges);
   return true;
 }
 
@@ -373,6 +390,7 @@ RunOutcome writeRunOutputs(const Case& run, const std::string& dir, const World&
            ", vy_settled = " + formatNumber(settled.vy) + " (t_settled = " + formatNumber(settled.tSettled) + "), " +
            formatNumber(summary.nsPerParticleStep) + " ns/particle-step, state " + world.stateHash());
   for (const std::string& w : summary.warnings) log.line("warning: " + w);
+  if (const std::string shed = threadsShedWarning(summary); !shed.empty()) log.line("warning: " + shed);
   return RunOutcome{summary, dir + "/summary.json"};
 }
 

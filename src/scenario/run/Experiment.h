@@ -12,6 +12,7 @@
 #include "physics/Intruder.h"
 #include "physics/World.h"
 #include "scenario/bed/BedMaker.h"
+#include "physics/ThreadGovernor.h"
 #include "scenario/case/Case.h"
 #include "scenario/run/RunSummary.h"  // RunStatus
 
@@ -20,6 +21,9 @@ namespace wiggle {
 struct RunOptions {
   std::string outDir = "wiggle-out";
   int threads = 0;          // OpenMP threads; 0 = as many as cores (OMP_NUM_THREADS honoured)
+  // Adaptive: fewer while another process holds a core (physics/ThreadGovernor.h); Fixed: `threads`
+  // always (`wiggle run --fixed-threads`: a benchmark of a thread count).
+  ThreadPolicy threadPolicy = ThreadPolicy::Adaptive;
   bool resume = false;      // continue from the newest good checkpoint in outDir
   bool progressLine = true; // a progress line on stderr when it is a terminal
   // Test hook: stop (as if killed) after this many run-phase steps, leaving only checkpoints.

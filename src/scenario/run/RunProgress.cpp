@@ -54,11 +54,17 @@ std::string failedStage(double t, const std::string& why) { return "failed at t 
 
 std::string failedMakingBedStage(const std::string& why) { return "failed while making or loading its bed: " + why; }
 
+std::string threadsNowWords(const RunProgress& p) {
+  if (p.phase != RunPhase::Running || p.threads <= 0) return "";
+  return ", on " + std::to_string(p.threads) + (p.threads == 1 ? " thread" : " threads");
+}
+
 std::string runProgressPath(const std::string& runDir) { return runDir + "/progress.json"; }
 
 void writeRunProgress(const std::string& runDir, const RunProgress& p) {
   const nlohmann::json j = {{"phase", runPhaseName(p.phase)}, {"stage", p.stage}, {"fraction", p.fraction},
-                            {"t", p.t}, {"duration", p.duration}, {"eta_s", p.etaSeconds}};
+                            {"t", p.t}, {"duration", p.duration}, {"eta_s", p.etaSeconds},
+                            {"threads", p.threads}};
   writeFileAtomically(runProgressPath(runDir), j.dump(2) + "\n");
 }
 
@@ -73,6 +79,7 @@ std::optional<RunProgress> readRunProgress(const std::string& runDir) {
     p.t = j.at("t").get<double>();
     p.duration = j.at("duration").get<double>();
     p.etaSeconds = j.at("eta_s").get<double>();
+    p.threads = j.value("threads", 0);  // written since the thread governor
     if (!j.contains("phase")) {
       p.phase = phaseOfStageWords(p.stage, p.fraction);
       return p;

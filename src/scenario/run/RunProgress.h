@@ -29,6 +29,7 @@ struct RunProgress {
   double t = 0.0;            // the run's time [sqrt(d/g)]
   double duration = 0.0;     // run.duration [sqrt(d/g)]
   double etaSeconds = -1.0;  // wall seconds left, estimated; -1 when not known yet
+  int threads = 0;           // running: the threads its steps use now (physics/ThreadGovernor.h); 0 = not said
 };
 
 // The pace of this process's stepping, for the ETA and the progress line: its wall seconds and steps
@@ -48,6 +49,9 @@ std::string interruptedStage(double t);
 inline constexpr const char* kInterruptedMakingBedStage = "interrupted while making its bed";
 std::string failedStage(double t, const std::string& why);
 std::string failedMakingBedStage(const std::string& why);
+
+// ", on 2 threads" for a running run that says how many threads its steps use now, else "".
+std::string threadsNowWords(const RunProgress& progress);
 
 std::string runProgressPath(const std::string& runDir);
 void writeRunProgress(const std::string& runDir, const RunProgress& progress);

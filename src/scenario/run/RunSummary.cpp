@@ -1,8 +1,10 @@
 #include "scenario/run/RunSummary.h"
 
+#include <algorithm>
 #include <optional>
 
 #include "core/Error.h"
+#include "core/Format.h"
 #include "physics/StepProfile.h"
 #include "physics/World.h"
 
@@ -63,6 +65,10 @@ const std::vector<SummaryField>& summaryFields() {
       {"step_profile", "",
        "only with run.profile: the step's wall time by stage, this process's stepping (docs/OUTPUT-FORMATS.md)",
        &S::stepProfile},
+      {"threads_used", "s",
+       "wall seconds this process stepped at each thread count, by count ({\"2\": 812.5, \"1\": 95.0}): fewer "
+       "than `threads` while another process held a core (docs/PERFORMANCE.md); absent at one thread",
+       &S::threadsUsed},
       {"shape", "", "intruder.shape", &S::shape},
       {"amplitude", "d", "drive.amplitude", &S::amplitude},
       {"period", "sqrt(d/g)", "drive.period", &S::period},
@@ -120,6 +126,35 @@ RunSummary summaryFromJson(const nlohmann::json& json) {
         f.member);
   }
   return summary;
+}
+
+nlohmann::json threadsUsedJson(const World& world) {
+  const std::vector<double> seconds = world.threadGovernor().secondsAt();
+  nlohmann::json used;  // null until a count has a window
+  for (std::size_t n = seconds.size(); n-- > 1;)
+    if (seconds[n] > 0) used[std::to_string(n)] = seconds[n];
+  return used;
+}
+
+std::string threadsShedWarning(const RunSummary& summary) {
+  const nlohmann::json& threadsUsed = summary.threadsUsed;
+  const int ceiling = static_cast<int>(summary.threads);
+  if (!threadsUsed.is_object()) return "";
+  double total = 0.0, shed = 0.0;
+  int fewest = ceiling;
+  for (const auto& [count, seconds] : threadsUsed.items()) {
+    const int n = std::stoi(count);
+    total += seconds.get<double>();
+    if (n < ceiling) {
+      shed += seconds.get<double>();
+      fewest = std::min(fewest, n);
+    }
+  }
+  if (!(shed > 0)) return "";
+  const std::string on = fewest == 1 ? "1 thread" : "as few as " + std::to_string(fewest) + " threads";
+  return "another process took a core: ran on " + on + " (of " + std::to_string(ceiling) + ") for " +
+         formatNumber(100.0 * shed / total, 2) + " % of this process's stepping (summary.json threads_used; the result "
+         "is the same)";
 }
 
 nlohmann::json stepProfileJson(const World& world) {

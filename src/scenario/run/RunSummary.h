@@ -50,6 +50,7 @@ struct RunSummary {
   std::uint64_t neighbourPairs = 0, contacts = 0, intruderPairs = 0;
   double stateBytesPerGrain = 0.0;
   nlohmann::json stepProfile;  // run.profile: stepProfileJson; null (absent from the file) when off
+  nlohmann::json threadsUsed;  // threadsUsedJson; null (absent) when the run had one thread to give
   // the case's parameters again, for convenience
   std::string shape;
   double amplitude = 0.0, period = 0.0, mu = 0.0;
@@ -77,6 +78,14 @@ nlohmann::json toJson(const RunSummary& summary);
 RunSummary summaryFromJson(const nlohmann::json& json);
 
 class World;
+// summary.json's threads_used: the wall seconds this process's stepping spent at each thread count
+// ({"2": 812.5, "1": 95.0}; physics/ThreadGovernor.h); null when it never measured (one thread).
+nlohmann::json threadsUsedJson(const World& world);
+// The warning when the run shed threads, else "": "another process took a core: ran on 1 thread (of
+// 2) for 43 % of this process's stepping". For the log and the terminal, not `warnings`: it says
+// what the run cost, never what its result is worth (the bits are the same).
+std::string threadsShedWarning(const RunSummary& summary);
+
 // summary.json's step_profile (docs/OUTPUT-FORMATS.md): threads, steps, step_s, serial_share,
 // wait_share, serial_and_wait_share, per stage its kind, seconds, share and calls (with the
 // parallel stages' work_s, wait_s and wait_share), and strip_imbalance: the force stage's load
