@@ -15,6 +15,7 @@
 #include "scenario/bed/BedMaker.h"
 #include "scenario/run/Checkpoint.h"
 #include "scenario/cost/CostModel.h"
+#include "scenario/run/BedScatter.h"
 #include "scenario/run/Experiment.h"
 
 namespace wiggle::cli {
@@ -132,6 +133,8 @@ void addRunCommand(CLI::App& app) {
     options.resume = args->resume;
     const RunOutcome outcome = runExperiment(prepareCase(config), options);
     std::printf("%s\n", outcome.resultLine().c_str());
+    // What the number is worth: one bed, and the scatter between beds where a study measured it.
+    std::printf("%s\n", oneBedScatterNote(config, outcome.summary.tInitial, outcome.summary.tFinal).c_str());
     for (const std::string& w : outcome.summary.warnings) std::fprintf(stderr, "wiggle: warning: %s\n", w.c_str());
     std::fflush(stdout);  // before the plotter writes to the same stream
     if (config.run.plot && !args->noPlot) {
