@@ -116,7 +116,8 @@ void addRateCommand(CLI::App& app) {
     for (const std::string& note : notes)
       std::fprintf(stderr, "wiggle rate: %s%s\n", isSweep ? "each row is " : "", note.c_str());
     if (isSweep)
-      std::fprintf(stderr, "wiggle rate: %s/cells.csv pools each cell's beds over the run's own window (wiggle status)\n",
+      std::fprintf(stderr,
+                   "wiggle rate: %s/cells.csv pools each cell's beds over the run's own window (wiggle status)\n",
                    opts->dir.c_str());
     if (pending)
       std::fprintf(stderr, "wiggle rate: %d case%s not finished left out\n", pending,

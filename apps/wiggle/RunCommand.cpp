@@ -13,9 +13,9 @@
 #include "io/Config.h"
 #include "physics/ForceKernels.h"
 #include "scenario/bed/BedMaker.h"
-#include "scenario/run/Checkpoint.h"
 #include "scenario/cost/CostModel.h"
 #include "scenario/run/BedScatter.h"
+#include "scenario/run/Checkpoint.h"
 #include "scenario/run/Experiment.h"
 
 namespace wiggle::cli {

@@ -43,7 +43,7 @@ struct SweepCase {
   std::string name;          // unique within the sweep, safe as a directory name
   RunConfig config;          // fully resolved and validated
   std::vector<SweepParameter> parameters;  // same keys, same order, for every case
-  std::size_t cell = 0;      // index into SweepSpec::cells
+  std::size_t cell = 0;                    // index into SweepSpec::cells
 };
 
 // The key whose values are a cell's beds.
@@ -51,15 +51,15 @@ inline constexpr const char* kBedKey = "box.seed";
 
 // A case without its seed: the beds (cases) of one parameter point, in case order.
 struct SweepCell {
-  std::string name;                   // the case name without its seed part ("base" when nothing else varies)
-  std::vector<std::size_t> cases;     // indices into SweepSpec::cases
+  std::string name;                // the case name without its seed part ("base" when nothing else varies)
+  std::vector<std::size_t> cases;  // indices into SweepSpec::cases
 };
 
 struct SweepSpec {
   SweepSettings settings;
   std::vector<std::string> parameterKeys;  // the keys of SweepCase::parameters
   std::vector<SweepCase> cases;
-  std::vector<SweepCell> cells;            // in the order of their first case
+  std::vector<SweepCell> cells;  // in the order of their first case
 };
 
 // Expands a sweep file's text. `sourceName` (the file name) starts every error message, and

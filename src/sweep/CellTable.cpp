@@ -43,8 +43,8 @@ std::string cellInWords(const CellStats& s, std::size_t beds) {
 }
 
 const std::vector<std::string>& cellColumnsAfterParameters() {
-  static const std::vector<std::string> columns = {"state", "beds",    "n",       "vy_mean",     "vy_sd",
-                                                   "vy_se", "verdict", "verdict_rule"};
+  static const std::vector<std::string> columns = {"state", "beds",  "n",       "vy_mean",
+                                                   "vy_sd", "vy_se", "verdict", "verdict_rule"};
   return columns;
 }
 

@@ -43,10 +43,10 @@ inline constexpr const char* kCellVerdictRule =
     "rises / sinks when |vy_mean| >= 2 vy_se with n >= 2, else not resolved";
 
 struct CellStats {
-  std::size_t n = 0;   // beds with a V_y
-  double mean = 0.0;   // n >= 1
-  double sd = 0.0;     // n >= 2: sample standard deviation (n - 1)
-  double se = 0.0;     // n >= 2: sd / sqrt(n)
+  std::size_t n = 0;  // beds with a V_y
+  double mean = 0.0;  // n >= 1
+  double sd = 0.0;    // n >= 2: sample standard deviation (n - 1)
+  double se = 0.0;    // n >= 2: sd / sqrt(n)
   CellVerdict verdict = CellVerdict::NotResolved;
 };
 

@@ -260,7 +260,8 @@ std::string formatSweepStatus(const SweepStatus& s) {
   if (s.replicated()) {
     out << "cells (a case without its seed; V_y as the mean +- standard error over its beds; " << kCellVerdictRule
         << "):\n";
-    for (const CellAtAGlance& c : s.cells) out << "  cell     " << c.name << ": " << cellInWords(c.stats, c.beds) << "\n";
+    for (const CellAtAGlance& c : s.cells)
+      out << "  cell     " << c.name << ": " << cellInWords(c.stats, c.beds) << "\n";
   }
   if (running + pending == 0 && failed > 0)
     out << "nothing left to run but the " << failed << " failed case" << (failed > 1 ? "s" : "")

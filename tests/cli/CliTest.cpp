@@ -682,10 +682,9 @@ TEST_F(Cli, StatusListsTheCellsOfASweepWithBeds) {
                                      << "b2,cases/b2,pending,,,,5,2,\n";
   Result r = wiggle("status " + quoted(dir.string()));
   EXPECT_EQ(r.out.find("cell "), std::string::npos) << r.out;  // no cells.csv: as before
-  std::ofstream(dir / "cells.csv")
-      << "cell,drive.period,state,beds,n,vy_mean,vy_sd,vy_se,verdict,verdict_rule\n"
-      << "period=1,1,done,2,2,-0.025,0.007071067812,0.005,sinks,rule\n"
-      << "period=5,5,part-run,2,1,0.09,,,not resolved,rule\n";
+  std::ofstream(dir / "cells.csv") << "cell,drive.period,state,beds,n,vy_mean,vy_sd,vy_se,verdict,verdict_rule\n"
+                                   << "period=1,1,done,2,2,-0.025,0.007071067812,0.005,sinks,rule\n"
+                                   << "period=5,5,part-run,2,1,0.09,,,not resolved,rule\n";
   r = wiggle("status " + quoted(dir.string()));
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("rises / sinks when |vy_mean| >= 2 vy_se with n >= 2, else not resolved"), std::string::npos)

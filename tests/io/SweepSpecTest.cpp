@@ -277,8 +277,8 @@ seed = [4, 7]
 period = [1, 5]
 )",
                                           "sweep.toml");
-  EXPECT_EQ(names(listed), (std::vector<std::string>{"seed=4_period=1", "seed=4_period=5", "seed=7_period=1",
-                                                     "seed=7_period=5"}));
+  EXPECT_EQ(names(listed),
+            (std::vector<std::string>{"seed=4_period=1", "seed=4_period=5", "seed=7_period=1", "seed=7_period=5"}));
   ASSERT_EQ(listed.cells.size(), 2u);
   EXPECT_EQ(listed.cells[0].name, "period=1");
   EXPECT_EQ(listed.cells[0].cases, (std::vector<std::size_t>{0, 2}));

@@ -15,9 +15,7 @@ namespace {
 
 using testing_support::sourceFile;
 
-RunConfig preset(const std::string& name) {
-  return parseRunConfig(sourceFile("configs/" + name), name);
-}
+RunConfig preset(const std::string& name) { return parseRunConfig(sourceFile("configs/" + name), name); }
 
 TEST(BedScatter, ThePresetsWindowsHaveTheirMeasuredFigure) {
   const RunConfig small = preset("small.toml");
@@ -44,7 +42,7 @@ TEST(BedScatter, ElsewhereTheScatterIsUnknownAndTheNoteSaysHowToMeasureIt) {
   EXPECT_EQ(other.rfind("one bed: scatter unknown", 0), 0u) << other;
   EXPECT_NE(other.find("run `beds = N`"), std::string::npos) << other;
   EXPECT_FALSE(measuredScatterFor(small, 100, 1000));  // the clock's figures are the deeper bed's
-  small.intruder.y0 = 30;                               // another depth
+  small.intruder.y0 = 30;                              // another depth
   EXPECT_FALSE(measuredScatterFor(small, 10, 100));
   RunConfig depth = preset("paper_depth.toml");
   depth.intruder.shape = ShapeName::Polygon;  // a shape no study measured by the paper's clock

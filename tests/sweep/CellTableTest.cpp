@@ -45,7 +45,8 @@ TEST(CellTable, TheVerdictIsTwoStandardErrorsOfTheCellsOwnBedsWithTwoBedsOrMore)
 
 TEST(CellTable, OneBedIsSaidAsOneBedNeverAsAVerdict) {
   EXPECT_EQ(cellInWords(cellStats({0.0886}), 1), "+0.0886 (one bed: its sign is not a verdict)");
-  EXPECT_EQ(cellInWords(cellStats({0.0886}), 2), "+0.0886 (one bed: its sign is not a verdict; part-run: 1 of its 2 beds)");
+  EXPECT_EQ(cellInWords(cellStats({0.0886}), 2),
+            "+0.0886 (one bed: its sign is not a verdict; part-run: 1 of its 2 beds)");
   EXPECT_EQ(cellInWords(cellStats({0.09, 0.08, 0.10}), 3), "+0.09 +- 0.0058 (3 beds): rises");
   EXPECT_EQ(cellInWords(cellStats({}), 2), "no bed run yet (of 2)");
 }
@@ -64,9 +65,9 @@ TEST(CellTable, CellsCsvHasOneRowPerCellWithItsBedsAndTheRule) {
   const std::vector<CaseResult> results = {ok(-0.02), ok(-0.03), ok(0.09), failed};
   const std::vector<std::vector<std::string>> rows = parseCsv(cellsCsv(spec, results));
   ASSERT_EQ(rows.size(), 3u);
-  const std::vector<std::string> header = {"cell",  "drive.period", "intruder.shape", "drive.amplitude",
-                                           "contact.mu", "state", "beds", "n", "vy_mean", "vy_sd", "vy_se",
-                                           "verdict", "verdict_rule"};
+  const std::vector<std::string> header = {
+      "cell", "drive.period", "intruder.shape", "drive.amplitude", "contact.mu", "state",       "beds",
+      "n",    "vy_mean",      "vy_sd",          "vy_se",           "verdict",    "verdict_rule"};
   EXPECT_EQ(rows[0], header);  // results.csv's parameters less box.seed
   EXPECT_EQ(rows[1][0], "period=1");
   EXPECT_EQ(rows[1][1], "1");

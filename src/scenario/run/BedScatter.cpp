@@ -55,9 +55,9 @@ std::string oneBedScatterNote(const RunConfig& config, double from, double to) {
     return "one bed; beds of this size scatter by about +-" + formatNumber(m->sigma) + " over this window (" + window +
            "; one bed's standard deviation of V_y on " + m->bed +
            (m->shape ? ", the " + std::string(choiceName(*m->shape)) + "'s" : std::string()) + ": " + m->where + ")";
-  return "one bed: scatter unknown for a " + formatNumber(config.box.width) + " x " + formatNumber(config.box.bedHeight) +
-         " d bed with the intruder at y0 = " + formatNumber(config.intruder.y0) + " over " + window +
-         " (no committed study measured it); run `beds = N` in a sweep (docs/SWEEPS.md) to know it";
+  return "one bed: scatter unknown for a " + formatNumber(config.box.width) + " x " +
+         formatNumber(config.box.bedHeight) + " d bed with the intruder at y0 = " + formatNumber(config.intruder.y0) +
+         " over " + window + " (no committed study measured it); run `beds = N` in a sweep (docs/SWEEPS.md) to know it";
 }
 
 }  // namespace wiggle

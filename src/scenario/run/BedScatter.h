@@ -19,9 +19,9 @@
 namespace wiggle {
 
 struct MeasuredScatter {
-  const char* bed;  // the bed in words ("the small preset's 60 x 50 d bed, intruder 25 d deep")
-  double width, bedHeight, y0;  // [d] box.width, box.bed_height, intruder.y0
-  double from, to;              // [sqrt(d/g)] the V_y window t_i-t_f
+  const char* bed;                 // the bed in words ("the small preset's 60 x 50 d bed, intruder 25 d deep")
+  double width, bedHeight, y0;     // [d] box.width, box.bed_height, intruder.y0
+  double from, to;                 // [sqrt(d/g)] the V_y window t_i-t_f
   std::optional<ShapeName> shape;  // the shape it was measured for; none: taken for every shape
   double sigma;                    // [sqrt(g d)] one bed's standard deviation of V_y
   const char* where;               // how and where it was measured
