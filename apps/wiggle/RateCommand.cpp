@@ -108,6 +108,17 @@ void addRateCommand(CLI::App& app) {
     for (std::size_t k = 0; k < dirs.size(); ++k)
       for (const std::string& warning : rateWarnings(measured[k].rate))
         std::fprintf(stderr, "wiggle rate: warning: %s: %s\n", dirs[k].c_str(), warning.c_str());
+    // Each row is one bed's V_y: what that is worth, once per distinct note (a sweep's cases mostly
+    // share one); a sweep's cells.csv has the cells' means and standard errors.
+    std::vector<std::string> notes;
+    for (const Remeasured& m : measured)
+      if (std::find(notes.begin(), notes.end(), m.scatterNote) == notes.end()) notes.push_back(m.scatterNote);
+    for (const std::string& note : notes)
+      std::fprintf(stderr, "wiggle rate: %s%s\n", isSweep ? "each row is " : "", note.c_str());
+    if (isSweep)
+      std::fprintf(stderr,
+                   "wiggle rate: %s/cells.csv pools each cell's beds over the run's own window (wiggle status)\n",
+                   opts->dir.c_str());
     if (pending)
       std::fprintf(stderr, "wiggle rate: %d case%s not finished left out\n", pending,
                    pending == 1 ? "" : "s");

@@ -13,8 +13,9 @@
 #include "io/Config.h"
 #include "physics/ForceKernels.h"
 #include "scenario/bed/BedMaker.h"
-#include "scenario/run/Checkpoint.h"
 #include "scenario/cost/CostModel.h"
+#include "scenario/run/BedScatter.h"
+#include "scenario/run/Checkpoint.h"
 #include "scenario/run/Experiment.h"
 
 namespace wiggle::cli {
@@ -138,6 +139,8 @@ void addRunCommand(CLI::App& app) {
     if (args->fixedThreads) options.threadPolicy = ThreadPolicy::Fixed;
     const RunOutcome outcome = runExperiment(prepareCase(config), options);
     std::printf("%s\n", outcome.resultLine().c_str());
+    // What the number is worth: one bed, and the scatter between beds where a study measured it.
+    std::printf("%s\n", oneBedScatterNote(config, outcome.summary.tInitial, outcome.summary.tFinal).c_str());
     for (const std::string& w : outcome.summary.warnings) std::fprintf(stderr, "wiggle: warning: %s\n", w.c_str());
     if (const std::string shed = threadsShedWarning(outcome.summary); !shed.empty())
       std::fprintf(stderr, "wiggle: warning: %s\n", shed.c_str());

@@ -346,11 +346,11 @@ class SweepDataTest(DataDirs):
         rows, amplitude = sweepplots.mu_rows(sweep)
         self.assertEqual(amplitude, 5.0)  # every A has all three mu: the larger wins
         curves = sweepplots.curves_by(sweep, rows, prepare.MU)
-        T, vy, std, n = curves["disk"][0.3]
+        T, vy, std, n, se = curves["disk"][0.3]
         np.testing.assert_allclose(vy, np.array(synthetic.BASE["disk"][5.0]) + 0.3, atol=1e-12)
         np.testing.assert_array_equal(n, 2)
         # The failed case (mu = 0.0, disk, A = 5, T = 4) is absent from the count.
-        T, vy, std, n = curves["disk"][0.0]
+        T, vy, std, n, se = curves["disk"][0.0]
         self.assertEqual(list(n), [2, 2, 2, 2])
 
     def test_pooled_phase_rates_weight_by_samples(self):

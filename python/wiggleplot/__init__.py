@@ -4,6 +4,7 @@ Python draws, C++ computes: this package only reads the files that `wiggle run`,
 and `wiggle model` write (docs/OUTPUT-FORMATS.md) and never re-derives physics. Modules:
 
 - readers:   file readers (one function per file format), numpy arrays out
+- cells:     a sweep's cells (a case without its seed): mean, se and verdict over the beds (cells.csv)
 - prepare:   the arrays behind each figure (aggregation over seeds, T_rising, field grids, masks)
 - style:     one matplotlib style for every figure and the saver (PNG + PDF)
 - runplots:  figures of one run directory (paper figs 2, 3-4, 8, 9-11, movie)
@@ -17,6 +18,7 @@ For analysis (pandas from Debian: python3-pandas):
 
     import wiggleplot as wp
     sweep = wp.load_sweep("fig5")             # results.csv as a DataFrame
+    cells = wp.load_cells("fig5")             # cells.csv (or results.csv grouped by cell)
     run = wp.load_case("fig5", "shape=disk_period=5")   # or wp.load_run(DIR), wp.load_run(case)
     run.trajectory.plot(x="t", y="y")
     wp.plot_sweep("fig5", "fig5/figures")     # the paper's figures of a sweep
@@ -24,7 +26,7 @@ For analysis (pandas from Debian: python3-pandas):
 
 import os
 
-from wiggleplot.data import RunData, WiggleError, find_wiggle, load_case, load_run, load_sweep, run  # noqa: F401
+from wiggleplot.data import RunData, WiggleError, find_wiggle, load_case, load_cells, load_run, load_sweep, run  # noqa: F401
 
 __version__ = "0.1.0"
 

@@ -30,6 +30,7 @@ UNITS = {
     **{c["name"]: c["unit"] for c in readers.results_columns() if c["unit"]},
     "drive.amplitude": LENGTH, "drive.period": TIME, "contact.mu": "1", "intruder.y0": LENGTH,
     "box.width": LENGTH, "box.bed_height": LENGTH, "run.duration": TIME, "run.dt": TIME,
+    "vy_sd": SPEED, "vy_se": SPEED,  # cells.csv (vy_mean as phase_rates.csv's)
 }
 
 
@@ -103,6 +104,20 @@ def _live_run(case):
     return RunData(dir=None, summary=dict(case.rise_rate()), trajectory=frame(case.trajectory),
                    phase_rates=frame(case.phase_rates), fields=frame(case.fields), model=None,
                    config=tomllib.loads(case.config))
+
+
+def load_cells(sweep_dir):
+    """The sweep's cells as a DataFrame, one row per cell (a case without its seed): cell, the
+    parameters (less box.seed), state (done, part-run, not run), beds, n (beds with a V_y),
+    vy_mean, vy_sd, vy_se, verdict (rises, sinks, not resolved) and verdict_rule. From DIR/cells.csv
+    when the sweep wrote one, else grouped from results.csv by the same rule (wiggleplot.cells), so
+    the committed studies in results/ read the same way. Units in table.attrs["units"]."""
+    from wiggleplot import cells
+    if not os.path.exists(os.path.join(sweep_dir, "results.csv")):
+        raise FileNotFoundError(f"{sweep_dir}: no results.csv: not a sweep directory")
+    table = cells.read_cells(sweep_dir)
+    frame = _pandas().DataFrame({c: list(v) for c, v in table.items()})
+    return with_units(frame.astype({"beds": int, "n": int}))
 
 
 def load_sweep(sweep_dir):

@@ -14,6 +14,7 @@ import math
 import os
 import tempfile
 
+from wiggleplot import cells as cell_rule
 from wiggleplot import prepare
 
 STATUS_ORDER = ("ok", "running", "failed", "pending")
@@ -109,9 +110,39 @@ def _data_uri(path):
         return "data:image/png;base64," + base64.b64encode(f.read()).decode("ascii")
 
 
-def render(sweep_dir, status, table, figures, notes):
+def cells_section(cells, varied):
+    """The cells' table (mean +- se, n of beds, verdict: wiggleplot.cells) when some cell has more
+    than one bed; else one sentence saying each case is one bed."""
+    e = html.escape
+    if cells is None or not len(cells["cell"]):
+        return []
+    if not cell_rule.replicated(cells):
+        return ["<p>Each case is one bed: its V_y's sign is one bed's, not a verdict "
+                "(<code>beds = N</code> in <code>[sweep]</code> runs every case on N beds; docs/SWEEPS.md).</p>"]
+    shown = [k for k in varied if k in cells and k != cell_rule.SEED]
+    out = ["<h2>Cells</h2><p>A cell is a case without its seed: V_y is the mean +- standard error over its beds; "
+           f"{e(cell_rule.RULE)}.</p>",
+           "<table><tr><th>cell</th>" + "".join(f"<th>{e(k)}</th>" for k in shown)
+           + "<th>beds run</th><th>V_y (mean +- se)</th><th>verdict</th></tr>"]
+    for i in range(len(cells["cell"])):
+        n, beds = int(cells["n"][i]), int(cells["beds"][i])
+        state = str(cells["state"][i])
+        mean, se = float(cells["vy_mean"][i]), float(cells["vy_se"][i])
+        value = "" if n == 0 else f"{mean:+.4g}" + ("" if n < cell_rule.MIN_BEDS else f" +- {se:.2g}")
+        verdict = str(cells["verdict"][i]) if n >= cell_rule.MIN_BEDS else ("one bed" if n == 1 else "")
+        css = {"done": "ok", "part-run": "running", "not run": "pending"}.get(state, "")
+        out.append(f"<tr><td>{e(str(cells['cell'][i]))}</td>"
+                   + "".join(f'<td class="num">{e(_cell(cells[k][i]))}</td>' for k in shown)
+                   + f'<td class="num {css}">{n} of {beds}' + (f" ({e(state)})" if state != "done" else "") + "</td>"
+                   + f'<td class="num">{e(value)}</td><td class="verdict">{e(verdict)}</td></tr>')
+    out.append("</table><p>One bed has no standard error: its sign is marked <em>one bed</em>, never a verdict.</p>")
+    return out
+
+
+def render(sweep_dir, status, table, figures, notes, cells=None):
     """The page as a string. status: the JSON of sweep/SweepStatus.h; table: load_sweep(sweep_dir);
-    figures: sweep_figures(...); notes: sentences for the reader (figures missing, stale, ...)."""
+    figures: sweep_figures(...); notes: sentences for the reader (figures missing, stale, ...);
+    cells: wiggleplot.cells.read_cells(sweep_dir), or None."""
     e = html.escape
     name = status.get("name") or os.path.basename(os.path.normpath(sweep_dir))
     cases = status["cases"]
@@ -166,6 +197,7 @@ def render(sweep_dir, status, table, figures, notes):
             f"<code>{e(k)}</code> = {e(_cell(v))}" for k, v in fixed.items()) + ".</p>")
     out.append("<p>V_y and slope in sqrt(g d): the paper's rate (chord) and the least-squares "
                "slope of y(t) over [t_i, t_f] (docs/OUTPUT-FORMATS.md).</p>")
+    out.extend(cells_section(cells, varied))
 
     out.append("<h2>Figures</h2>")
     if not figures:
@@ -213,6 +245,7 @@ def write_report(sweep_dir, out_path, status_path, report):
     if figures and min(os.path.getmtime(p) for _, _, p in figures) < os.path.getmtime(results):
         notes.append(f"The figures are older than results.csv: `wiggle plot {sweep_dir}` redraws them "
                      "with the cases finished since.")
-    write_atomically(out_path, render(sweep_dir, status, load_sweep(sweep_dir), figures, notes))
+    write_atomically(out_path, render(sweep_dir, status, load_sweep(sweep_dir), figures, notes,
+                                      cell_rule.read_cells(sweep_dir)))
     report.wrote([out_path])
     return out_path

@@ -6,7 +6,7 @@ import math
 import numpy as np
 from matplotlib.path import Path
 
-from wiggleplot import readers
+from wiggleplot import cells, readers
 
 # Column names of results.csv (config keys) that the sweep figures know by meaning.
 SHAPE, AMPLITUDE, PERIOD, MU, SEED = (
@@ -231,8 +231,10 @@ def _fmt(v):
 
 def aggregate(results, keys, rows=None):
     """Average vy over all rows sharing the same values of `keys` (seeds and any other unlisted
-    parameter are pooled). Returns a list of dicts {key: value, 'vy': mean, 'std': sample standard
-    deviation (0 for one value), 'min', 'max', 'n', 'cases'}, sorted by the keys."""
+    parameter are pooled: with every parameter but the seed among the keys, a group is a cell).
+    Returns a list of dicts {key: value, 'vy': mean, 'std': sample standard deviation (0 for one
+    value), 'se': its standard error (0 for one value), 'verdict' (the cells' rule, wiggleplot.cells),
+    'min', 'max', 'n', 'cases'}, sorted by the keys."""
     mask = usable_rows(results) if rows is None else (rows & usable_rows(results))
     vy = np.asarray(results["vy"], dtype=float)
     groups = {}
@@ -244,19 +246,21 @@ def aggregate(results, keys, rows=None):
         idx = groups[key]
         v = vy[idx]
         rec = dict(zip(keys, key))
-        rec.update(vy=float(v.mean()), std=float(v.std(ddof=1)) if len(v) > 1 else 0.0,
-                   min=float(v.min()), max=float(v.max()), n=len(v),
+        s = cells.stats(v)
+        one = s["n"] < cells.MIN_BEDS
+        rec.update(vy=s["vy_mean"], std=0.0 if one else s["vy_sd"], se=0.0 if one else s["vy_se"],
+                   verdict=s["verdict"], min=float(v.min()), max=float(v.max()), n=s["n"],
                    cases=[results["case"][i] for i in idx])
         out.append(rec)
     return out
 
 
 def series(records, x_key):
-    """Records of one curve -> arrays (x, mean, std, n) sorted by x."""
+    """Records of one curve -> arrays (x, mean, std, n, se) sorted by x."""
     records = sorted(records, key=lambda r: r[x_key])
     return (np.array([r[x_key] for r in records], dtype=float),
             np.array([r["vy"] for r in records]), np.array([r["std"] for r in records]),
-            np.array([r["n"] for r in records]))
+            np.array([r["n"] for r in records]), np.array([r["se"] for r in records]))
 
 
 def t_rising(periods, vy):

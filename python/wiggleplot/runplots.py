@@ -180,7 +180,7 @@ def plot_trajectory(run, out_dir, formats):
     lines = prepare.rate_lines(run.summary, run.trajectory)
     if "vy" in lines:
         tt, yy, v = lines["vy"]
-        ax.plot(tt, yy, color="#d95f02", lw=1.8, label=rf"$V_y$ = {v:.3g} ($t_i$ to $t_f$ = {tt[1]:.4g})")
+        ax.plot(tt, yy, color="#d95f02", lw=1.8, label=rf"$V_y$ = {v:.3g}, one bed ($t_i$ to $t_f$ = {tt[1]:.4g})")
         ax.plot(tt, yy, "o", color="#d95f02", ms=3.5)
     if "settled" in lines:
         tt, yy, v = lines["settled"]

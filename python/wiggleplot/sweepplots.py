@@ -1,8 +1,10 @@
 """Figures of a sweep directory (results.csv): V_y against T per amplitude (paper fig. 5) and per
 friction (fig. 6), the V_y colour map over A and T (fig. 14), Table 1 (observed T_rising beside
 the cavity model's), and, from the cases' run directories, y(t) per T (fig. 2) and the
-phase-resolved rate per T (fig. 8). Several seeds of one point are averaged; error bars are their
-sample standard deviation."""
+phase-resolved rate per T (fig. 8). The beds (seeds) of one point, a cell, are averaged; error
+bars are +-2 standard errors of the mean over them, the cells' verdict rule (wiggleplot.cells): a bar
+clear of zero rises or sinks. A point of one bed has no bar and is drawn open: its sign is one bed's,
+not a verdict."""
 import collections
 import csv
 import os
@@ -11,7 +13,7 @@ import textwrap
 import numpy as np
 from matplotlib.colors import TwoSlopeNorm
 
-from wiggleplot import boundaryplots, prepare, readers, style
+from wiggleplot import boundaryplots, cells, prepare, readers, style
 from wiggleplot.prepare import AMPLITUDE, MU, PERIOD
 from wiggleplot.style import plt
 
@@ -129,7 +131,7 @@ def _limit_to_data(ax, xs, ys):
 
 
 def curves_by(sweep, rows, line_key):
-    """{panel: {line value: (T, mean, std, n)}} over the given rows, seeds averaged."""
+    """{panel: {line value: (T, mean, std, n, se)}} over the given rows, seeds averaged."""
     out = {}
     for panel in sweep.panels:
         sel = rows & (sweep.panel == panel)
@@ -148,11 +150,18 @@ def _plot_rate_curves(sweep, curves, line_key, line_label, name, title_extra, fo
     legend = []
     for ax, (panel, lines) in zip(axes, curves.items()):
         xs, ys = [], []
-        for value, (T, vy, std, n) in lines.items():
-            ax.errorbar(T, vy, yerr=std, marker="o", ms=3.5, capsize=2, lw=1.1,
+        for value, (T, vy, std, n, se) in lines.items():
+            bar = np.where(n >= cells.MIN_BEDS, cells.RESOLVED_SE * se, 0.0)
+            ax.errorbar(T, vy, yerr=bar, marker="o", ms=3.5, capsize=2, lw=1.1,
                         color=colours[value], label=f"{line_label} = {style.fmt_value(value)}")
+            one = n < cells.MIN_BEDS
+            if one.any():  # one bed: no standard error, so no verdict; an open marker says so
+                ax.plot(T[one], vy[one], "o", ms=3.5, mfc="white", mec=colours[value], mew=1.0, zorder=3,
+                        label="open: one bed (its sign is not a verdict)")
+            if (~one).any():
+                ax.plot([], [], " ", label=r"bars: $\pm$2 standard errors over the beds (clear of 0: rises / sinks)")
             xs.append(T)
-            ys.extend([vy - std, vy + std])
+            ys.extend([vy - bar, vy + bar])
         _limit_to_data(ax, xs, ys)
         ax.axhline(0.0, color="0.4", lw=0.6)
         ax.set_title(panel + title_extra)
@@ -234,6 +243,8 @@ def plot_rate_map(sweep, out_dir, formats):
     cmap = plt.get_cmap("RdBu_r").copy()
     cmap.set_bad("0.85")
     fig, axes = _panel_grid(len(maps), height=2.3)
+    beds = np.concatenate([m[3][~np.ma.getmaskarray(m[2])].ravel() for m in maps.values()])
+    mixed = bool((beds < cells.MIN_BEDS).any() and (beds >= cells.MIN_BEDS).any())  # star the one-bed cells
     image = None
     for ax, (panel, (amps, periods, grid, counts)) in zip(axes, maps.items()):
         image = ax.pcolormesh(np.arange(len(periods) + 1), np.arange(len(amps) + 1), grid,
@@ -243,7 +254,8 @@ def plot_rate_map(sweep, out_dir, formats):
                 for j in range(len(periods)):
                     if not np.ma.is_masked(grid[i, j]):
                         v = float(grid[i, j])
-                        ax.text(j + 0.5, i + 0.5, f"{v:.2g}", ha="center", va="center", fontsize=5.5,
+                        star = "*" if mixed and counts[i, j] < cells.MIN_BEDS else ""
+                        ax.text(j + 0.5, i + 0.5, f"{v:.2g}{star}", ha="center", va="center", fontsize=5.5,
                                 color="white" if abs(v) > 0.6 * vmax else "black")
         ax.set_xticks(np.arange(len(periods)) + 0.5)
         ax.set_xticklabels([f"{p:g}" for p in periods], fontsize=7)
@@ -253,6 +265,12 @@ def plot_rate_map(sweep, out_dir, formats):
         ax.set_xlabel(style.PERIOD_LABEL)
         ax.set_ylabel(style.AMPLITUDE_LABEL)
         ax.set_title(panel + ("" if mu is None else rf" ($\mu$ = {mu:g})"))
+    if beds.size and (beds < cells.MIN_BEDS).all():
+        fig.suptitle("one bed a cell: each colour is one bed's V_y, its sign not a verdict", fontsize=7, y=0.01,
+                     va="bottom")
+    elif mixed:
+        fig.suptitle("mean V_y over each cell's beds; a cell of one bed (*) is one bed's, its sign not a verdict",
+                     fontsize=7, y=0.01, va="bottom")
     fig.tight_layout()
     bar = fig.colorbar(image, ax=list(axes), shrink=0.9, pad=0.02)
     bar.set_label(style.VY_LABEL)
@@ -271,8 +289,11 @@ def table1(sweep):
             continue
         a_max = max(prepare.varying(sweep.results, AMPLITUDE, sel))
         records = prepare.aggregate(sweep.results, [PERIOD], sel & (amp_values == a_max))
-        T, vy, _, _ = prepare.series(records, PERIOD)
+        T, vy, _, n, _ = prepare.series(records, PERIOD)
         t_obs, t_lo, t_hi, note = prepare.t_rising(T, vy)
+        single = [f"{t:g}" for t, k in zip(T, n) if k < cells.MIN_BEDS and t in (t_lo, t_hi)]
+        if single:  # the bracket rests on single beds' signs
+            note = "; ".join(filter(None, [note, f"one bed at T = {', '.join(single)}: a sign, not a verdict"]))
         model = sweep.model(panel) or {}
         out.append({
             "shape": panel, "A": a_max, "mu": "" if mu is None else mu,

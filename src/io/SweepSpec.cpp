@@ -60,6 +60,7 @@ std::string suggestTopLevel(const std::string& name) {
 
 struct CaseSource {
   std::string label;                 // explicit `name`, or built from its own values
+  std::string cellLabel;             // the same without its seed (the cell's part of the name)
   bool named = false;
   std::vector<ConfigEntry> entries;  // its keys, file order
 };
@@ -116,6 +117,12 @@ void readSweepSettings(const toml::table& root, const std::string& sourceName, S
       const auto* s = node.as_string();
       if (!s) throw Error(where + ": expected a string");
       settings.name = s->get();
+    } else if (key == "beds") {
+      // Replicates: how many beds every case runs on (box.seed 1..N, or a box.seed grid's seeds).
+      const auto* i = node.as_integer();
+      if (!i) throw Error(where + ": expected an integer (the beds of every case, e.g. beds = 3)");
+      if (i->get() < 1 || i->get() > 1000) throw Error(where + ": must be from 1 to 1000 (the beds of every case)");
+      settings.beds = static_cast<int>(i->get());
     } else if (key == "jobs" || key == "threads_per_case") {
       const auto* i = node.as_integer();
       if (!i) throw Error(where + ": expected an integer");
@@ -123,7 +130,7 @@ void readSweepSettings(const toml::table& root, const std::string& sourceName, S
       (key == "jobs" ? settings.jobs : settings.threadsPerCase) = static_cast<int>(i->get());
     } else {
       throw Error(sourceName + ":" + std::to_string(node.source().begin.line) + ": unknown key 'sweep." + key +
-                  "' (known: name, jobs, threads_per_case)");
+                  "' (known: name, jobs, threads_per_case, beds)");
     }
   }
 }
@@ -163,12 +170,13 @@ std::vector<CaseSource> readCases(const toml::array& caseArray, const std::vecto
     c.entries = configEntries(t, sourceName, "case", {"name"});
     if (!c.named) {
       for (const ConfigEntry& e : c.entries) {
-        if (!c.label.empty()) c.label += '_';
-        c.label += e.key.substr(e.key.find('.') + 1);
-        c.label += '=';
-        c.label += sanitize(tomlValueString(*e.value), false);
+        std::string part = e.key.substr(e.key.find('.') + 1) + '=' + sanitize(tomlValueString(*e.value), false);
+        c.label += c.label.empty() ? part : "_" + part;
+        if (e.key != kBedKey) c.cellLabel += c.cellLabel.empty() ? part : "_" + part;
       }
       if (c.label.empty()) c.label = "case" + std::to_string(i + 1);
+    } else {
+      c.cellLabel = c.label;
     }
     for (const ConfigEntry& e : c.entries) {
       for (const ConfigEntry& g : grid) {
@@ -198,6 +206,52 @@ std::vector<std::string> parameterKeysOf(const std::vector<CaseSource>& cases, c
   return keys;
 }
 
+// sweep.beds = N: every case on N beds. Without a [grid] box.seed the grid gains box.seed = [1..N]
+// at its end (`seeds` holds those values; the seed varies fastest, so a cell's beds run one after
+// another); with one, its seeds are the beds and must number N. A seed set anywhere else would
+// contradict the beds, and is refused naming both.
+void addBeds(int beds, const toml::table* base, const std::vector<CaseSource>& cases, std::vector<ConfigEntry>& grid,
+             toml::array& seeds, const std::string& sourceName) {
+  const std::string what = "sweep.beds = " + std::to_string(beds);
+  for (const ConfigEntry& g : grid) {
+    if (g.key != kBedKey) continue;
+    const std::size_t listed = g.value->as_array()->size();
+    if (listed != static_cast<std::size_t>(beds))
+      throw Error(sourceName + ":" + std::to_string(g.line) + ": " + what + " but [grid] box.seed lists " +
+                  std::to_string(listed) + " seed" + (listed == 1 ? "" : "s") +
+                  ": with a box.seed grid its seeds are the beds; make the two agree or drop one");
+    return;
+  }
+  for (std::size_t i = 0; i < cases.size(); ++i)
+    for (const ConfigEntry& e : cases[i].entries)
+      if (e.key == kBedKey)
+        throw Error(sourceName + ":" + std::to_string(e.line) + ": " + what + " gives every case box.seed 1.." +
+                    std::to_string(beds) + ", but [[case]] " + std::to_string(i + 1) +
+                    " sets box.seed: list the seeds in [grid] box.seed instead, or drop sweep.beds");
+  if (base) {
+    if (const toml::node* seed = (*base)["box"]["seed"].node())
+      throw Error(sourceName + ":" + std::to_string(seed->source().begin.line) + ": " + what +
+                  " gives every case box.seed 1.." + std::to_string(beds) + ", but [base] sets box.seed = " +
+                  tomlValueString(*seed) + ": list the seeds in [grid] box.seed instead, or drop sweep.beds");
+  }
+  for (int b = 1; b <= beds; ++b) seeds.push_back(static_cast<int64_t>(b));
+  grid.push_back(ConfigEntry{kBedKey, &seeds, 0});
+}
+
+// The cells: cases grouped by every parameter but the seed, in the order of their first case.
+void groupCells(SweepSpec& spec, const std::vector<std::string>& cellNames) {
+  std::map<std::vector<std::string>, std::size_t> cellOf;
+  for (SweepCase& c : spec.cases) {
+    std::vector<std::string> point;
+    for (const SweepParameter& p : c.parameters)
+      if (p.key != kBedKey) point.push_back(p.value);
+    const auto [it, fresh] = cellOf.try_emplace(point, spec.cells.size());
+    if (fresh) spec.cells.push_back(SweepCell{cellNames[c.index], {}});
+    c.cell = it->second;
+    spec.cells[it->second].cases.push_back(c.index);
+  }
+}
+
 }  // namespace
 
 SweepSpec parseSweepSpec(const std::string& tomlText, const std::string& sourceName) {
@@ -211,9 +265,16 @@ SweepSpec parseSweepSpec(const std::string& tomlText, const std::string& sourceN
   if (tables.base) applyConfigTable(base, *tables.base, sourceName, "base");
   std::vector<ConfigEntry> grid;
   if (tables.grid) grid = configEntries(*tables.grid, sourceName, "grid");
-  const std::size_t combinations = checkGrid(grid, sourceName);
+  std::size_t combinations = checkGrid(grid, sourceName);
   std::vector<CaseSource> cases;
   if (tables.cases) cases = readCases(*tables.cases, grid, combinations, sourceName);
+  toml::array seeds;  // sweep.beds' box.seed values, when the grid has none
+  if (spec.settings.beds > 0) {
+    addBeds(spec.settings.beds, tables.base, cases, grid, seeds, sourceName);
+    combinations = checkGrid(grid, sourceName);
+    if (std::max<std::size_t>(1, cases.size()) * combinations > maxCases)
+      throw Error(sourceName + ": more than " + std::to_string(maxCases) + " cases");
+  }
   const bool haveCases = !cases.empty();
   if (!haveCases) cases.push_back({});  // just base
   spec.parameterKeys = parameterKeysOf(cases, grid);
@@ -227,6 +288,7 @@ SweepSpec parseSweepSpec(const std::string& tomlText, const std::string& sourceN
   };
 
   std::map<std::string, std::size_t> seenNames;
+  std::vector<std::string> cellNames;  // each case's name without its seed
   std::vector<std::size_t> pick(grid.size(), 0);
   for (std::size_t ci = 0; ci < cases.size(); ++ci) {
     const CaseSource& source = cases[ci];
@@ -236,15 +298,17 @@ SweepSpec parseSweepSpec(const std::string& tomlText, const std::string& sourceN
       out.index = spec.cases.size();
 
       std::string name = haveCases ? sanitize(source.label, true) : std::string();
+      std::string cellName = haveCases && !source.cellLabel.empty() ? sanitize(source.cellLabel, true) : std::string();
       for (std::size_t g = 0; g < grid.size(); ++g) {
         const toml::node& v = *grid[g].value->as_array()->get(pick[g]);
-        if (!name.empty()) name += '_';
-        name += shortKey(grid[g].key);
-        name += '=';
-        name += sanitize(tomlValueString(v), false);
+        const std::string part = shortKey(grid[g].key) + '=' + sanitize(tomlValueString(v), false);
+        name += name.empty() ? part : "_" + part;
+        if (grid[g].key != kBedKey) cellName += cellName.empty() ? part : "_" + part;
       }
       if (name.empty()) name = "base";
+      if (cellName.empty()) cellName = "base";
       out.name = name;
+      cellNames.push_back(cellName);
 
       try {
         out.config = base;
@@ -253,7 +317,7 @@ SweepSpec parseSweepSpec(const std::string& tomlText, const std::string& sourceN
         }
         for (std::size_t g = 0; g < grid.size(); ++g) {
           const toml::node& v = *grid[g].value->as_array()->get(pick[g]);
-          applySetting(out.config, grid[g].key, v, lineTag(grid[g], "[grid]"));
+          applySetting(out.config, grid[g].key, v, grid[g].value == &seeds ? "sweep.beds" : lineTag(grid[g], "[grid]"));
         }
         validateRunConfig(out.config);
       } catch (const Error& e) {
@@ -279,6 +343,7 @@ SweepSpec parseSweepSpec(const std::string& tomlText, const std::string& sourceN
       }
     }
   }
+  groupCells(spec, cellNames);
   return spec;
 }
 

@@ -17,6 +17,7 @@
 #include "io/AtomicFile.h"
 #include "io/FileLock.h"
 #include "scenario/run/RunProgress.h"
+#include "sweep/CellTable.h"
 #include "sweep/ResultsTable.h"
 #include "sweep/SweepStart.h"
 #include "sweep/TaskRunner.h"
@@ -386,10 +387,16 @@ class Coordinator {
     }
   }
 
+  // results.csv and, from the same results, cells.csv (sweep/CellTable.h), one after the other.
+  void writeTables(const std::vector<CaseResult>& table) {
+    writeFileAtomically(plan_.outDir + "/results.csv", resultsCsv(plan_.spec, runDirs_, table));
+    writeFileAtomically(plan_.outDir + "/cells.csv", cellsCsv(plan_.spec, table));
+    resultsDirty_ = false;
+  }
+
   void writeResults() {
     if (!only_) {
-      writeFileAtomically(plan_.outDir + "/results.csv", resultsCsv(plan_.spec, runDirs_, results_));
-      resultsDirty_ = false;
+      writeTables(results_);
       return;
     }
     // One case of several processes': the table is rebuilt from every case directory, under a lock,
@@ -405,8 +412,7 @@ class Coordinator {
         // Being written by its own process, or torn: it shows as before.
       }
     }
-    writeFileAtomically(plan_.outDir + "/results.csv", resultsCsv(plan_.spec, runDirs_, table));
-    resultsDirty_ = false;
+    writeTables(table);
   }
 
   // Measured over the finished cases this task counts (this session and earlier ones), or the cost model's.

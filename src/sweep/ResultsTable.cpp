@@ -18,29 +18,38 @@ namespace {
 // The parameters the plots know by meaning (python/wiggleplot/prepare.py): always present.
 constexpr const char* kAlwaysKeys[] = {"intruder.shape", "drive.amplitude", "drive.period", "contact.mu", "box.seed"};
 
+}  // namespace
+
 // A [[case]] label comes from SweepSpec under the key "case", which results.csv already uses for
 // the case's full name; its column is called case_label instead.
-std::string columnName(const std::string& key) { return key == "case" ? "case_label" : key; }
+std::string resultParameterColumn(const std::string& key) { return key == "case" ? "case_label" : key; }
 
-std::vector<std::string> parameterKeys(const SweepSpec& spec) {
+std::vector<std::string> resultParameterKeys(const SweepSpec& spec) {
   std::vector<std::string> keys = spec.parameterKeys;
   for (const char* k : kAlwaysKeys)
     if (std::find(keys.begin(), keys.end(), k) == keys.end()) keys.emplace_back(k);
   return keys;
 }
 
-}  // namespace
+std::string resultParameterValue(const SweepCase& sc, const std::string& key) {
+  for (const SweepParameter& p : sc.parameters)
+    if (p.key == key) return p.value;
+  return key == "case" ? std::string() : configValueString(sc.config, key);
+}
 
 std::string csvCell(const std::string& text);
 
-namespace {
-void appendRow(std::string& out, const std::vector<std::string>& cells) {
+std::string csvRow(const std::vector<std::string>& cells) {
+  std::string out;
   for (std::size_t i = 0; i < cells.size(); ++i) {
     if (i) out += ',';
     out += csvCell(cells[i]);
   }
-  out += '\n';
+  return out + '\n';
 }
+
+namespace {
+void appendRow(std::string& out, const std::vector<std::string>& cells) { out += csvRow(cells); }
 }  // namespace
 
 std::string csvCell(const std::string& text) {
@@ -179,7 +188,7 @@ nlohmann::json resultsSchema() {
 std::vector<std::string> resultColumns(const SweepSpec& spec) {
   std::vector<std::string> columns;
   for (const ResultColumn& c : resultColumnsBeforeParameters()) columns.emplace_back(c.name);
-  for (const std::string& k : parameterKeys(spec)) columns.push_back(columnName(k));
+  for (const std::string& k : resultParameterKeys(spec)) columns.push_back(resultParameterColumn(k));
   for (const ResultColumn& c : resultColumnsAfterParameters()) columns.emplace_back(c.name);
   return columns;
 }
@@ -190,19 +199,13 @@ std::string resultsCsv(const SweepSpec& spec, const std::vector<std::string>& ru
     throw Error("results.csv: internal error: one run directory and result per case expected");
   std::string out;
   appendRow(out, resultColumns(spec));
-  const std::vector<std::string> keys = parameterKeys(spec);
+  const std::vector<std::string> keys = resultParameterKeys(spec);
   for (std::size_t c = 0; c < spec.cases.size(); ++c) {
     const SweepCase& sc = spec.cases[c];
     const ResultRow source{sc, runDirs[c], results[c]};
     std::vector<std::string> row;
     for (const ResultColumn& column : resultColumnsBeforeParameters()) row.push_back(column.cell(source));
-    for (const std::string& k : keys) {
-      std::string value;
-      for (const SweepParameter& p : sc.parameters)
-        if (p.key == k) value = p.value;
-      if (value.empty() && k != "case") value = configValueString(sc.config, k);
-      row.push_back(value);
-    }
+    for (const std::string& k : keys) row.push_back(resultParameterValue(sc, k));
     for (const ResultColumn& column : resultColumnsAfterParameters()) row.push_back(column.cell(source));
     appendRow(out, row);
   }

@@ -106,6 +106,14 @@ nlohmann::json resultsSchema();
 // The column names for a sweep (see the header comment).
 std::vector<std::string> resultColumns(const SweepSpec& spec);
 
+// The parameters' columns, by their keys: the keys that vary, then the ones the plots always look
+// for (cells.csv has the same, less box.seed).
+std::vector<std::string> resultParameterKeys(const SweepSpec& spec);
+// A parameter key's column name: the key, except a [[case]] label's ("case"), which is case_label.
+std::string resultParameterColumn(const std::string& key);
+// A case's cell in a parameter's column.
+std::string resultParameterValue(const SweepCase& sweepCase, const std::string& key);
+
 // The whole file's text. `runDirs` are relative to the sweep directory, one per case.
 std::string resultsCsv(const SweepSpec& spec, const std::vector<std::string>& runDirs,
                        const std::vector<CaseResult>& results);
@@ -115,6 +123,8 @@ std::string joinedWarnings(const std::vector<std::string>& warnings);
 
 // One CSV cell, quoted when it must be.
 std::string csvCell(const std::string& text);
+// One CSV row of such cells, with its newline.
+std::string csvRow(const std::vector<std::string>& cells);
 
 // The rows of a CSV text (RFC 4180: quoted cells may hold commas, quotes and newlines).
 std::vector<std::vector<std::string>> parseCsv(const std::string& text);

@@ -105,6 +105,32 @@ std::vector<std::size_t> bedsMadeBy(const SweepPlan& plan, std::optional<std::si
   return beds;
 }
 
+namespace {
+
+// The replicates in a line, when some cell has more than one bed: "4 cells x 3 beds (box.seed; a
+// case is one bed of its cell, cells.csv): a cell about 3m10s of one core", each cell's cost its beds' sum.
+std::string cellsLine(const SweepPlan& plan) {
+  const std::vector<SweepCell>& cells = plan.spec.cells;
+  std::size_t fewest = plan.cases.size(), most = 0;
+  for (const SweepCell& c : cells) {
+    fewest = std::min(fewest, c.cases.size());
+    most = std::max(most, c.cases.size());
+  }
+  if (most < 2) return "";
+  double costliest = 0.0;
+  for (const SweepCell& c : cells) {
+    double seconds = 0.0;
+    for (const std::size_t k : c.cases) seconds += estimatedRunSeconds(plan.spec.cases[k].config, plan.speed.ns);
+    costliest = std::max(costliest, seconds);
+  }
+  const std::string beds = fewest == most ? std::to_string(most) : std::to_string(fewest) + "-" + std::to_string(most);
+  return std::to_string(cells.size()) + " cell" + (cells.size() == 1 ? "" : "s") + " x " + beds +
+         " beds (box.seed; a case is one bed of its cell, cells.csv), up to " + formatDuration(costliest) +
+         " of one core for a cell's runs\n";
+}
+
+}  // namespace
+
 std::string dryRunListing(const SweepPlan& plan, int jobs, int threads) {
   const double ns = plan.speed.ns;
   std::ostringstream out;
@@ -142,6 +168,7 @@ std::string dryRunListing(const SweepPlan& plan, int jobs, int threads) {
   const double total = (bedPhase + runSeconds / std::max(1, jobs)) / std::max(1, threads);
   out << plan.cases.size() << " cases: " << toRun << " to run, " << done << " done, " << failed << " failed; "
       << plan.beds.size() << " of " << plan.distinctBeds << " distinct beds to make\n";
+  if (const std::string cells = cellsLine(plan); !cells.empty()) out << cells;
   out << "estimated cost: " << formatDuration(total) << " wall on " << jobs << " jobs x " << threads
       << " threads (runs " << formatDuration(runSeconds) << " + beds " << formatDuration(bedSeconds)
       << " of single-core time at " << formatNumber(ns, 3) << " ns per particle-step: " << plan.speed.source

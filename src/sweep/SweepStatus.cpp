@@ -73,6 +73,41 @@ std::vector<BedAtAGlance> unfinishedBeds(const std::string& dir) {
   return beds;
 }
 
+// DIR/cells.csv's rows (sweep/CellTable.h); none when the sweep wrote no such file (an older wiggle).
+std::vector<CellAtAGlance> readCells(const std::string& dir) {
+  const std::string path = dir + "/cells.csv";
+  std::vector<CellAtAGlance> cells;
+  if (!fs::exists(path)) return cells;
+  const auto rows = parseCsv(readFile(path));
+  if (rows.empty()) throw Error(path + ": empty");
+  const std::vector<std::string>& header = rows.front();
+  auto column = [&](const char* name) {
+    const auto it = std::find(header.begin(), header.end(), name);
+    if (it == header.end()) throw Error(path + ": no column '" + name + "'");
+    return static_cast<std::size_t>(it - header.begin());
+  };
+  const std::size_t nameAt = column("cell"), bedsAt = column("beds"), nAt = column("n"), meanAt = column("vy_mean"),
+                    sdAt = column("vy_sd"), seAt = column("vy_se"), verdictAt = column("verdict");
+  for (std::size_t r = 1; r < rows.size(); ++r) {
+    const auto& row = rows[r];
+    if (row.size() < header.size()) throw Error(path + ": row " + std::to_string(r + 1) + " is short");
+    CellAtAGlance c;
+    c.name = row[nameAt];
+    c.beds = static_cast<std::size_t>(number(row[bedsAt]));
+    c.stats.n = static_cast<std::size_t>(number(row[nAt]));
+    c.stats.mean = number(row[meanAt]);
+    c.stats.sd = number(row[sdAt]);
+    c.stats.se = number(row[seAt]);
+    const std::optional<CellVerdict> verdict = choiceNamed<CellVerdict>(row[verdictAt]);
+    if (!verdict)
+      throw Error(path + ": row " + std::to_string(r + 1) + ": verdict '" + row[verdictAt] + "' is none of " +
+                  joinedNames(choiceNameList<CellVerdict>()));
+    c.stats.verdict = *verdict;
+    cells.push_back(std::move(c));
+  }
+  return cells;
+}
+
 // "2 beds to make, about 5h10m by the sweep's plan"
 std::string bedsToMakeText(const SweepStatus& s) {
   return std::to_string(s.bedsToMake) + " bed" + (s.bedsToMake > 1 ? "s" : "") + " to make, about " +
@@ -170,6 +205,7 @@ SweepStatus readSweepStatus(const std::string& dir) {
     s.cases.push_back(std::move(c));
   }
   s.beds = unfinishedBeds(dir);
+  s.cells = readCells(dir);
   s.casesAtOnce = std::max({1, s.jobs, running});  // array tasks: as many as run now
   if (!finishedWall.empty() || !runningWhole.empty()) {
     s.caseTime = finishedWall.empty() ? SweepStatus::CaseTime::RunningPace : SweepStatus::CaseTime::FinishedCases;
@@ -178,6 +214,10 @@ SweepStatus readSweepStatus(const std::string& dir) {
     s.etaSeconds = std::max(longestRunning, work / s.casesAtOnce);
   }
   return s;
+}
+
+bool SweepStatus::replicated() const {
+  return std::any_of(cells.begin(), cells.end(), [](const CellAtAGlance& c) { return c.beds > 1; });
 }
 
 std::string formatSweepStatus(const SweepStatus& s) {
@@ -219,6 +259,12 @@ std::string formatSweepStatus(const SweepStatus& s) {
                                                          "continues it)"
                                                        : ": not being made, nothing of it saved")
         << (b.report.empty() ? "" : ": " + b.report) << "\n";
+  if (s.replicated()) {
+    out << "cells (a case without its seed; V_y as the mean +- standard error over its beds; " << kCellVerdictRule
+        << "):\n";
+    for (const CellAtAGlance& c : s.cells)
+      out << "  cell     " << c.name << ": " << cellInWords(c.stats, c.beds) << "\n";
+  }
   if (running + pending == 0 && failed > 0)
     out << "nothing left to run but the " << failed << " failed case" << (failed > 1 ? "s" : "")
         << ": the same `wiggle sweep` command retries " << (failed > 1 ? "them" : "it") << "\n";

@@ -8,6 +8,7 @@
 
 #include "io/FileLock.h"
 #include "scenario/run/RunProgress.h"
+#include "sweep/CellTable.h"
 #include "sweep/ResultsTable.h"  // CaseStatus
 
 namespace wiggle {
@@ -45,11 +46,21 @@ struct BedAtAGlance {
   std::string report;  // the bed maker's last report in beds/bed-KEY.log ("[bed] pouring batch 3, ..."), if any
 };
 
+// A cell of the sweep (a case without its seed) as its cells.csv says (sweep/CellTable.h).
+struct CellAtAGlance {
+  std::string name;
+  std::size_t beds = 0;  // the beds the sweep gives it
+  CellStats stats;       // over those of its beds that have a V_y
+};
+
 struct SweepStatus {
   std::string dir;
   std::string name;  // the sweep's name, from sweep.json (empty when unknown)
   std::vector<CaseAtAGlance> cases;
   std::vector<BedAtAGlance> beds;  // in the order of their keys
+  // From DIR/cells.csv; empty when there is none (a sweep written by an older wiggle).
+  std::vector<CellAtAGlance> cells;
+  bool replicated() const;  // some cell has more than one bed: the cells are worth showing
   // Who holds the directory's lock now: a whole sweep (exclusive), one-case tasks (`--case`, shared)
   // or nobody.
   FileLock::Holders sweepLock = FileLock::Holders::None;

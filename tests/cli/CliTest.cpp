@@ -373,9 +373,13 @@ TEST_F(Cli, RunCheckPrintsWhatTheRunWouldBeAndWritesNothing) {
 TEST_F(Cli, RateMeasuresAFinishedRunAgainAndRecordsTheSettledRate) {
   Result r = wiggle("run " + quoted(tinyConfig()) + " --set run.duration=0.2 --out run --threads 1");
   ASSERT_EQ(r.status, 0) << r.err;
+  // Issue 80: a single run says what its number is worth; no study measured this bed's scatter.
+  EXPECT_NE(r.out.find("\none bed: scatter unknown for a "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("run `beds = N`"), std::string::npos) << r.out;
   const std::string summaryBefore = slurp(work_ / "run" / "summary.json");
   r = wiggle("rate run");
   ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("wiggle rate: one bed: scatter unknown for a "), std::string::npos) << r.err;
   std::istringstream table(r.out);
   std::string header, row;
   std::getline(table, header);
@@ -661,6 +665,45 @@ TEST_F(Cli, StatusSummarisesASweepDirectory) {
                      "status of a directory that is neither a sweep's nor a run's");
   expectOneLineError(wiggle("status " + quoted((root_ / "nowhere").string())), {"nowhere", "not a directory"},
                      "status of a missing directory");
+}
+
+// Issue 80: a sweep's cells (cells.csv) in `wiggle status`: each cell's mean +- se over its beds and
+// its verdict, a cell of one bed so far said as one bed and part-run; a sweep without cells.csv (an
+// older wiggle's) or with one bed a cell shows no cells. `--dry-run` counts the cells and beds.
+TEST_F(Cli, StatusListsTheCellsOfASweepWithBeds) {
+  const fs::path dir = root_ / "sweep";
+  for (const char* c : {"a1", "a2", "b1", "b2"}) fs::create_directories(dir / "cases" / c);
+  for (const char* c : {"a1", "a2", "b1"})
+    std::ofstream(dir / "cases" / c / "summary.json") << R"({"status": "ok", "vy": 0.1})";
+  std::ofstream(dir / "results.csv") << "case,run_dir,status,vy,vy_slope,wall_s,drive.period,box.seed,error\n"
+                                     << "a1,cases/a1,ok,-0.02,0,600,1,1,\n"
+                                     << "a2,cases/a2,ok,-0.03,0,600,1,2,\n"
+                                     << "b1,cases/b1,ok,0.09,0,600,5,1,\n"
+                                     << "b2,cases/b2,pending,,,,5,2,\n";
+  Result r = wiggle("status " + quoted(dir.string()));
+  EXPECT_EQ(r.out.find("cell "), std::string::npos) << r.out;  // no cells.csv: as before
+  std::ofstream(dir / "cells.csv") << "cell,drive.period,state,beds,n,vy_mean,vy_sd,vy_se,verdict,verdict_rule\n"
+                                   << "period=1,1,done,2,2,-0.025,0.007071067812,0.005,sinks,rule\n"
+                                   << "period=5,5,part-run,2,1,0.09,,,not resolved,rule\n";
+  r = wiggle("status " + quoted(dir.string()));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("rises / sinks when |vy_mean| >= 2 vy_se with n >= 2, else not resolved"), std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("cell     period=1: -0.025 +- 0.005 (2 beds): sinks\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("cell     period=5: +0.09 (one bed: its sign is not a verdict; part-run: 1 of its 2 beds)\n"),
+            std::string::npos)
+      << r.out;
+
+  const fs::path sweepFile = root_ / "beds.toml";
+  std::ofstream(sweepFile) << "[sweep]\nbeds = 3\n[grid.drive]\nperiod = [1, 5]\n[base.run]\nduration = 1\n";
+  r = wiggle("sweep " + quoted(sweepFile.string()) + " --out planned --dry-run");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("6 cases: 6 to run"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("2 cells x 3 beds (box.seed"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("period=5_seed=3"), std::string::npos) << r.out;
+  std::ofstream(sweepFile) << "[sweep]\nbeds = 0\n";
+  expectOneLineError(wiggle("sweep " + quoted(sweepFile.string()) + " --out planned --dry-run"), {"sweep.beds = 0"},
+                     "beds = 0");
 }
 
 // One truth for a case's state: results.csv says ok but the case's summary.json is garbage, so the

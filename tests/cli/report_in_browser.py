@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """`wiggle report` end to end, in a real browser (ctest report_in_browser, label browser):
 
-    tests/cli/report_in_browser.py WIGGLE_BINARY [--keep DIR] [--screenshot FILE]
+    tests/cli/report_in_browser.py WIGGLE_BINARY [--keep DIR] [--screenshot FILE] [--source DIR --build DIR]
 
 1. a tiny sweep (a 20 x 12 bed, 3 periods x 2 amplitudes, t = 0.4 each; A = 7 fails the geometry
    check at once, so the page shows failed cases and their errors), its own bed cache;
@@ -11,17 +11,28 @@
    size and not blank (its pixels vary; more than 2 % are not white);
 4. bad input: a directory that is not a sweep, an output in a missing directory and an output that
    is a directory each give one line and exit status 2 and write nothing; a report that fails
-   while rendering leaves the old page as it was and no temporary file.
-About 20 s of CPU. Exit status 0 when every check passes.
+   while rendering leaves the old page as it was and no temporary file;
+5. with --source and --build, beds as replicates by the docs' own commands (docs/SWEEPS.md, "Beds
+   as replicates": the ```sh block that runs configs/sweeps/beds_tiny.toml), run as written at the
+   root of a fresh copy of the tree (its tracked files, build/release linked to BUILD): cells.csv has
+   one row per cell with its two beds, its mean, standard error and verdict, and agrees with the
+   Python side's grouping of results.csv (wiggleplot.cells, the same rule); `wiggle status` lists the
+   cells; the figure of V_y against T has its error bars (2 standard errors); the report shows each
+   cell's mean +- se, beds and verdict, and Chromium draws it.
+About 30 s of CPU. Exit status 0 when every check passes.
 """
 import argparse
 import base64
 import csv
+import math
 import os
+import re
 import shutil
 import subprocess
 import sys
 import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
 
 SWEEP = """\
 [sweep]
@@ -99,11 +110,81 @@ def one_line_exit_2(result, what, naming):
           f"{what}: exit 2 with one line naming {naming!r} (exit {result.returncode}: {result.stderr.strip()!r})")
 
 
+BEDS_SWEEP = "configs/sweeps/beds_tiny.toml"
+
+
+def documented_beds_block(tree):
+    """The ```sh block of docs/SWEEPS.md that runs the beds example."""
+    with open(os.path.join(tree, "docs", "SWEEPS.md"), encoding="utf-8") as f:
+        text = f.read()
+    blocks = re.findall(r"```sh\n(.*?)```", text, re.S)
+    return next((b for b in blocks if BEDS_SWEEP in b), None)
+
+
+def beds_route(source, build, work):
+    """Step 5: the documented beds example in a fresh copy of the tree."""
+    sys.path.insert(0, os.path.join(HERE, "..", "docs"))
+    sys.path.insert(0, os.path.join(HERE, "..", "..", "python"))
+    from python_routes import fresh_copy
+    from wiggleplot import cells, readers, sweepplots
+    from wiggleplot.report import Report
+
+    tree, home = os.path.join(work, "clone"), os.path.join(work, "home")
+    os.makedirs(home)
+    fresh_copy(source, tree)
+    os.makedirs(os.path.join(tree, "build"), exist_ok=True)
+    os.symlink(build, os.path.join(tree, "build", "release"))
+    block = documented_beds_block(tree)
+    if not check(block is not None, f"docs/SWEEPS.md has a ```sh block running {BEDS_SWEEP}"):
+        return
+    done = subprocess.run(["/bin/sh", "-ec", block], cwd=tree, capture_output=True, text=True, timeout=900,
+                          env={"PATH": "/usr/bin:/bin", "HOME": home, "OMP_NUM_THREADS": "1", "MPLBACKEND": "Agg"})
+    check(done.returncode == 0, f"the documented block ran (exit {done.returncode}: {done.stderr.strip()[-800:]})")
+    out = re.search(r"--out (\S+)", block.split(BEDS_SWEEP, 1)[1]).group(1)
+    sweep_dir = os.path.join(tree, out)
+    check("2 cells x 2 beds" in done.stdout, "the dry run counts the cells and their beds")
+    path = os.path.join(sweep_dir, "cells.csv")
+    if not check(os.path.isfile(path), f"the sweep wrote {path}"):
+        return
+    written = readers.read_table(path)
+    grouped = cells.group_results(readers.read_results(sweep_dir))
+    check(list(written["cell"]) == ["period=0.25", "period=0.5"], f"one row per cell ({list(written['cell'])})")
+    check(list(written["beds"]) == [2, 2] and list(written["n"]) == [2, 2], "each cell has its two beds run")
+    check(all(v in cells.VERDICTS for v in written["verdict"]), f"each cell has a verdict ({list(written['verdict'])})")
+    check(set(written["verdict_rule"]) == {cells.RULE}, "the file states the rule")
+    agree = list(written) == list(grouped) and all(
+        (written[c] == grouped[c]).all() if written[c].dtype == object else
+        all(math.isclose(a, b, rel_tol=1e-8, abs_tol=1e-9) or (math.isnan(a) and math.isnan(b))
+            for a, b in zip(written[c], grouped[c]))
+        for c in written)
+    check(agree, "cells.csv (C++) and wiggleplot.cells' grouping of results.csv (Python) agree")
+    check("cell     period=0.25: " in done.stdout and "cell     period=0.5: " in done.stdout,
+          "wiggle status lists the cells")
+    check(os.path.isfile(os.path.join(sweep_dir, "figures", "rate_vs_period.png")), "wiggle plot drew V_y against T")
+    sweep = sweepplots.Sweep(sweep_dir, Report(quiet=True))
+    curve = next(iter(next(iter(sweepplots.curves_by(sweep, sweep.rows, "drive.amplitude").values())).values()))
+    check(list(curve[3]) == [2, 2] and (curve[4] > 0).all(), "the figure's points have their error bars (n = 2, se > 0)")
+    page = os.path.join(sweep_dir, "report.html")
+    with open(page, encoding="utf-8") as f:
+        text = f.read()
+    check("<h2>Cells</h2>" in text, "the report has the cells")
+    for i in range(2):
+        shown = f"{written['vy_mean'][i]:+.4g} +- {written['vy_se'][i]:.2g}"
+        check(shown in text, f"the report shows cell {written['cell'][i]}'s mean +- se ({shown})")
+    check(text.count('<td class="verdict">') == 2 and all(
+        f'<td class="verdict">{v}</td>' in text for v in written["verdict"]), "the report shows each cell's verdict")
+    png = os.path.join(work, "beds-report.png")
+    if screenshot(page, png, work):
+        check_screenshot(png)
+
+
 def main():
     p = argparse.ArgumentParser()
     p.add_argument("wiggle")
     p.add_argument("--keep", help="work in this directory and keep it")
     p.add_argument("--screenshot", help="also copy the screenshot here")
+    p.add_argument("--source", help="the source tree: run the documented beds example in a fresh copy of it")
+    p.add_argument("--build", help="the build directory the copy's build/release links to (with --source)")
     args = p.parse_args()
     work = args.keep or tempfile.mkdtemp(prefix="wiggle-report-test-")
     os.makedirs(work, exist_ok=True)
@@ -168,6 +249,9 @@ def main():
         with open(page, encoding="utf-8") as f:
             check(f.read() == before, "the old page is kept whole when a report fails")
         check(not any(".tmp." in n for n in os.listdir(sweep_dir)), "no temporary file left after the failure")
+
+        if args.source and args.build:
+            beds_route(os.path.abspath(args.source), os.path.abspath(args.build), os.path.join(work, "beds"))
     finally:
         if not args.keep:
             shutil.rmtree(work, ignore_errors=True)

@@ -232,6 +232,83 @@ TEST(SweepSpec, ShippedSweepFilesExpand) {
   }
 }
 
+// Beds as replicates (issue 80): `beds = N` runs every case on box.seed 1..N, the seed varying
+// fastest, and groups the cases into cells (a case without its seed).
+TEST(SweepSpec, BedsRunEveryCaseOnSeedsOneToNAndGroupThemIntoCells) {
+  const SweepSpec s = parseSweepSpec(R"(
+[sweep]
+beds = 3
+[grid.drive]
+period = [1, 5]
+)",
+                                     "sweep.toml");
+  EXPECT_EQ(s.settings.beds, 3);
+  EXPECT_EQ(names(s), (std::vector<std::string>{"period=1_seed=1", "period=1_seed=2", "period=1_seed=3",
+                                                "period=5_seed=1", "period=5_seed=2", "period=5_seed=3"}));
+  EXPECT_EQ(s.parameterKeys, (std::vector<std::string>{"drive.period", "box.seed"}));
+  for (std::size_t i = 0; i < 6; ++i) {
+    EXPECT_EQ(s.cases[i].config.box.seed, static_cast<std::uint64_t>(i % 3 + 1));
+    EXPECT_EQ(s.cases[i].cell, i / 3);
+  }
+  ASSERT_EQ(s.cells.size(), 2u);
+  EXPECT_EQ(s.cells[0].name, "period=1");
+  EXPECT_EQ(s.cells[1].name, "period=5");
+  EXPECT_EQ(s.cells[1].cases, (std::vector<std::size_t>{3, 4, 5}));
+
+  // Nothing else varying: one cell, "base"; a sweep without beds has cells of one case each.
+  const SweepSpec only = parseSweepSpec("[sweep]\nbeds = 2\n", "sweep.toml");
+  EXPECT_EQ(names(only), (std::vector<std::string>{"seed=1", "seed=2"}));
+  ASSERT_EQ(only.cells.size(), 1u);
+  EXPECT_EQ(only.cells[0].name, "base");
+  const SweepSpec plain = parseSweepSpec("[grid.drive]\nperiod = [1, 5]\n", "sweep.toml");
+  ASSERT_EQ(plain.cells.size(), 2u);
+  EXPECT_EQ(plain.cells[0].name, "period=1");
+  EXPECT_EQ(plain.cells[0].cases, std::vector<std::size_t>{0});
+  EXPECT_EQ(plain.settings.beds, 0);
+
+  // A box.seed grid of N seeds is the N beds, where the grid puts it; an unnamed [[case]]'s seed is
+  // left out of its cell's name.
+  const SweepSpec listed = parseSweepSpec(R"(
+[sweep]
+beds = 2
+[grid.box]
+seed = [4, 7]
+[grid.drive]
+period = [1, 5]
+)",
+                                          "sweep.toml");
+  EXPECT_EQ(names(listed),
+            (std::vector<std::string>{"seed=4_period=1", "seed=4_period=5", "seed=7_period=1", "seed=7_period=5"}));
+  ASSERT_EQ(listed.cells.size(), 2u);
+  EXPECT_EQ(listed.cells[0].name, "period=1");
+  EXPECT_EQ(listed.cells[0].cases, (std::vector<std::size_t>{0, 2}));
+  const SweepSpec caseSeeds = parseSweepSpec(R"(
+[[case]]
+box.seed = 1
+intruder.shape = "square"
+[[case]]
+box.seed = 2
+intruder.shape = "square"
+)",
+                                             "sweep.toml");
+  ASSERT_EQ(caseSeeds.cells.size(), 1u);
+  EXPECT_EQ(caseSeeds.cells[0].name, "shape=square");
+}
+
+TEST(SweepSpec, BedsThatContradictTheSeedsAreRefusedNamingBoth) {
+  auto expectError = [](const std::string& text, std::vector<std::string> words) {
+    const std::string e = sweepError(text);
+    EXPECT_EQ(e.find('\n'), std::string::npos) << e;
+    for (const std::string& w : words) EXPECT_NE(e.find(w), std::string::npos) << e << " lacks " << w;
+  };
+  expectError("[sweep]\nbeds = 0\n", {"sweep.toml:2", "sweep.beds = 0", "from 1"});
+  expectError("[sweep]\nbeds = 2.5\n", {"sweep.beds", "integer"});
+  expectError("[sweep]\nbeds = 3\n[grid.box]\nseed = [1, 2]\n", {"sweep.beds = 3", "lists 2 seeds", "agree"});
+  expectError("[sweep]\nbeds = 2\n[[case]]\nbox.seed = 5\n", {"sweep.beds = 2", "[[case]] 1", "box.seed"});
+  expectError("[sweep]\nbeds = 2\n[base.box]\nseed = 5\n", {"sweep.beds = 2", "[base]", "box.seed = 5"});
+  expectError("[sweep]\nbedz = 2\n", {"unknown key 'sweep.bedz'", "beds"});
+}
+
 TEST(SweepSpec, ExamplesInTheDocsParse) {
   // Each ```toml block of docs/CONFIG.md starts with "# run" or "# sweep" and must be accepted.
   std::ifstream in(std::string(WIGGLE_SOURCE_DIR) + "/docs/CONFIG.md");

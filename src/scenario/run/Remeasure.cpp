@@ -8,6 +8,7 @@
 #include "io/AtomicFile.h"
 #include "io/Config.h"
 #include "scenario/case/Case.h"
+#include "scenario/run/BedScatter.h"
 
 namespace wiggle {
 
@@ -47,6 +48,7 @@ Remeasured remeasureRun(const std::string& runDir, const RemeasureRequest& reque
   const RunRates rates = measureRunRates(run, samples, window, request.rule);
   r.rate = rates.rate;
   r.settled = rates.settled;
+  r.scatterNote = oneBedScatterNote(run.config, r.rate.tInitial, r.rate.tFinal);
   return r;
 }
 

@@ -35,6 +35,8 @@ struct Remeasured {
   // Without --to, a trajectory.csv that ends before run.duration (a LAMMPS run of the exported deck
   // for fewer steps, `lmp -var nsteps N`) is measured to its end, at this time; 0 otherwise.
   double cutShortAt = 0.0;
+  // What this one bed's V_y over the window is worth (scenario/run/BedScatter.h).
+  std::string scatterNote;
 };
 
 // Reads runDir/config.toml and runDir/trajectory.csv. Throws wiggle::Error naming the file or the
