@@ -140,7 +140,7 @@ TEST(Shape, ClumpExtentsMatchTheTable) {
 }
 
 TEST(Shape, EnvelopeWithinToleranceBothWays) {
-  for (const ShapeName kind : paperShapes()) {
+  for (const ShapeName kind : namedShapes()) {
     const std::string_view name = choiceName(kind);
     const Shape s = makeShape(kind);
     const Envelope e = envelope(s.outline, clumpFor(kind));
@@ -179,7 +179,7 @@ TEST(Shape, NoGrainLodgesBetweenSurfaceAtoms) {
   // their centre line: it sinks 0.7 - sqrt(0.49 - s^2/4) below their common tangent. Neighbours
   // must overlap (s < 0.5, so the shell has no opening at all) and the dimple must be shallow.
   double worst = 0.0, widest = 0.0;
-  for (const ShapeName kind : paperShapes()) {
+  for (const ShapeName kind : namedShapes()) {
     const std::string_view name = choiceName(kind);
     const ClumpAtoms atoms = buildClumpAtoms(makeShape(kind));
     const auto& a = atoms.surface;
@@ -202,7 +202,7 @@ TEST(Shape, NoGrainFitsInsideTheOutline) {
   // Any grain (radius >= 0.45) centred inside the outline overlaps some atom, so a bed maker that
   // checks overlaps with atoms can never leave a grain inside the (mostly hollow) clump.
   std::mt19937_64 rng(7);
-  for (const ShapeName kind : paperShapes()) {
+  for (const ShapeName kind : namedShapes()) {
     const std::string_view name = choiceName(kind);
     const Shape s = makeShape(kind);
     const ClumpDef c = clumpFor(kind);
@@ -347,7 +347,7 @@ TEST(Shape, GluedDiskMassIsAHexagonalPackingOfTouchingSpheres) {
 // number of shares of intruder.contact_mass = "atom", the same at any angle.
 TEST(Shape, GluedSphereBodyFillsEachOutlineWithTouchingSpheres) {
   const double r = 0.25;
-  for (const ShapeName kind : paperShapes()) {
+  for (const ShapeName kind : namedShapes()) {
     const Shape shape = makeShape(kind);
     const std::vector<OutlinePoint> body = gluedSphereBody(shape, r);
     const auto depth = [&](OutlinePoint p) {
@@ -389,6 +389,7 @@ TEST(Shape, GluedSphereBodyFillsEachOutlineWithTouchingSpheres) {
 
 // intruder.surface = "lattice": the upright outline filled with touching spheres on a square lattice
 // whose lowest row rests on the base, turned with the outline; its shell traced in order around it.
+// The paper's shapes: each has a base for that row to rest on, which another outline may not.
 TEST(Shape, LatticeBodyFillsTheUprightOutlineAndTurnsWithIt) {
   const double r = 0.25;
   for (const ShapeName kind : paperShapes()) {
@@ -461,7 +462,7 @@ TEST(Shape, GluedSurfaceHasTouchingAtomsAndStillHoldsGrainsOut) {
   // 0.35 for the smooth surface), so the envelope has cusps 0.25 deep, but no grain of radius
   // >= 0.45 can pass between two atoms nor sit inside the outline.
   std::mt19937_64 rng(11);
-  for (const ShapeName kind : paperShapes()) {
+  for (const ShapeName kind : namedShapes()) {
     const std::string_view name = choiceName(kind);
     IntruderDef def;
     def.shape = kind;
@@ -489,8 +490,8 @@ TEST(Shape, GluedSurfaceHasTouchingAtomsAndStillHoldsGrainsOut) {
 }
 
 TEST(Shape, ClumpIsCentredAndSymmetric) {
-  // Mirror-symmetric shapes give mirror-symmetric clumps about x = 0, so the clump's atoms have
-  // no net horizontal offset; atom count stays small.
+  // Mirror-symmetric shapes (the paper's five are) give mirror-symmetric clumps about x = 0, so the
+  // clump's atoms have no net horizontal offset; atom count stays small.
   for (const ShapeName kind : paperShapes()) {
     const std::string_view name = choiceName(kind);
     const ClumpDef c = clumpFor(kind);

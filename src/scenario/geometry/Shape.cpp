@@ -230,13 +230,19 @@ std::string fixed3(double value) {
 
 std::function<double(OutlinePoint)> depthFunction(const Shape& shape) { return outlineDepth(shape); }
 
-const std::vector<ShapeName>& paperShapes() {
+const std::vector<ShapeName>& namedShapes() {
   static const std::vector<ShapeName> shapes = [] {
     std::vector<ShapeName> all;
     for (std::size_t i = 0; i < ChoiceNames<ShapeName>::names.size(); ++i)
       if (static_cast<ShapeName>(i) != ShapeName::Polygon) all.push_back(static_cast<ShapeName>(i));
     return all;
   }();
+  return shapes;
+}
+
+const std::vector<ShapeName>& paperShapes() {
+  static const std::vector<ShapeName> shapes = {ShapeName::Disk, ShapeName::Square, ShapeName::RectNarrow,
+                                                ShapeName::RectWide, ShapeName::Triangle};
   return shapes;
 }
 

@@ -31,7 +31,14 @@ struct Shape {
   bool isDisk() const { return kind == ShapeName::Disk; }
 };
 
-// The paper's five shapes, in the order OS1..OS5: every ShapeName but Polygon.
+// Every named shape: every ShapeName but Polygon, in the table's order. A shape added to
+// ChoiceNames<ShapeName> joins it, and the tests that check every clump (tests/scenario/ShapeTest.cpp)
+// check its clump too.
+const std::vector<ShapeName>& namedShapes();
+
+// The paper's five shapes, in the order OS1..OS5: the rows of its Table 1 (docs/paper-table1.json).
+// A list of its own, not namedShapes(): a named shape the paper does not have stays out of `wiggle
+// model`'s Table 1 and of the tests held to the paper's rows.
 const std::vector<ShapeName>& paperShapes();
 
 // Builds the outline of a shape (Polygon takes `vertices`, in any order and frame) rotated by
