@@ -24,6 +24,7 @@ Usage: bench/busy_threads.py [--wiggle PATH] [--config configs/small.toml] [--st
 """
 import argparse
 import os
+import signal
 import subprocess
 import sys
 
@@ -80,14 +81,17 @@ def main():
     wiggle = args.wiggle
     log("busy_threads: %s, %d steps a run, CPUs %s; load average %.2f %.2f %.2f" %
         (os.path.relpath(args.config, REPO), args.steps, pair, *os.getloadavg()))
+    for name in ("busy", "quiet"):
+        os.makedirs(os.path.join(args.work_dir, name), exist_ok=True)
     log("bed: made once and cached ...")
     run_case(wiggle, args.config, [], 400, 1e-4, 1, os.path.join(args.work_dir, "bed"), env)
     # The runs see only the two CPUs; the hog holds the first of them.
     wrapper = os.path.join(args.work_dir, "on-two-cpus")
-    os.makedirs(args.work_dir, exist_ok=True)
     with open(wrapper, "w") as f:
         f.write("#!/bin/sh\nexec %s %s \"$@\"\n" % (" ".join(env_runs), os.path.abspath(wiggle)))
     os.chmod(wrapper, 0o755)
+    # A SIGTERM (a timeout) must not leave the hog running: it becomes an exception, and `finally` stops it.
+    signal.signal(signal.SIGTERM, lambda *_: sys.exit("busy_threads: terminated"))
     hog = subprocess.Popen(["taskset", "-c", str(cpus[0]), "/usr/bin/python3", "-c", "while True: pass"])
     try:
         busy = measure("busy", wrapper, args.config, args.steps,

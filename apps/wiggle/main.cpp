@@ -1,9 +1,6 @@
 // The `wiggle` command: parses the command line and hands each subcommand to its own file.
-#include <unistd.h>
-
 #include <csignal>
 #include <cstdio>
-#include <cstdlib>
 #include <exception>
 #include <string>
 #include <vector>
@@ -55,28 +52,7 @@ std::string parseErrorLine(const CLI::App& app, const CLI::ParseError& e) {
 
 }  // namespace
 
-namespace {
-// How long an OpenMP thread spins at a barrier before it sleeps. GCC's runtime spins about 3 ms by
-// default (GOMP_SPINCOUNT 300,000 with OMP_WAIT_POLICY unset): a thread whose partner was
-// descheduled burns its core for milliseconds, the core the partner needs. A step's barrier waits on
-// a quiet machine are tens of microseconds, which kOpenMpSpinCount spins cover before the thread
-// yields its core (docs/PERFORMANCE.md, "Threads on a busy machine"). The runtime reads its
-// environment once, as the program loads, before main (and before any initialiser of this program
-// could set it: the C library's own start-up restores the environment after the executable's
-// preinit array), so wiggle sets it and starts itself again, once. A value the user set, or
-// OMP_WAIT_POLICY, wins; a sweep's case processes inherit it; where the restart fails, the run goes
-// on with the runtime's default.
-constexpr const char* kOpenMpSpinCount = "20000";
-
-void startWithShortOpenMpSpin(char** argv) {
-  if (std::getenv("OMP_WAIT_POLICY") != nullptr || std::getenv("GOMP_SPINCOUNT") != nullptr) return;
-  if (::setenv("GOMP_SPINCOUNT", kOpenMpSpinCount, 0) != 0) return;
-  ::execv("/proc/self/exe", argv);
-}
-}  // namespace
-
 int main(int argc, char** argv) {
-  startWithShortOpenMpSpin(argv);
   // Over a file-size limit (ulimit -f) write() then fails with EFBIG and is reported in one line
   // like a full disk, instead of SIGXFSZ killing the process without a word. Inherited by the
   // sweep's children across exec.
@@ -91,9 +67,9 @@ int main(int argc, char** argv) {
       "                   matplotlib and numpy); WIGGLE_PYTHONPATH: where its wiggleplot package is\n"
       "  WIGGLE_SIMD      cap the force kernels' instruction set: scalar, avx2 or avx512 (default: the widest\n"
       "                   the CPU runs; every one gives the same bits, docs/PERFORMANCE.md)\n"
-      "  GOMP_SPINCOUNT   how long an OpenMP thread spins at a barrier before it sleeps (default here 20000,\n"
-      "                   about 0.1-0.2 ms; GCC's own default spins about 3 ms); OMP_WAIT_POLICY=passive: never\n"
-      "                   spin (slower on a quiet machine)");
+      "  OMP_WAIT_POLICY  passive: OpenMP threads sleep instead of spinning at barriers (slower on a quiet\n"
+      "                   machine, and beside other work too: a run sheds the threads that wait instead,\n"
+      "                   docs/PERFORMANCE.md)");
   wiggle::cli::addRunCommand(app);
   wiggle::cli::addSweepCommand(app);
   wiggle::cli::addModelCommand(app);

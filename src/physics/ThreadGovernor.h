@@ -38,7 +38,10 @@ double waitingShare(const StepProfile::RegionTotals& regions, int threads);
 // The rule alone, window by window, without clocks (tested on made-up windows).
 class ThreadRule {
  public:
-  static constexpr double kShedAbove = 0.5;      // waitingShare above which a thread is shed
+  // waitingShare above which a thread is shed: two threads on a quiet core pair wait 0.15-0.3 of what
+  // they can (the paper-depth preset) to 0.45-0.5 (the small bed); beside a CPU-bound process
+  // 0.9-1 (docs/PERFORMANCE.md, "Threads on a busy machine").
+  static constexpr double kShedAbove = 0.75;
   static constexpr double kIdleToRetake = 0.75;  // idle cores that make a retake worth trying at once
   static constexpr double kFirstRetry = 5.0;     // seconds after a change before a retake is tried
   static constexpr double kLongestRetry = 320.0; // the wait after failed trials doubles up to this
