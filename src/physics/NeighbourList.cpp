@@ -15,7 +15,6 @@ namespace wiggle {
 
 namespace {
 
-constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 
 // Particles binned into square-ish cells at least `cutoff` wide, periodic in x.
 struct CellGrid {
@@ -150,7 +149,7 @@ void NeighbourList::build(const ParticleStore& s, double boxWidth, double skin,
       const std::uint32_t j = partner[k];
       const std::uint32_t oi = newToOld.empty() ? i : newToOld[i];
       const std::uint32_t oj = newToOld.empty() ? j : newToOld[j];
-      if (oi == kNone || oj == kNone) continue;
+      if (oi == kNoOldIndex || oj == kNoOldIndex) continue;
       const std::uint32_t a = std::min(oi, oj), b = std::max(oi, oj);
       if (a >= oldRows) continue;
       for (std::uint32_t m = old.rowStart[a]; m < old.rowStart[a + 1]; ++m) {

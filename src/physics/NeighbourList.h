@@ -21,6 +21,10 @@ namespace wiggle {
 
 struct ParticleStore;
 
+// In a map from new particle indices to old ones (NeighbourList::build's newToOld, World's pending
+// map): a particle that is new, with no old index and no history.
+inline constexpr std::uint32_t kNoOldIndex = 0xffffffffu;
+
 // Rows per force block for a box of this width: about four rows of grains, so that cross pairs
 // (those reaching into the next block) are around a tenth of all pairs.
 std::uint32_t forceBlockRows(double boxWidth);
