@@ -18,6 +18,7 @@ int ThreadRule::next(int threads, int ceiling, const ThreadWindow& window) {
   const bool trial = std::exchange(trial_, false);
   if (threads > ceiling) {
     sinceChange_ = 0.0;
+    reason_ = ThreadChangeReason::Ceiling;
     return ceiling;
   }
   if (threads > 1 && window.waitShare > kShedAbove) {
@@ -30,6 +31,7 @@ int ThreadRule::next(int threads, int ceiling, const ThreadWindow& window) {
       retryAfter_ = kFirstRetry;
     }
     sinceChange_ = 0.0;
+    reason_ = ThreadChangeReason::Waiting;
     return threads - 1;
   }
   if (trial) {  // the retake held
@@ -46,6 +48,7 @@ int ThreadRule::next(int threads, int ceiling, const ThreadWindow& window) {
   trial_ = true;
   trialOnIdle_ = idle;
   sinceChange_ = 0.0;
+  reason_ = idle ? ThreadChangeReason::IdleCore : ThreadChangeReason::Trial;
   return std::min(ceiling, threads + more);
 }
 
@@ -58,7 +61,7 @@ int ThreadGovernor::beforeStep(std::uint64_t step, int ceiling, StepProfile& pro
       int threads = ceiling;
       for (const auto& [from, count] : schedule_)
         if (step >= from) threads = std::clamp(count, 1, ceiling);
-      if (threads_ != 0 && threads != threads_) change(step, threads);
+      if (threads_ != 0 && threads != threads_) change(step, threads, ThreadChangeReason::Scheduled);
       threads_ = threads;
       return threads_;
     }
@@ -113,13 +116,13 @@ void ThreadGovernor::endWindow(std::uint64_t step, Clock::time_point now, const 
   if (secondsAt_.size() <= static_cast<std::size_t>(threads_)) secondsAt_.resize(threads_ + 1, 0.0);
   secondsAt_[threads_] += window.seconds;
   const int next = rule_.next(threads_, ceiling_, window);
-  if (next != threads_) change(step, next);
+  if (next != threads_) change(step, next, rule_.reason());
   startWindow(now, profile);
 }
 
-void ThreadGovernor::change(std::uint64_t step, int to) {
+void ThreadGovernor::change(std::uint64_t step, int to, ThreadChangeReason reason) {
   const double seconds = start_ == Clock::time_point{} ? 0.0 : std::chrono::duration<double>(Clock::now() - start_).count();
-  changes_.push_back({seconds, step, threads_, to});
+  changes_.push_back({seconds, step, threads_, to, reason});
   threads_ = to;
 }
 

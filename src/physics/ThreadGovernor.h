@@ -23,6 +23,15 @@ enum class ThreadPolicy : std::uint8_t {
   Scheduled,  // the counts of ThreadGovernor::schedule at given steps: tests of the switching itself
 };
 
+// Why the thread count changed: for the run's log.
+enum class ThreadChangeReason : std::uint8_t {
+  Waiting,    // the threads waited more than ThreadRule::kShedAbove: a thread shed
+  IdleCore,   // a core stood idle: a retake
+  Trial,      // no idle core seen, the retry time passed: a retake to try
+  Ceiling,    // the run's own thread count fell below it
+  Scheduled,  // ThreadPolicy::Scheduled
+};
+
 // What the governor measured over one stretch of the run at one thread count.
 struct ThreadWindow {
   double seconds = 0.0;    // the stretch's wall time
@@ -48,6 +57,8 @@ class ThreadRule {
 
   // The thread count for the next window, after a window measured at `threads` (of at most `ceiling`).
   int next(int threads, int ceiling, const ThreadWindow& window);
+  // Why the last change that next() made was made.
+  ThreadChangeReason reason() const { return reason_; }
 
  private:
   double sinceChange_ = 0.0;
@@ -55,6 +66,7 @@ class ThreadRule {
   bool trial_ = false;        // the window just measured was a retake's first: it decides whether it holds
   bool trialOnIdle_ = false;  // that retake was made because cores stood idle
   bool idleMisled_ = false;   // a retake on idle cores failed: wait for the retry time until one holds
+  ThreadChangeReason reason_ = ThreadChangeReason::Waiting;
 };
 
 // One change of the thread count, for the run's log and summary.
@@ -62,6 +74,7 @@ struct ThreadChange {
   double seconds = 0.0;  // since the governor's first step
   std::uint64_t step = 0;
   int from = 0, to = 0;
+  ThreadChangeReason reason = ThreadChangeReason::Waiting;
 };
 
 class ThreadGovernor {
@@ -91,7 +104,7 @@ class ThreadGovernor {
  private:
   void startWindow(Clock::time_point now, const StepProfile& profile);
   void endWindow(std::uint64_t step, Clock::time_point now, const StepProfile& profile);
-  void change(std::uint64_t step, int to);
+  void change(std::uint64_t step, int to, ThreadChangeReason reason);
 
   ThreadPolicy policy_ = ThreadPolicy::Adaptive;
   std::vector<std::pair<std::uint64_t, int>> schedule_;

@@ -54,6 +54,7 @@ TEST(ThreadGovernor, TakesAThreadBackSoonWhenACoreStandsIdle) {
   ThreadRule rule;
   EXPECT_EQ(rule.next(2, 2, window(0.5, 0.9)), 1);
   EXPECT_NEAR(secondsToRetake(rule, 0.5, 0.97), ThreadRule::kFirstRetry, 1e-12);
+  EXPECT_EQ(rule.reason(), ThreadChangeReason::IdleCore);
   // The trial finds the threads working: they stay.
   EXPECT_EQ(rule.next(2, 2, window(0.5, 0.1, 0.0)), 2);
 }
@@ -64,7 +65,9 @@ TEST(ThreadGovernor, WithNoIdleCoreTriesAgainEverMoreRarely) {
   ThreadRule rule;
   EXPECT_EQ(rule.next(2, 2, window(1.0, 0.9)), 1);
   EXPECT_NEAR(secondsToRetake(rule, 1.0, 0.0), ThreadRule::kFirstRetry, 1e-12);
+  EXPECT_EQ(rule.reason(), ThreadChangeReason::Trial);
   EXPECT_EQ(rule.next(2, 2, window(1.0, 0.9, 0.0)), 1);  // it failed
+  EXPECT_EQ(rule.reason(), ThreadChangeReason::Waiting);
   EXPECT_NEAR(secondsToRetake(rule, 1.0, 0.0), 2 * ThreadRule::kFirstRetry, 1e-12);
   EXPECT_EQ(rule.next(2, 2, window(1.0, 0.2, 0.0)), 2);  // it held: the threads are not kept waiting
 }

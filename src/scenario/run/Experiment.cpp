@@ -293,15 +293,24 @@ void saveProgress(const std::string& dir, const std::string& configToml, const W
   writeTrajectoryCsv(dir + "/trajectory.csv", state.samples);
 }
 
+const char* threadChangeWords(ThreadChangeReason reason) {
+  switch (reason) {
+    case ThreadChangeReason::Waiting: return "its threads waited for each other (another process holds a core)";
+    case ThreadChangeReason::IdleCore: return "a core stands idle again";
+    case ThreadChangeReason::Trial: return "trying one more thread (no core stood idle; kept if its threads do not wait)";
+    case ThreadChangeReason::Ceiling: return "the run's thread count";
+    case ThreadChangeReason::Scheduled: return "as scheduled";
+  }
+  return "";
+}
+
 // The thread governor's changes since the last call, a log line each (physics/ThreadGovernor.h).
 void logThreadChanges(const World& world, LogFile& log, std::size_t& logged) {
   const std::vector<ThreadChange>& changes = world.threadGovernor().changes();
   for (; logged < changes.size(); ++logged) {
     const ThreadChange& c = changes[logged];
     log.line("threads " + std::to_string(c.from) + " -> " + std::to_string(c.to) + " at step " +
-             std::to_string(c.step) +
-             (c.to < c.from ? ": its threads waited for each other (another process holds a core)"
-                            : ": a core stands idle again"));
+             std::to_string(c.step) + ": " + threadChangeWords(c.reason));
   }
 }
 
