@@ -20,7 +20,7 @@ from findings_table import FINDING_SOURCES, against_findings, paper_findings
 from scatter import (PAPER_SIDE, SHAPE_NAMES, beds_z_text, clock_scatter, clock_sigma, depth_sigma,
                      findings_clock_sigma, paper_reading, scatter_text, scatter_words, short_name, student_note,
                      z_of)
-from table1_blocks import (CROSSING_WORDS, HALVES, PAPER_BOX_FIGURE, against_paper, bracket_text, course, crossings,
+from table1_blocks import (paper_box_shapes, CROSSING_WORDS, HALVES, PAPER_BOX_FIGURE, against_paper, bracket_text, course, crossings,
                            first_rise, halves_text, paper_box_cases, paper_box_cells)
 
 # The paper's own words on its triangle, beside its Table 1's 4-5: (quoted, where they stand in the paper)
@@ -405,10 +405,7 @@ def answer_per_shape(spec):
     paper's Table 1 bracket; if not, what each measured factor moved at the cell that disagrees, and
     what is left; and how its rates hold through the window."""
     lines, shown = [], []
-    for shape in SHAPES:
-        done, on_way = paper_box_cells(shape)
-        if not done and not on_way:
-            continue
+    for shape, done, on_way in paper_box_shapes():
         shown.append(shape)
         sig = clock_sigma(shape)
         runs = [(t, f"T = {t:g} {beds_z_text(vs, shape)}, {paper_reading(vs, shape, t)}") for t, vs in done.items()]

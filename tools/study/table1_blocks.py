@@ -137,6 +137,15 @@ def paper_box_cells(shape):
             [c for f in box for c in unfinished(f) if c.get("intruder.shape") == shape and c.get("drive.amplitude") == 5.0])
 
 
+def paper_box_shapes():
+    """(shape, finished cells, unfinished cases) for each shape with a case in the paper's box, in
+    SHAPES' order."""
+    for shape in SHAPES:
+        done, on_way = paper_box_cells(shape)
+        if done or on_way:
+            yield shape, done, on_way
+
+
 # How a run's rate holds through the paper's window: V_y by the paper's rule over its halves
 HALVES = ((100.0, 500.0), (500.0, 1000.0))
 PAPER_BOX_FIGURE = "`wiggle plot results/paper_box/t1000 --out DIR` draws the trajectories, DIR/trajectories.png"
@@ -159,10 +168,7 @@ def answer_paper_box(spec):
             f"the paper's box: V_y over {halves_text()}", "the paper's box: bracket", "the paper's range?"]
     lines = head_lines(head)
     shown = []
-    for shape in SHAPES:
-        done, on_way = paper_box_cells(shape)
-        if not done and not on_way:
-            continue
+    for shape, done, on_way in paper_box_shapes():
         shown.append(shape)
         sig = clock_sigma(shape)
         periods_run = [(t, f"{beds_z_text(vs, shape)}, {paper_reading(vs, shape, t)}") for t, vs in done.items()]
