@@ -3,7 +3,7 @@
 
     tools/study/collect.py SWEEP_DIR DEST [--fields] [--carry]
 
-Copies SWEEP_DIR/results.csv and sweep.log, and for every case directory the files that are the
+Copies SWEEP_DIR/results.csv, cells.csv (where the sweep wrote one) and sweep.log, and for every case directory the files that are the
 result and how it was made: config.toml, summary.json, trajectory.csv, phase_rates.csv, model.json,
 log.txt (a case still running contributes its config and log only); with --fields also each case's
 fields.csv (about 2 MB at the default grid), for a study whose result is its field maps. Checkpoints, dumps and beds
@@ -139,6 +139,8 @@ def main():
         sys.exit(2)
     os.makedirs(dest, exist_ok=True)
     shutil.copy2(os.path.join(src, "results.csv"), os.path.join(dest, "results.csv"))
+    if os.path.isfile(os.path.join(src, "cells.csv")):  # a sweep of this wiggle: its cells beside the rows
+        shutil.copy2(os.path.join(src, "cells.csv"), os.path.join(dest, "cells.csv"))
     write_lines_atomically(os.path.join(dest, "sweep.log"),
                            merged_log(read_lines(os.path.join(dest, "sweep.log")), read_lines(os.path.join(src, "sweep.log"))))
     copied = dropped = 0

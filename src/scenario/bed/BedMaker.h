@@ -13,6 +13,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/BinaryStream.h"
 #include "core/Choice.h"
 #include "io/RunConfig.h"
 #include "physics/World.h"
@@ -105,5 +106,51 @@ World parseCachedBed(const std::string& file, const std::string& name, const std
 // given its engine parameters (World::setParameters), never made; `note` says when it was made for
 // other parameters.
 CachedBed obtainBed(const RunConfig& config, const ClumpDef& clump, const BedProgress& progress = {});
+
+// --- The maker's stages, for the bed cache (BedCache.cpp), which saves a bed in the making at the
+// points where it can stop and continues it from there.
+
+// The bed every carved bed of a config is cut from: the seed's, poured without an intruder.
+inline const ClumpDef kNoIntruder{};
+
+// A bed in the making: the World and the maker's bookkeeping at a point where the maker can stop
+// and later continue with the same bits as if it never had (the end of a settling or relaxing
+// chunk). Saved in the cache directory beside the finished beds (bedPartialPath).
+struct PartialBed {
+  World world;
+  BedStage stage = BedStage::Pouring;
+  int batch = 0;               // batches poured so far
+  std::uint64_t serial = 0;    // grains offered so far (the random streams' index)
+  std::uint64_t steps = 0;     // steps of bed making so far
+  std::uint64_t batchSteps = 0, batchLimit = 0;  // of the batch settling now
+  double surface = 0.0;        // free surface when the last batch had settled
+  std::vector<double> recent;  // relaxing: kinetic energy per grain of the last time unit's checks
+
+  void save(BinaryWriter& out, const std::string& key) const {
+    out.string(key);
+    out.value(stage);
+    out.value<std::int64_t>(batch);
+    for (std::uint64_t v : {serial, steps, batchSteps, batchLimit}) out.value(v);
+    out.value(surface);
+    out.array(recent);
+    world.save(out);
+  }
+};
+
+// The partial bed saved in `file` (its text; `name` for errors), for the parameters of `key`.
+PartialBed parsePartialBed(const std::string& file, const std::string& name, const std::string& key);
+// The empty box: its base row, the intruder (when `clump` has atoms) held at its place.
+PartialBed startBed(const RunConfig& config, const ClumpDef& clump);
+
+// Called at every point where the making can stop and continue (PartialBed): saves it when due.
+using BedSaver = std::function<void(const PartialBed&)>;
+
+// Carries a bed in the making through to the end: pouring and settling batches until the free
+// surface reaches the target, levelling it there, relaxing to rest.
+World finishBed(const RunConfig& config, const ClumpDef& clump, PartialBed p, const BedProgress& progress,
+                const BedSaver& save);
+// bed.cavity = "carved": the intruder's bed cut from `base` (its seed's bed without an intruder).
+World carveBed(const RunConfig& config, const ClumpDef& clump, World base, const BedProgress& progress,
+               const BedSaver& save);
 
 }  // namespace wiggle
