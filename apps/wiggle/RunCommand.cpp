@@ -35,7 +35,7 @@ struct RunArgs {
 
 // `run --check`: everything `wiggle run` checks before it starts (the config, the outline, the
 // clump, the geometry, the output directory), then what the run would be, without running it.
-void printCheck(const RunConfig& c, const std::string& out, bool resume) {
+void printCheck(const RunConfig& c, const std::string& out, bool resume, int threads) {
   const Case run = prepareCase(c);
   const ClumpDef& clump = run.clump;
   const SpeedBasis speed = speedBasis(c);
@@ -71,6 +71,11 @@ void printCheck(const RunConfig& c, const std::string& out, bool resume) {
   std::printf("run: %llu steps (t = %g at dt = %g), about %s on one core at %.3g ns per particle-step (%s)\n",
               static_cast<unsigned long long>(steps), c.run.duration, c.run.dt,
               formatDuration(estimatedRunSeconds(c, ns)).c_str(), ns, speed.source.c_str());
+  if (threads > 1) {
+    const ThreadScaling scaling = threadScaling(estimatedParticles(c), threads);
+    std::printf("at %d threads: about %s (%s)\n", threads,
+                formatDuration(estimatedRunSeconds(c, ns) / scaling.speedUp).c_str(), scaling.words.c_str());
+  }
   const bool finished = std::filesystem::exists(out + "/summary.json");
   const bool started = std::filesystem::exists(checkpointPath(out));
   std::printf("out: %s (%s)\n", out.c_str(),
@@ -125,7 +130,7 @@ void addRunCommand(CLI::App& app) {
     const RunConfig config = loadRunConfig(path, args->sets);
     if (args->check) {
       requireWritableOutputDirectory("--out", args->out);
-      printCheck(config, args->out, args->resume);
+      printCheck(config, args->out, args->resume, args->threads > 0 ? args->threads : idleCores());
       return;
     }
     RunOptions options;

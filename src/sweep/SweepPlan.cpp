@@ -162,17 +162,21 @@ std::string dryRunListing(const SweepPlan& plan, int jobs, int threads) {
     out << "  bed " << b.key << " (first needed by " << plan.spec.cases[b.firstCase].name << "): est. "
         << formatDuration(b.estimatedSeconds) << "\n";
   }
-  // Beds are made in parallel first, one per job; then the cases share the jobs.
+  // Beds are made in parallel first, one per job; then the cases share the jobs; each job's threads
+  // speed it up as the committed table measured for the sweep's first case's bed size.
   const double bedPhase = plan.beds.empty() ? 0.0
                                             : std::max(longestBed, bedSeconds / std::min<double>(jobs, plan.beds.size()));
-  const double total = (bedPhase + runSeconds / std::max(1, jobs)) / std::max(1, threads);
+  const ThreadScaling scaling =
+      threadScaling(plan.cases.empty() ? 0.0 : estimatedParticles(plan.spec.cases[plan.cases.front().index].config),
+                    threads);
+  const double total = (bedPhase + runSeconds / std::max(1, jobs)) / scaling.speedUp;
   out << plan.cases.size() << " cases: " << toRun << " to run, " << done << " done, " << failed << " failed; "
       << plan.beds.size() << " of " << plan.distinctBeds << " distinct beds to make\n";
   if (const std::string cells = cellsLine(plan); !cells.empty()) out << cells;
   out << "estimated cost: " << formatDuration(total) << " wall on " << jobs << " jobs x " << threads
       << " threads (runs " << formatDuration(runSeconds) << " + beds " << formatDuration(bedSeconds)
       << " of single-core time at " << formatNumber(ns, 3) << " ns per particle-step: " << plan.speed.source
-      << (threads > 1 ? "; assumes threads scale perfectly" : "") << ")\n";
+      << (threads > 1 ? "; " + std::to_string(threads) + " threads: " + scaling.words : "") << ")\n";
   return out.str();
 }
 

@@ -53,6 +53,14 @@ TEST(CostTable, ParsesTheRowsOfWiggleAtOneThreadAndInterpolatesBetweenBeds) {
       "small,3000,1,lammps,70.0,69,71,3,\"CPU X, 2 vCPUs\",run A\n");
   ASSERT_EQ(t.rows.size(), 2u);
   EXPECT_EQ(t.machine, "CPU X, 2 vCPUs");
+  // The measured scaling: 20 / 12 at two threads on the small bed; the one bed measured is every
+  // bed's figure; a count the table lacks is counted as the largest below it.
+  EXPECT_EQ(t.measuredThreads(1), 1);
+  EXPECT_EQ(t.measuredThreads(16), 2);
+  EXPECT_DOUBLE_EQ(t.speedUp(3000.0, 1), 1.0);
+  EXPECT_DOUBLE_EQ(t.speedUp(3000.0, 2), 20.0 / 12.0);
+  EXPECT_DOUBLE_EQ(t.speedUp(3000.0, 16), 20.0 / 12.0);
+  EXPECT_DOUBLE_EQ(t.speedUp(60000.0, 2), 40.0 / 12.0);  // a bed size it lacks at two: the one it has
   EXPECT_DOUBLE_EQ(t.nsPerParticleStep(1000.0), 20.0);     // below the smallest bed: its figure
   EXPECT_DOUBLE_EQ(t.nsPerParticleStep(31500.0), 30.0);    // half way
   EXPECT_DOUBLE_EQ(t.nsPerParticleStep(100000.0), 40.0);   // above the largest
@@ -87,7 +95,7 @@ TEST_F(SpeedRecordTest, TheMedianOfTheLastNineOneThreadRunsOnThisCpuByThisBuild)
   EXPECT_FALSE(m->sameSize);  // no line says its bed's size
   EXPECT_EQ(speedBasis(config_).ns, 80.0);
   EXPECT_NE(speedBasis(config_).source.find("last 9 one-thread runs of a " + kind +
-                                            " build (none yet on a bed of this size)"),
+                                            " build (none yet on a bed of this size;"),
             std::string::npos)
       << speedBasis(config_).source;
 }
@@ -136,6 +144,21 @@ TEST_F(SpeedRecordTest, RunsOfBedsOfTheEstimatesSizeComeFirst) {
   EXPECT_FALSE(between->sameSize);
   EXPECT_EQ(between->runs, 4u);
   EXPECT_DOUBLE_EQ(between->nsPerParticleStep, 33.0);
+}
+
+// A machine that has run only small beds says how fast it is; the cost table says how a bigger bed
+// slows every machine: each run counts scaled to the estimate's size by the table's curve.
+TEST_F(SpeedRecordTest, RunsOfAnotherSizeCountScaledByTheTablesSizeDependence) {
+  const std::string simd = simdLevelName(defaultSimdLevel());
+  recordRunSpeed(config_, 1, 24.0, 24.0, simd, 3000);
+  recordRunSpeed(config_, 1, 26.0, 26.0, simd, 3000);
+  const auto curve = [](double n) { return n <= 3000.0 ? 20.0 : 40.0; };  // the table: twice the cost at 60,000
+  const auto paper = measuredSpeed(config_, 60000.0, curve);
+  ASSERT_TRUE(paper);
+  EXPECT_FALSE(paper->sameSize);
+  EXPECT_DOUBLE_EQ(paper->nsPerParticleStep, 50.0);  // 25 here where the table has 20: 50 where it has 40
+  EXPECT_DOUBLE_EQ(measuredSpeed(config_, 60000.0)->nsPerParticleStep, 25.0);  // unscaled without the curve
+  EXPECT_DOUBLE_EQ(measuredSpeed(config_, 3000.0, curve)->nsPerParticleStep, 25.0);
 }
 
 }  // namespace

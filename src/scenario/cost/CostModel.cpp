@@ -56,7 +56,7 @@ CostTable parseCostTable(const std::string& csv) {
     if (f.size() != head.size())
       throw Error("cost table: line " + std::to_string(number) + " has " + std::to_string(f.size()) + " fields, not " +
                   std::to_string(head.size()));
-    if (f[code] != "wiggle" || f[threads] != "1") continue;
+    if (f[code] != "wiggle") continue;
     CostTable::Row row;
     try {
       row.particles = std::stod(f[particles]);
@@ -66,25 +66,50 @@ CostTable parseCostTable(const std::string& csv) {
     }
     if (!(row.particles > 0.0) || !(row.nsPerParticleStep > 0.0))
       throw Error("cost table: line " + std::to_string(number) + ": particles and ns_per_particle_step must be > 0");
-    table.rows.push_back(row);
+    int count = 0;
+    try {
+      count = std::stoi(f[threads]);
+    } catch (const std::exception&) {
+    }
+    if (count < 1) throw Error("cost table: line " + std::to_string(number) + ": threads is not a count");
+    (count == 1 ? table.rows : table.rowsAtThreads[count]).push_back(row);
     table.machine = f[machine];
     table.source = f[source];
   }
   if (table.rows.empty()) throw Error("cost table: no row of wiggle at one thread");
-  std::sort(table.rows.begin(), table.rows.end(),
-            [](const CostTable::Row& a, const CostTable::Row& b) { return a.particles < b.particles; });
+  const auto byParticles = [](const CostTable::Row& a, const CostTable::Row& b) { return a.particles < b.particles; };
+  std::sort(table.rows.begin(), table.rows.end(), byParticles);
+  for (auto& [count, rows] : table.rowsAtThreads) std::sort(rows.begin(), rows.end(), byParticles);
   return table;
 }
 
-double CostTable::nsPerParticleStep(double particles) const {
+namespace {
+// Linear between the rows' beds (sorted by particles), the end rows' figures beyond them.
+double interpolated(const std::vector<CostTable::Row>& rows, double particles) {
   if (particles <= rows.front().particles) return rows.front().nsPerParticleStep;
   for (std::size_t i = 1; i < rows.size(); ++i)
     if (particles <= rows[i].particles) {
-      const Row &a = rows[i - 1], &b = rows[i];
+      const CostTable::Row &a = rows[i - 1], &b = rows[i];
       return a.nsPerParticleStep +
              (b.nsPerParticleStep - a.nsPerParticleStep) * (particles - a.particles) / (b.particles - a.particles);
     }
   return rows.back().nsPerParticleStep;
+}
+}  // namespace
+
+double CostTable::nsPerParticleStep(double particles) const { return interpolated(rows, particles); }
+
+int CostTable::measuredThreads(int threads) const {
+  int measured = 1;
+  for (const auto& [count, rowsOfCount] : rowsAtThreads)
+    if (count <= threads) measured = count;
+  return measured;
+}
+
+double CostTable::speedUp(double particles, int threads) const {
+  const int measured = measuredThreads(threads);
+  if (measured == 1) return 1.0;
+  return nsPerParticleStep(particles) / interpolated(rowsAtThreads.at(measured), particles);
 }
 
 const CostTable& committedCostTable() {
@@ -95,19 +120,37 @@ const CostTable& committedCostTable() {
 SpeedBasis speedBasis(const RunConfig& config) {
   SpeedBasis basis;
   const double particles = estimatedParticles(config);
-  if (const std::optional<MeasuredSpeed> m = measuredSpeed(config, particles)) {
+  const CostTable& table = committedCostTable();
+  const auto nsOfSize = [&table](double n) { return table.nsPerParticleStep(n); };
+  if (const std::optional<MeasuredSpeed> m = measuredSpeed(config, particles, nsOfSize)) {
     basis.ns = m->nsPerParticleStep;
     basis.source = "the median of this machine's last " + std::to_string(m->runs) + " one-thread run" +
                    (m->runs == 1 ? "" : "s") + " of a " + m->buildKind + " build" +
-                   (m->sameSize ? " on beds of this size" : " (none yet on a bed of this size)") + " (" + m->path + ")";
+                   (m->sameSize ? " on beds of this size"
+                                : " (none yet on a bed of this size; a run of a known size counts scaled to it by bench/costs.csv's size dependence)") +
+                   " (" + m->path + ")";
   } else {
-    const CostTable& table = committedCostTable();
     basis.ns = table.nsPerParticleStep(particles);
     basis.source = "no one-thread run of a " + speedBuildKind() +
                    " build recorded on this machine yet, so the committed cost table's figure for a bed of this "
                    "size (bench/costs.csv: " + table.machine.substr(0, table.machine.find(',')) + "; docs/PERFORMANCE.md)";
   }
   return basis;
+}
+
+ThreadScaling threadScaling(double particles, int threads) {
+  const CostTable& table = committedCostTable();
+  ThreadScaling s;
+  s.speedUp = table.speedUp(particles, threads);
+  if (threads <= 1) return s;
+  const int measured = table.measuredThreads(threads);
+  s.words = measured == 1 ? "bench/costs.csv measured no thread count above one: counted as one thread"
+                          : formatNumber(s.speedUp, 3) + " x one thread at " + std::to_string(measured) +
+                                " threads on a bed of this size, as bench/costs.csv measured it" +
+                                (measured < threads ? " (more threads not measured: counted as " +
+                                                          std::to_string(measured) + ")"
+                                                    : "");
+  return s;
 }
 
 double estimatedParticles(const RunConfig& config) { return estimatedGrains(config) + config.box.width; }

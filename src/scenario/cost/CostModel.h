@@ -2,6 +2,7 @@
 // What a case will cost and what getting its bed takes, before anything runs: `wiggle run --check`,
 // a sweep's plan and dry run, its ETA before a case has finished, and `wiggle boundary --dry-run`
 // all ask here (docs/SWEEPS.md, "Cost estimate").
+#include <map>
 #include <string>
 #include <vector>
 
@@ -40,20 +41,25 @@ struct CostModel {
 };
 
 // The committed cost table, bench/costs.csv, as the build embedded it (CMakeLists.txt): the bench
-// script's medians per bed and thread count on one named machine (docs/PERFORMANCE.md). Only the
-// rows of wiggle at one thread are kept: the figure every estimate starts from (a sweep's divides it
-// by its threads).
+// script's medians per bed and thread count on one named machine (docs/PERFORMANCE.md): wiggle's
+// rows, at one thread (the figure every estimate starts from) and at more (how it scales).
 struct CostTable {
   struct Row {
     double particles = 0.0;
     double nsPerParticleStep = 0.0;
   };
-  std::vector<Row> rows;  // by particles, ascending
+  std::vector<Row> rows;  // one thread, by particles, ascending
+  std::map<int, std::vector<Row>> rowsAtThreads;  // two threads or more, by count, each by particles
   std::string machine;
   std::string source;
-  // The figure for a bed of `particles`: linear between the table's beds, the smallest or the
-  // largest bed's figure beyond them (a particle-step costs more once the arrays outgrow the caches).
+  // The one-thread figure for a bed of `particles`: linear between the table's beds, the smallest or
+  // the largest bed's figure beyond them (a particle-step costs more once the arrays outgrow the caches).
   double nsPerParticleStep(double particles) const;
+  // The largest thread count the table measured that is at most `threads` (1 when none is).
+  int measuredThreads(int threads) const;
+  // How much faster `threads` threads step a bed of `particles` than one, as the table measured it at
+  // measuredThreads(threads): a count beyond the table's is not extrapolated (no faster than its largest).
+  double speedUp(double particles, int threads) const;
 };
 // Parses the table's CSV text (columns as bench/costs.csv); throws Error naming what is wrong.
 CostTable parseCostTable(const std::string& csv);
@@ -68,6 +74,14 @@ struct SpeedBasis {
   std::string source;  // for people: "the median of this machine's last 9 one-thread runs (PATH)"
 };
 SpeedBasis speedBasis(const RunConfig& config);
+
+// How `threads` threads speed a bed of `particles` up over one core, by the committed table's
+// measured scaling (CostTable::speedUp), and the words that say where it comes from ("" at one thread).
+struct ThreadScaling {
+  double speedUp = 1.0;
+  std::string words;
+};
+ThreadScaling threadScaling(double particles, int threads);
 
 // Grains plus the frozen base row (one per unit of width); the intruder's atoms are negligible.
 double estimatedParticles(const RunConfig& config);

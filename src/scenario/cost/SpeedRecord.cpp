@@ -72,7 +72,8 @@ void recordRunSpeed(const RunConfig& config, int threads, double wallNsPerPartic
   ::close(fd);
 }
 
-std::optional<MeasuredSpeed> measuredSpeed(const RunConfig& config, double particles) {
+std::optional<MeasuredSpeed> measuredSpeed(const RunConfig& config, double particles,
+                                           const std::function<double(double)>& nsOfSize) {
   std::ifstream in(speedLogPath(config));
   if (!in) return std::nullopt;
   const std::string cpu = cpuModel();
@@ -89,10 +90,11 @@ std::optional<MeasuredSpeed> measuredSpeed(const RunConfig& config, double parti
     std::getline(fields, cpuNs, '\t');  // these two are absent from lines written before they were recorded
     std::getline(fields, count);
     try {
-      const double v = std::stod(cpuNs.empty() ? wallNs : cpuNs);
+      double v = std::stod(cpuNs.empty() ? wallNs : cpuNs);
       if (!(v > 0 && v < 1e6)) continue;
-      speeds.push_back(v);
       const double n = count.empty() ? 0.0 : std::stod(count);
+      if (nsOfSize && n > 0) v *= nsOfSize(particles) / nsOfSize(n);
+      speeds.push_back(v);
       if (n * kSameSizeFactor >= particles && n <= particles * kSameSizeFactor) sameSize.push_back(v);
     } catch (const std::exception&) {
     }

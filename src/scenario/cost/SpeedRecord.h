@@ -11,6 +11,7 @@
 // was given: a run at a low priority beside two others took 4-10 x its CPU time in wall time, and
 // wall time per particle-step made every estimate after it that much too long.
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -55,7 +56,10 @@ struct MeasuredSpeed {
 // any size; nothing when there are none. Lines without a build kind (written before it was
 // recorded) are not counted: which build ran them is not known. Lines without the CPU figure or
 // the particle count (written before they were recorded) count with their wall figure and as of
-// another size.
-std::optional<MeasuredSpeed> measuredSpeed(const RunConfig& config, double particles);
+// another size. With `nsOfSize` (ns per particle-step by bed size, the cost table's), each run of a
+// known size counts scaled to `particles` by it: a machine's runs of small beds then say how fast
+// it is, and the table how a bigger bed slows every machine down.
+std::optional<MeasuredSpeed> measuredSpeed(const RunConfig& config, double particles,
+                                           const std::function<double(double)>& nsOfSize = {});
 
 }  // namespace wiggle
