@@ -63,7 +63,10 @@ double displacementAmplitude(const DriveDef& drive, double period);
 // Releases the bed's intruder into the case's drive, y free, with the clock at t = 0.
 void startDrive(World& world, const Case& c);
 
-// Estimated grains of a bed: box width x bed height x packing (0.84) / mean grain area, with the
+// The area fraction a made bed's grains fill below its surface, by how it was poured (bed.pour).
+double bedPacking(BedPour pour);
+
+// Estimated grains of a bed: box width x bed height x bedPacking / mean grain area, with the
 // mean area of diameters uniform in [d_min, d_max]: (pi/4) (d_min^2 + d_min d_max + d_max^2) / 3.
 double estimatedGrains(const RunConfig& config);
 
