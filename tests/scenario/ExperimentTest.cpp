@@ -23,7 +23,7 @@
 #include "io/FileLock.h"
 #include "io/StateFile.h"
 #include "scenario/bed/BedMaker.h"
-#include "analysis/LammpsDump.h"
+#include "scenario/lammps/LammpsDump.h"
 #include "scenario/lammps/LammpsExport.h"
 #include "scenario/run/Checkpoint.h"
 #include "scenario/run/Experiment.h"

@@ -18,10 +18,10 @@
 #include "io/AtomicFile.h"
 #include "io/Config.h"
 #include "scenario/bed/BedMaker.h"
-#include "scenario/bed/EngineSettings.h"
+#include "scenario/case/EngineSettings.h"
 #include "scenario/geometry/Clump.h"
 #include "scenario/geometry/Shape.h"
-#include "scenario/bed/LammpsBed.h"
+#include "scenario/lammps/LammpsBed.h"
 #include "scenario/run/Experiment.h"
 #include "support/TestSupport.h"
 

@@ -13,7 +13,7 @@
 #include "io/Config.h"
 #include "scenario/case/Case.h"
 #include "scenario/geometry/Shape.h"
-#include "scenario/bed/LammpsBed.h"  // wrappedX: the data file holds x as a bed read back keeps it
+#include "scenario/lammps/LammpsBed.h"  // wrappedX: the data file holds x as a bed read back keeps it
 
 namespace wiggle {
 

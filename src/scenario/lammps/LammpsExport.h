@@ -9,7 +9,7 @@
 // y to be integrated, and `fix setforce` gives every atom the force F_contact,y - M g so all atoms
 // accelerate together with the clump's acceleration.
 //
-// The same data files are read back as beds by scenario/bed/LammpsBed.h (bed.file).
+// The same data files are read back as beds by LammpsBed.h (bed.file).
 //
 // What cannot be carried: the tangential contact history. A data file has no section for it, and
 // LAMMPS restores it only from its own binary restart files. The deck therefore starts every
