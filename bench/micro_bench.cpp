@@ -25,7 +25,7 @@
 #include "physics/PairKernel.h"
 #include "physics/World.h"
 #include "scenario/bed/BedMaker.h"
-#include "scenario/bed/EngineSettings.h"
+#include "scenario/case/EngineSettings.h"
 #include "scenario/geometry/Clump.h"
 #include "scenario/geometry/Shape.h"
 

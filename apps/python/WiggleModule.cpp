@@ -18,7 +18,6 @@
 #include <string>
 #include <vector>
 
-#include "analysis/LammpsDump.h"
 #include "analysis/RiseRate.h"
 #include "core/Error.h"
 #include "core/Format.h"
@@ -27,6 +26,7 @@
 #include "io/Config.h"
 #include "physics/World.h"
 #include "scenario/case/Case.h"
+#include "scenario/lammps/LammpsDump.h"
 #include "scenario/run/Checkpoint.h"
 #include "scenario/run/Experiment.h"
 #include "scenario/run/Remeasure.h"

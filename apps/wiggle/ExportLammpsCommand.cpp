@@ -8,12 +8,15 @@
 
 #include "Commands.h"
 #include "PathChecks.h"
+#include "core/Console.h"
 #include "core/Error.h"
-#include "physics/ForceKernels.h"
 #include "core/Machine.h"
+#include "core/StopSignal.h"
 #include "io/Config.h"
+#include "physics/ForceKernels.h"
 #include "scenario/case/Case.h"
 #include "scenario/lammps/LammpsExport.h"
+#include "scenario/run/Experiment.h"
 
 namespace wiggle::cli {
 
@@ -25,6 +28,25 @@ struct ExportArgs {
   std::string out;
   int threads = 0;
 };
+
+// The case's start as `wiggle run` makes it (startRun: the bed cached or made now, the drive
+// started), with the bed's progress on stderr: on a terminal a rewritten status line; otherwise (a
+// log, a benchmark script) a line every 30 s, so that a bed that takes an hour shows that it is
+// getting on.
+CachedBed startExport(const Case& run) {
+  ProgressLine progress(
+      true,
+      [&](const std::string& text) {
+        if (!progress.onTerminal()) std::fprintf(stderr, "%s\n", text.c_str());
+      },
+      30.0);
+  const StopSignalGuard stopOnSignal;  // SIGINT/SIGTERM while the bed is made: save it, then stop
+  CachedBed bed =
+      startRun(run, [&](const BedStatus& st) { progress.update(bedStatusLine(st, run.config.box.bedHeight)); });
+  progress.clear();
+  if (!bed.note.empty()) std::fprintf(stderr, "wiggle: warning: %s\n", bed.note.c_str());
+  return bed;
+}
 
 }  // namespace
 
@@ -52,12 +74,13 @@ void addExportLammpsCommand(CLI::App& app) {
     if (!args->config.empty()) path = args->config;
     if (path) requireInputFile(*path, "config file");
     requireOutputDirectory("--out", args->out);
-    const RunConfig config = loadRunConfig(path, args->sets);
-    const LammpsExportResult r = exportLammps(prepareCase(config), args->out);
-    std::printf("bed %s %s\n", r.bedFromCache ? "loaded from" : "made and cached at", r.bedPath.c_str());
+    const Case run = prepareCase(loadRunConfig(path, args->sets));
+    const CachedBed bed = startExport(run);
+    const LammpsDeck deck = exportLammps(bed.world, run, args->out);
+    std::printf("bed %s %s\n", bed.fromCache ? "loaded from" : "made and cached at", bed.path.c_str());
     std::printf("wrote %s/%s and %s/%s: %llu atoms (%u grains), %llu steps\n", args->out.c_str(), kLammpsDataFile,
-                args->out.c_str(), kLammpsInputFile, static_cast<unsigned long long>(r.deck.atoms), r.deck.grains,
-                static_cast<unsigned long long>(r.deck.steps));
+                args->out.c_str(), kLammpsInputFile, static_cast<unsigned long long>(deck.atoms), deck.grains,
+                static_cast<unsigned long long>(deck.steps));
     std::printf("run it with: cd %s && lmp -in %s\n", args->out.c_str(), kLammpsInputFile);
   });
 }

@@ -15,7 +15,6 @@
 #include <thread>
 #include <vector>
 
-#include "analysis/LammpsDump.h"
 #include "analysis/Trajectory.h"
 #include "core/Error.h"
 #include "core/StopSignal.h"
@@ -24,9 +23,10 @@
 #include "io/FileLock.h"
 #include "io/StateFile.h"
 #include "scenario/bed/BedMaker.h"
+#include "scenario/lammps/LammpsDump.h"
+#include "scenario/lammps/LammpsExport.h"
 #include "scenario/run/Checkpoint.h"
 #include "scenario/run/Experiment.h"
-#include "scenario/lammps/LammpsExport.h"
 #include "scenario/run/Remeasure.h"
 #include "scenario/run/RunProgress.h"
 #include "scenario/run/RunSummary.h"
@@ -729,7 +729,8 @@ TEST(Experiment, ExportedBedReadBackRunsAsTheBedWithoutHistory) {
   own.run.keepBedHistory = false;
   const RunOutcome reference = runExperiment(prepareCase(own), quiet(root + "/own"));
   ASSERT_EQ(reference.summary.status, RunStatus::Ok);
-  exportLammps(prepareCase(own), root + "/deck", false);
+  const Case ownCase = prepareCase(own);
+  exportLammps(startRun(ownCase).world, ownCase, root + "/deck");  // as `wiggle export-lammps` does
   // The case beside the deck, so that `wiggle rate` reads the LAMMPS run's trajectory (here the
   // wiggle run's own stands in for it) by wiggle's rules.
   EXPECT_EQ(readFile(root + "/deck/config.toml"), toToml(own));
@@ -752,7 +753,8 @@ TEST(Experiment, ExportedBedReadBackRunsAsTheBedWithoutHistory) {
 TEST(Experiment, LammpsBedFileRefusedInOneLine) {
   const std::string root = scratch("lammps-refusals");
   RunConfig config = tinyConfig(scratch(""));
-  exportLammps(prepareCase(config), root + "/deck", false);
+  const Case exported = prepareCase(config);
+  exportLammps(startRun(exported).world, exported, root + "/deck");
   const std::string data = readFile(root + "/deck/data.lammps");
   auto refusal = [&](const std::string& text, const std::vector<std::string>& sets = {}) {
     const std::string path = root + "/bad.lammps";

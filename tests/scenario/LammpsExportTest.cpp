@@ -18,11 +18,11 @@
 #include "io/AtomicFile.h"
 #include "io/Config.h"
 #include "scenario/bed/BedMaker.h"
-#include "scenario/bed/EngineSettings.h"
-#include "scenario/run/Experiment.h"
-#include "scenario/bed/LammpsBed.h"
+#include "scenario/case/EngineSettings.h"
 #include "scenario/geometry/Clump.h"
 #include "scenario/geometry/Shape.h"
+#include "scenario/lammps/LammpsBed.h"
+#include "scenario/run/Experiment.h"
 #include "support/TestSupport.h"
 
 namespace wiggle {
@@ -334,8 +334,8 @@ void expectLammpsFollowsWiggle(const std::string& rampPeriods, const std::string
   config.bed.cacheDir = (root / "cache").string();
   const std::string dir = (root / label).string();
   fs::remove_all(dir);
-  const LammpsExportResult exported = exportLammps(prepareCase(config), dir, false);
-  ASSERT_EQ(exported.deck.steps, 2000u);
+  const Case run = prepareCase(config);
+  ASSERT_EQ(exportLammps(startRun(run).world, run, dir).steps, 2000u);  // as `wiggle export-lammps` does
 
   const std::string command = "cd '" + dir + "' && lmp -in in.wiggle -log log.lammps -screen none";
   ASSERT_EQ(std::system(command.c_str()), 0) << "LAMMPS failed: see " << dir << "/log.lammps";
@@ -346,7 +346,7 @@ void expectLammpsFollowsWiggle(const std::string& rampPeriods, const std::string
   const ClumpDef clump = makeClump(config.intruder, config.grains.massModel, 1.0);
   CachedBed bed = obtainBed(config, clump);
   ASSERT_TRUE(bed.fromCache);
-  startDrive(bed.world, prepareCase(config));
+  startDrive(bed.world, run);
   const auto fresh = runWiggle(withoutContactHistory(bed.world), 2000, 100);
   const auto withHistory = runWiggle(bed.world, 2000, 100);
 

@@ -15,8 +15,8 @@
 #include "io/StateFile.h"
 #include "physics/PairKernel.h"
 #include "scenario/bed/BedMaker.h"
-#include "scenario/bed/EngineSettings.h"
-#include "scenario/bed/LammpsBed.h"
+#include "scenario/case/EngineSettings.h"
+#include "scenario/lammps/LammpsBed.h"
 
 namespace wiggle {
 

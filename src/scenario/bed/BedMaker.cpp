@@ -9,7 +9,7 @@
 #include "core/Rng.h"
 #include "io/StateFile.h"
 #include "physics/PairKernel.h"
-#include "scenario/bed/EngineSettings.h"
+#include "scenario/case/EngineSettings.h"
 
 namespace wiggle {
 

@@ -7,16 +7,13 @@
 #include <filesystem>
 #include <numbers>
 
-#include "core/Console.h"
 #include "core/Error.h"
 #include "core/Format.h"
-#include "core/StopSignal.h"
 #include "io/AtomicFile.h"
 #include "io/Config.h"
-#include "scenario/bed/BedMaker.h"
 #include "scenario/case/Case.h"
-#include "scenario/bed/LammpsBed.h"  // wrappedX: the data file holds x as a bed read back keeps it
 #include "scenario/geometry/Shape.h"
+#include "scenario/lammps/LammpsBed.h"  // wrappedX: the data file holds x as a bed read back keeps it
 
 namespace wiggle {
 
@@ -244,34 +241,13 @@ World withoutContactHistory(const World& world) {
   return fresh;
 }
 
-LammpsExportResult exportLammps(const Case& run, const std::string& dir, bool progressLine) {
-  const RunConfig& config = run.config;
-  // On a terminal a rewritten status line; otherwise (a log, a benchmark script) a line every 30 s,
-  // so that a bed that takes an hour to make shows that it is getting on.
-  ProgressLine progress(
-      progressLine,
-      [&](const std::string& text) {
-        if (!progress.onTerminal()) std::fprintf(stderr, "%s\n", text.c_str());
-      },
-      30.0);
-  const StopSignalGuard stopOnSignal;  // SIGINT/SIGTERM while the bed is made: save it, then stop
-  CachedBed bed = obtainBed(config, run.clump, [&](const BedStatus& st) {
-    if (progressLine) progress.update(bedStatusLine(st, config.box.bedHeight));
-  });
-  progress.clear();
-  if (!bed.note.empty()) std::fprintf(stderr, "wiggle: warning: %s\n", bed.note.c_str());
-  // Exactly what runExperiment does before its first step.
-  World& world = bed.world;
-  startDrive(world, run);
-  LammpsExportResult result;
-  result.deck = makeLammpsDeck(world, run);
-  result.bedPath = bed.path;
-  result.bedFromCache = bed.fromCache;
-  writeLammpsDeck(dir, result.deck);
+LammpsDeck exportLammps(const World& world, const Case& run, const std::string& dir) {
+  LammpsDeck deck = makeLammpsDeck(world, run);
+  writeLammpsDeck(dir, deck);
   // The case beside its deck, as a run directory holds it: once LAMMPS has written trajectory.csv,
   // `wiggle rate DIR` measures its V_y by wiggle's own rules.
-  writeFileAtomically(dir + "/config.toml", toToml(config));
-  return result;
+  writeFileAtomically(dir + "/config.toml", toToml(run.config));
+  return deck;
 }
 
 }  // namespace wiggle

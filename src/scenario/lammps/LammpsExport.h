@@ -9,7 +9,7 @@
 // y to be integrated, and `fix setforce` gives every atom the force F_contact,y - M g so all atoms
 // accelerate together with the clump's acceleration.
 //
-// The same data files are read back as beds by scenario/bed/LammpsBed.h (bed.file).
+// The same data files are read back as beds by LammpsBed.h (bed.file).
 //
 // What cannot be carried: the tangential contact history. A data file has no section for it, and
 // LAMMPS restores it only from its own binary restart files. The deck therefore starts every
@@ -50,15 +50,11 @@ void writeLammpsDeck(const std::string& dir, const LammpsDeck& deck);
 // LAMMPS run of the exported deck with wiggle step by step.
 World withoutContactHistory(const World& world);
 
-struct LammpsExportResult {
-  LammpsDeck deck;
-  std::string bedPath;
-  bool bedFromCache = false;
-};
-
-// The whole command: gets the bed as `wiggle run` does (obtainBed: the cache, or made and cached),
-// starts the drive, and writes the deck into `dir`, with the case as config.toml (as a run directory
-// holds it, so that `wiggle rate DIR` reads the LAMMPS run's trajectory.csv by wiggle's rules).
-LammpsExportResult exportLammps(const Case& run, const std::string& dir, bool progressLine = true);
+// The whole export of `world`, the case's bed as `wiggle run` starts it (scenario/run's startRun:
+// the bed obtained, the drive started, t = 0): the deck written into `dir` (writeLammpsDeck), with
+// the case as config.toml (as a run directory holds it, so that `wiggle rate DIR` reads the LAMMPS
+// run's trajectory.csv by wiggle's rules). The world is handed in, not obtained here, so that this
+// room stands below bed making, which reads the same files back (LammpsBed.h).
+LammpsDeck exportLammps(const World& world, const Case& run, const std::string& dir);
 
 }  // namespace wiggle

@@ -1,7 +1,7 @@
 #include "scenario/run/RunObservers.h"
 
-#include "analysis/LammpsDump.h"
 #include "io/AtomicFile.h"
+#include "scenario/lammps/LammpsDump.h"
 
 namespace wiggle {
 

@@ -1,4 +1,4 @@
-#include "scenario/bed/EngineSettings.h"
+#include "scenario/case/EngineSettings.h"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "scenario/bed/LammpsBed.h"
+#include "scenario/lammps/LammpsBed.h"
 
 #include <algorithm>
 #include <charconv>
@@ -9,7 +9,7 @@
 #include "core/Error.h"
 #include "core/Format.h"
 #include "io/Config.h"
-#include "scenario/bed/EngineSettings.h"
+#include "scenario/case/EngineSettings.h"
 
 namespace wiggle {
 

@@ -1,4 +1,4 @@
-#include "analysis/LammpsDump.h"
+#include "scenario/lammps/LammpsDump.h"
 
 #include <algorithm>
 #include <cstdio>

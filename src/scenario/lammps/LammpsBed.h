@@ -1,8 +1,7 @@
 #pragma once
-// A LAMMPS data file read as a bed (bed.file): an exported bed (scenario/lammps/LammpsExport.h), or one
-// that LAMMPS made (tools/validation/lammps_fix_pour.py), run by wiggle. Its own unit, below both
-// bed making (which reads it) and the export (which obtains its bed from bed making), so that
-// neither includes the other's reader or writer.
+// A LAMMPS data file read as a bed (bed.file): an exported bed (LammpsExport.h), or one that LAMMPS
+// made (tools/validation/lammps_fix_pour.py), run by wiggle. In the LAMMPS room beside the writer of
+// the same files, below bed making, which reads a pinned bed.file with it.
 #include <string>
 
 #include "io/RunConfig.h"
@@ -23,7 +22,7 @@ namespace wiggle {
 World readLammpsBed(const std::string& text, const std::string& name, const RunConfig& config, const ClumpDef& clump);
 
 // x wrapped into [0, W) as World::rebuildNeighbours wraps it: what a data file holds, so that a bed
-// read back and withoutContactHistory (scenario/lammps/LammpsExport.h) hold the very same bits.
+// read back and withoutContactHistory (LammpsExport.h) hold the very same bits.
 double wrappedX(double x, double width);
 
 }  // namespace wiggle

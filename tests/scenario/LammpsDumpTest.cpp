@@ -1,8 +1,8 @@
-// The dump frame (analysis/LammpsDump.h): its rows are the particles in store order with the dump's
+// The dump frame (scenario/lammps/LammpsDump.h): its rows are the particles in store order with the dump's
 // ids and types, then the intruder's atoms; its text holds those numbers; and its forces obey
 // Newton's third law: every contact appears twice with opposite signs, so over all rows the forces
 // add up to gravity on the grains alone.
-#include "analysis/LammpsDump.h"
+#include "scenario/lammps/LammpsDump.h"
 
 #include <gtest/gtest.h>
 #include <omp.h>

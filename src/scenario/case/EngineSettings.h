@@ -1,6 +1,6 @@
 #pragma once
-// The engine's parameters for a run config: its own unit because bed making and the LAMMPS bed
-// reader both build worlds with them (and neither may include the other).
+// The engine's parameters for a run config: in the case room because bed making (scenario/bed) and
+// the LAMMPS bed reader (scenario/lammps, the room below bed) both build worlds with them.
 #include "io/RunConfig.h"
 #include "physics/World.h"
 
