@@ -271,7 +271,7 @@ def main():
     ap.add_argument("--steps-paper", type=int, default=CASES["paper"][1])
     ap.add_argument("--write-costs", action="store_true",
                     help="then rewrite bench/costs.csv (the one cost table) from this run's medians, and the documents' "
-                         "cost blocks (tools/study/costs.py); needs the three default beds at 1 and 2 threads")
+                         "cost blocks (tools/docs/costs.py); needs the three default beds at 1 and 2 threads")
     ap.add_argument("--machine", default="",
                     help="with --write-costs: the machine as the table names it (default: lscpu's model name, "
                          "the logical CPUs and the widest instruction set)")
@@ -420,7 +420,7 @@ def main():
                         r["steps"], "%.6g" % r["wall"], "%.2f" % r["ns"], "%.1f" % r["rss"], "%.2f" % r["load"]])
     log("appended %d rows to %s" % (len(rows), path))
     if args.write_costs:
-        sys.path.insert(0, os.path.join(REPO, "tools", "study"))
+        sys.path.insert(0, os.path.join(REPO, "tools", "docs"))
         import costs  # noqa: E402  (the one cost table and the documents' cost blocks)
         flags = open("/proc/cpuinfo").read() if os.path.exists("/proc/cpuinfo") else ""
         simd = "AVX-512" if " avx512f" in flags else "AVX2" if " avx2" in flags else "no AVX2"

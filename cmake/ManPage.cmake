@@ -41,6 +41,6 @@ string(APPEND page ".SH EXIT STATUS\n0 when everything asked for succeeded; 2 fo
                    "other non-zero values for failures at run time (each subcommand's help says which).\n")
 string(APPEND page ".SH FILES\n.TP\n~/.cache/wiggle\nthe bed cache (bed.cache_dir, else $WIGGLE_CACHE)\n"
                    ".TP\nshare/doc/wiggle\nREADME.md and, in docs/, the documents: CONFIG.md (every key), "
-                   "OUTPUT-FORMATS.md, SWEEPS.md, PHYSICS.md, VALIDATION.md\n")
+                   "OUTPUT-FORMATS.md, SWEEPS.md, PHYSICS.md; in study/, VALIDATION.md (does it reproduce the paper)\n")
 string(APPEND page ".SH SEE ALSO\nlmp(1), the LAMMPS molecular dynamics program: wiggle export-lammps writes the same case as a LAMMPS deck.\n")
 file(WRITE "${OUT}" "${page}")

@@ -122,7 +122,7 @@ void printGeometryTable(const std::vector<Row>& rows, const ModelOptions& opt) {
     return;
   }
   // The paper's Table 1 (model/PaperTable1.h) stands beside unrotated paper shapes only: shown, never
-  // used to compute. The model is a prediction; what wiggle's own simulations give is in docs/VALIDATION.md.
+  // used to compute. The model is a prediction; what wiggle's own simulations give is in study/VALIDATION.md.
   bool showPaper = false;
   for (const Row& r : rows) showPaper = showPaper || (opt.angle == 0.0 && r.wholeShape && paperTable1Row(r.shapeName));
   std::printf("The cavity model's prediction (paper section 3.5) from each outline, d = 1, g = 1%s\n",
@@ -143,9 +143,10 @@ void printGeometryTable(const std::vector<Row>& rows, const ModelOptions& opt) {
     std::printf("\n");
   }
   if (showPaper)
-    std::printf("(a model, not a simulation. paper l, T_rise: the model's columns of the paper's Table 1, which\n"
-                " truncates: T_rise = sqrt(8) = 2.828 is printed 2.82. observed: the T_rising range the paper's\n"
-                " simulations found at A = 5. wiggle's simulated ranges: docs/VALIDATION.md, \"Table 1\")\n");
+    std::printf(
+        "(a model, not a simulation. paper l, T_rise: the model's columns of the paper's Table 1, which\n"
+        " truncates: T_rise = sqrt(8) = 2.828 is printed 2.82. observed: the T_rising range the paper's\n"
+        " simulations found at A = 5. wiggle's simulated ranges: study/VALIDATION.md, \"Table 1\")\n");
   if (std::any_of(rows.begin(), rows.end(), [](const Row& r) { return r.side.l == 0.0; }))
     std::printf("(l = 0: the outline's lowest point with a vertical tangent is its top, as for the triangle apex\n"
                 " down: no fall is needed below the top, so T_rise = sqrt(2 l' / g) with l' = d/2 alone, 1.0)\n");
@@ -290,7 +291,7 @@ void addModelCommand(CLI::App& app) {
       "The cavity model's prediction (paper section 3.5): l, l', T_rise, h and T_max of a shape from its "
       "outline; with no shape, all five paper shapes beside the paper's Table 1 (its model columns and "
       "the T_rising its simulations observed). A model, not a simulation: wiggle's own T_rising is in "
-      "docs/VALIDATION.md. Shapes whose two sides give different l (not "
+      "study/VALIDATION.md. Shapes whose two sides give different l (not "
       "mirror-symmetric) get one row per side, named shape:left / shape:right (the cavity on "
       "that side).");
   cmd->add_option("--shape", opt->shape, joinedNames(choiceNameList<ShapeName>(), " | "));

@@ -1,8 +1,8 @@
 """wiggleplot.cells: the cells' rule (mean, sd, se, verdict: rises / sinks at |mean| >= 2 se with
-n >= 2, else not resolved), results.csv grouped by cell (a case without its seed), cells.csv read
-when present, and the committed studies in results/ read by the same code, with the statistics of
-tools/study/findings.py. That the C++ side's cells.csv and this grouping agree on a sweep run by
-wiggle is checked by tests/cli/report_in_browser.py (ctest report_in_browser)."""
+n >= 2, else not resolved), results.csv grouped by cell (a case without its seed) and cells.csv read
+when present. That the C++ side's cells.csv and this grouping agree on a sweep run by wiggle is
+checked by tests/cli/report_in_browser.py (ctest report_in_browser); that the rule's statistics are
+the study's, and a committed study reads as its cells, by study/tests/test_cells_study.py."""
 import math
 import os
 import shutil
@@ -12,12 +12,8 @@ import unittest
 import numpy as np
 
 from tests import synthetic
-from tests.test_study_tools import load_tool
-from wiggleplot import cells, htmlreport, prepare, readers, sweepplots
+from wiggleplot import cells, htmlreport, prepare, sweepplots
 from wiggleplot.report import Report
-
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-findings = load_tool("findings")
 
 
 class RuleTest(unittest.TestCase):
@@ -34,14 +30,6 @@ class RuleTest(unittest.TestCase):
         self.assertEqual(cells.stats([0.1, 0.3])["verdict"], "rises")          # exactly 2 se
         self.assertEqual(cells.stats([0.1, 0.31])["verdict"], "not resolved")  # just under
         self.assertEqual(cells.stats([0.0, 0.0])["verdict"], "not resolved")
-
-    def test_the_statistics_are_the_studys(self):
-        values = [0.088, 0.084, 0.094]
-        mean, se = findings.stats(values)
-        s = cells.stats(values)
-        self.assertAlmostEqual(s["vy_mean"], mean, places=15)
-        self.assertAlmostEqual(s["vy_se"], se, places=15)
-        self.assertAlmostEqual(s["vy_sd"], findings.sd(values), places=15)
 
     def test_one_bed_is_said_as_one_bed(self):
         self.assertEqual(cells.in_words(1, 1, 0.0886, math.nan, "not resolved"),
@@ -149,24 +137,6 @@ class GroupingTest(unittest.TestCase):
         page = "\n".join(htmlreport.cells_section(one, []))
         self.assertIn("Each case is one bed", page)
         self.assertNotIn("rises", page)
-
-
-class CommittedStudiesTest(unittest.TestCase):
-    def test_a_committed_study_reads_as_cells(self):
-        """results/pour_protocol_small (no cells.csv: written before it existed), three beds a
-        cell: the grouping gives the study's own numbers (docs/VALIDATION.md: one bed's sd at the
-        disk's T = 1, 0.018, the small preset's sigma in docs/FINDINGS.md)."""
-        study = os.path.join(ROOT, "results", "pour_protocol_small")
-        table = cells.read_cells(study)
-        results = readers.read_results(study)
-        self.assertEqual(list(table["cell"]), ["pour=lattice_period=1", "pour=lattice_period=5",
-                                               "pour=random_period=1", "pour=random_period=5"])
-        self.assertTrue((table["beds"] == 3).all() and (table["n"] == 3).all())
-        for i, cell in enumerate(table["cell"]):
-            values = [results["vy"][k] for k in range(len(results["case"])) if cells.cell_name(results["case"][k]) == cell]
-            self.assertAlmostEqual(table["vy_sd"][i], findings.sd(values), places=12)
-        self.assertAlmostEqual(table["vy_sd"][0], 0.0183, places=4)
-        self.assertEqual(list(table["verdict"]), ["sinks", "rises", "not resolved", "rises"])
 
 
 if __name__ == "__main__":

@@ -45,7 +45,7 @@ struct RiseRate {
   static constexpr double kMinWindowPeriods = 2.0;
   bool windowTooShort() const { return windowPeriods < kMinWindowPeriods; }
   // The drive starts at full speed and sets the whole bed moving: the first 10-20 time units are
-  // a start-up transient (docs/VALIDATION.md: the disk at T = 1 climbs 8 d in the first 12, then
+  // a start-up transient (study/VALIDATION.md: the disk at T = 1 climbs 8 d in the first 12, then
   // stays). A window that ends by kStartupTime measures that transient, not a steady rise or
   // sink (a T = 1 run of t = 5 gave V_y = 0.74): it is reported with a warning too.
   static constexpr double kStartupTime = 20.0;

@@ -1,7 +1,7 @@
 #pragma once
 // The paper's Table 1 (A = 5 d), as the paper prints it: per shape, the cavity model's columns and the
 // T_rising range its simulations observed. One copy, docs/paper-table1.json, compiled in at build time
-// (CMakeLists.txt) and read there by tools/study/vy_tables.py too. Shown beside wiggle's own values
+// (CMakeLists.txt) and read there by study/tools/vy_tables.py too. Shown beside wiggle's own values
 // (`wiggle model`), never used to compute them.
 #include <string>
 #include <string_view>

@@ -4,17 +4,17 @@
     costs.py
 
 Fails (exit 1, one line per problem) when a cost block (`<!-- costs: NAME -->` in README.md and
-docs/, `# costs: NAME` in configs/) differs from what tools/study/costs.py makes from the table, or
+docs/, `# costs: NAME` in configs/) differs from what tools/docs/costs.py makes from the table, or
 when a figure of ns per particle-step anywhere else in README.md, docs/*.md or configs/ is more than
 25 % from the table's figure for the bed and thread count its line names. Fix: run
-`tools/study/costs.py` and commit, or correct the figure. First it checks that the check can fail:
+`tools/docs/costs.py` and commit, or correct the figure. First it checks that the check can fail:
 a changed digit in a block, and a figure 30 % off, must both be reported.
 """
 import os
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-sys.path.insert(0, os.path.join(ROOT, "tools", "study"))
+sys.path.insert(0, os.path.join(ROOT, "tools", "docs"))
 import costs  # noqa: E402
 import marked  # noqa: E402
 

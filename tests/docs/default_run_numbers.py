@@ -23,9 +23,9 @@ HASH = r"([0-9a-f]{16})"
 # (file, pattern, the summary key of each group). A number is compared rounded to its own digits.
 CLAIMS = [
     ("README.md", r"V_y = " + NUMBER + r" d per time unit on this engine's bed", ["vy"]),
-    ("docs/VALIDATION.md", r"since\s+session 3, gives " + NUMBER + r" with state hash " + HASH,
+    ("study/VALIDATION.md", r"since\s+session 3, gives " + NUMBER + r" with state hash " + HASH,
      ["vy", "state_hash"]),
-    ("docs/VALIDATION.md", r"freshly made\s+bed gives V_y = \*\*" + NUMBER + r"\*\* \(slope " + NUMBER +
+    ("study/VALIDATION.md", r"freshly made\s+bed gives V_y = \*\*" + NUMBER + r"\*\* \(slope " + NUMBER +
      r"; y " + NUMBER + r" -> " + NUMBER + r"\)", ["vy", "vy_slope", "y_start", "y_final"]),
     ("docs/RELIABILITY.md", r"The default case \(`wiggle run`\) ends with " + NUMBER + r" and " + NUMBER +
      r" \(state\s+hash " + HASH, ["overlap_margin", "speed_margin", "state_hash"]),

@@ -50,16 +50,23 @@ enabled = false
 """
 
 
+def tiny_run(folder):
+    """TINY in folder/tiny.toml (its bed cached in folder/cache), run by `wiggle run` into folder/run:
+    the config's path and the run's directory."""
+    config = os.path.join(folder, "tiny.toml")
+    with open(config, "w") as f:
+        f.write(TINY.format(cache=os.path.join(folder, "cache")))
+    out = os.path.join(folder, "run")
+    subprocess.run([WIGGLE, "run", config, "--out", out, "--threads", "1"], check=True,
+                   stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    return config, out
+
+
 class Engine(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
         cls.tmp = tempfile.TemporaryDirectory(prefix="wiggle-engine-test-")
-        cls.config = os.path.join(cls.tmp.name, "tiny.toml")
-        with open(cls.config, "w") as f:
-            f.write(TINY.format(cache=os.path.join(cls.tmp.name, "cache")))
-        out = os.path.join(cls.tmp.name, "run")
-        subprocess.run([WIGGLE, "run", cls.config, "--out", out, "--threads", "1"], check=True,
-                       stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        cls.config, out = tiny_run(cls.tmp.name)
         with open(os.path.join(out, "summary.json")) as f:
             cls.summary = json.load(f)
         cls.cli_hash = cls.summary["state_hash"]
@@ -127,34 +134,6 @@ class Engine(unittest.TestCase):
                 os.path.join(self.tmp.name, "with-dumps"))
         with self.assertRaisesRegex(wiggle.Error, "holds no run"):
             wiggle.Case.load(os.path.join(self.tmp.name, "nowhere"))
-
-    def test_bed_compaction_in_time_meets_the_runs_own_checkpoint(self):
-        # tools/study/bed_compaction.py measures a case at its checkpoint (the run's end here, t =
-        # 0.5) or, with --times, runs it again through this module and measures it on the way: both
-        # routes must give the same row at t = 0.5 (the bulk band is empty in this tiny bed; the
-        # surface, the annulus and the intruder's height are not).
-        sweep = os.path.join(self.tmp.name, "compaction")
-        os.makedirs(os.path.join(sweep, "cases"))
-        os.symlink(os.path.join(self.tmp.name, "run"), os.path.join(sweep, "cases", "tiny"))
-        root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
-        script = os.path.join(root, "tools", "study", "bed_compaction.py")
-        env = dict(os.environ, PYTHONPATH=MODULE_DIR + os.pathsep + os.path.join(root, "python"))
-
-        def rows(*extra):
-            out = os.path.join(self.tmp.name, "compaction.csv")
-            subprocess.run([sys.executable, script, sweep, "--csv", out, *extra], check=True, env=env,
-                           stdout=subprocess.DEVNULL)
-            with open(out) as f:
-                return [line.strip().split(",") for line in f][1:]
-
-        at_checkpoint, in_time = rows(), rows("--times", "0.25,0.5")
-        self.assertEqual([r[1] for r in in_time], ["0.25", "0.5"])
-        self.assertEqual(at_checkpoint, in_time[1:])
-        self.assertNotEqual(in_time[0][2:], in_time[1][2:])
-        bad = subprocess.run([sys.executable, script, sweep, "--times", "0.5,0.25"], env=env,
-                             capture_output=True, text=True)
-        self.assertEqual(bad.returncode, 2)
-        self.assertIn("the times must be positive and increasing", bad.stderr)
 
     def test_field_maps_and_frames_are_wiggle_runs(self):
         # With fields on (a 4 d grid, phases 0, 5 and 10: phase 0 falls on no step after t_i here) and dumps every 0.1: the live case's field

@@ -61,10 +61,10 @@ std::string recipeSection() {
   return text.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
 }
 
-// The paths a text names: src/io/RunConfig.h, or a folder with its slash (tools/study/).
+// The paths a text names: src/io/RunConfig.h, or a folder with its slash (study/tools/).
 std::vector<std::string> namedPaths(const std::string& text) {
   static const std::regex path(
-      R"((?:^|[^A-Za-z0-9_./-])((?:src|apps|tests|tools|python|docs|configs)/[A-Za-z0-9_./-]*[A-Za-z0-9_/]))");
+      R"((?:^|[^A-Za-z0-9_./-])((?:src|apps|tests|tools|python|docs|configs|study)/[A-Za-z0-9_./-]*[A-Za-z0-9_/]))");
   std::vector<std::string> paths;
   for (auto it = std::sregex_iterator(text.begin(), text.end(), path); it != std::sregex_iterator(); ++it)
     paths.push_back((*it)[1].str());
@@ -111,7 +111,7 @@ std::set<std::string> filesListingThePaperShapes() {
   constexpr std::uintmax_t kMaxBytes = 2 << 20;  // data files are larger and list no shapes
   const fs::path root(WIGGLE_SOURCE_DIR);
   std::set<std::string> found;
-  for (const char* top : {"src", "apps", "tests", "tools", "python", "docs", "configs"}) {
+  for (const char* top : {"src", "apps", "tests", "tools", "python", "docs", "configs", "study"}) {
     std::error_code ec;
     // Error codes, not exceptions: other tests may make and remove folders meanwhile.
     for (fs::recursive_directory_iterator it(root / top, fs::directory_options::skip_permission_denied, ec), end;

@@ -22,7 +22,7 @@ atoms of intruder.surface = "glued", which `wiggle model` does not write: the sc
 bed of the base row and one grain with `wiggle export-lammps --set intruder.surface=glued` and
 takes the clump's atoms (type 3) from that data file, so they are the atoms wiggle places.
 DIR/dump.lammpstrj holds the bed at the end (the format wiggle's dumps have): compare it with
-wiggle's beds by tools/validation/bed_statistics.py --dump. DIR/data.lammps is the same bed as a
+wiggle's beds by study/tools/bed_statistics.py --dump. DIR/data.lammps is the same bed as a
 data file (write_data): `wiggle run --set bed.file=DIR/data.lammps` runs it (types 1 grains, 2 base,
 3 the intruder's atoms, which wiggle replaces by its own intruder: bed.lammps_types' default).
 --drive DECK continues the same LAMMPS session with the drive of DECK (an in.wiggle that

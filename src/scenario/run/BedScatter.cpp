@@ -17,19 +17,19 @@ constexpr const char* kDepthBed =
     "the paper-depth preset's bed (configs/paper_depth.toml: 60 x 195 d, intruder at y0 = 90 d)";
 constexpr const char* kClockWhere =
     "pooled over the shape's cells of two beds or more by the paper's clock in the 60 d box (results/paper_depth/"
-    "table1_t1000, table1_t1000_bed2, factors_t1000; docs/VALIDATION.md, the answer's Table 1)";
+    "table1_t1000, table1_t1000_bed2, factors_t1000; study/VALIDATION.md, the answer's Table 1)";
 
 }  // namespace
 
 const std::vector<MeasuredScatter>& measuredScatters() {
   // One bed's standard deviation of V_y (n - 1) over the beds of a cell (pooled over cells where
-  // said), recomputed from the committed results/ by tools/study (findings.py, vy_tables.py).
+  // said), recomputed from the committed results/ by study/tools (findings.py, vy_tables.py).
   static const std::vector<MeasuredScatter> table = {
       {kSmallBed, 60, 50, 25, 10, 100, std::nullopt, 0.018,
        "the largest measured there: the disk at A = 3, T = 1 on three lattice beds (0.005 at T = 5), "
-       "results/pour_protocol_small; docs/FINDINGS.md takes it for every shape"},
+       "results/pour_protocol_small; study/FINDINGS.md takes it for every shape"},
       {kDepthBed, 60, 195, 90, 10, 100, std::nullopt, 0.045,
-       "the disk at A = 5, T = 3 on three pours, results/paper_depth/box and seeds; docs/FINDINGS.md takes it for "
+       "the disk at A = 5, T = 3 on three pours, results/paper_depth/box and seeds; study/FINDINGS.md takes it for "
        "every shape"},
       {kDepthBed, 60, 195, 90, 100, 1000, ShapeName::Disk, 0.0062, kClockWhere},
       {kDepthBed, 60, 195, 90, 100, 1000, ShapeName::Square, 0.0024, kClockWhere},

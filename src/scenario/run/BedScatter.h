@@ -9,7 +9,7 @@
 // A figure applies to a run whose box (width, bed height), intruder depth (y0) and V_y window match
 // the study's; a per-shape figure only to its shape. The studies' other settings (A, T, friction,
 // the pour) are not matched: a figure is the size of the scatter to expect, not a standard error
-// of that run. The numbers and where they come from: docs/VALIDATION.md, "How much one bed tells".
+// of that run. The numbers and where they come from: study/VALIDATION.md, "How much one bed tells".
 #include <optional>
 #include <string>
 #include <vector>

@@ -1,0 +1,287 @@
+"""The words study/tools's blocks pick from numbers (study/tools/vy_tables.py and its modules), on
+small made-up cells: which way a rate or a change goes, whether a factor moved a cell, what is left
+unexplained, how a bracket stands against the paper. The statistics behind them are findings.py's
+(test_findings.py); here only the choice of words. One bed's sigma given, as there."""
+import os
+import sys
+import unittest
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
+import answer_sentences  # noqa: E402
+import cases  # noqa: E402
+import factor_tables  # noqa: E402
+import findings  # noqa: E402
+import findings_table  # noqa: E402
+import scatter  # noqa: E402
+import table1_blocks  # noqa: E402
+import table_kinds  # noqa: E402
+
+SIGMA = 0.01   # one bed's standard deviation of these made-up cells
+compare = findings.compare
+
+
+class MadeUpCase:
+    """A stand-in case whose trajectory.csv has y at the given times."""
+
+    source, row = "made-up", {"case": "made_up"}
+
+    def __init__(self, ys):
+        self.ys = ys
+
+    def trajectory(self):
+        return sorted(self.ys), [self.ys[t] for t in sorted(self.ys)]
+
+
+def climbing(first, second):
+    """A case whose rate by the paper's rule is `first` over t = 100-500 and `second` over 500-1000."""
+    return MadeUpCase({100.0: 0.0, 500.0: 400 * first, 1000.0: 400 * first + 500 * second})
+
+
+class CellTextTest(unittest.TestCase):
+    def test_beds_counted_with_their_noun(self):
+        self.assertEqual(cases.beds_count([1]), "1 bed")
+        self.assertEqual(cases.beds_count([2, 2]), "2 beds")
+        self.assertEqual(cases.beds_count(n for n in (2, 1, 3)), "1-3 beds")
+        self.assertEqual(cases.count_range([]), "0")
+
+    def test_a_cell_of_one_bed_and_of_several(self):
+        self.assertEqual(cases.cell_text([0.054]), "+0.054 (1 bed)")
+        self.assertEqual(cases.cell_text([0.03, 0.05], each=True), "+0.040 +- 0.010 (2 beds: +0.030, +0.050)")
+        self.assertEqual(cases.beds_text([0.017, 0.021]), "+0.019 (2 beds)")
+
+
+class AmplitudeThresholdTest(unittest.TestCase):
+    """The smallest amplitude at which V_y leaves zero, either way (table_kinds.threshold_text)."""
+
+    def test_the_bracket_from_the_amplitude_below_and_the_way_it_goes(self):
+        measured = [(0.5, [0.001]), (1.0, [0.005]), (3.0, [0.05])]
+        self.assertEqual(table_kinds.threshold_text(measured, SIGMA), "1-3 (rises)")
+        self.assertEqual(table_kinds.threshold_text([(0.5, [-0.03]), (1.0, [-0.05])], SIGMA), "<= 0.5 (sinks)")
+
+    def test_none_resolved_is_above_the_largest_measured(self):
+        self.assertEqual(table_kinds.threshold_text([(0.5, [0.001]), (1.0, [-0.019])], SIGMA), "above 1")
+        self.assertEqual(table_kinds.threshold_text([], SIGMA), "")
+
+
+class PaperReadingTest(unittest.TestCase):
+    """A cell read against the paper's Table 1 at its period (scatter.reading_words)."""
+
+    def test_below_the_papers_range_level_or_sinking_is_as_the_paper(self):
+        self.assertEqual(scatter.reading_words([-0.001], SIGMA, -1), "not rising, as the paper")
+        self.assertEqual(scatter.reading_words([-0.05], SIGMA, -1), "not rising, as the paper")
+        self.assertEqual(scatter.reading_words([0.05], SIGMA, -1), "rising, where the paper has it not rising")
+
+    def test_above_it_only_rising_is(self):
+        self.assertEqual(scatter.reading_words([0.05], SIGMA, +1), "rising, as the paper")
+        self.assertEqual(scatter.reading_words([0.015], SIGMA, +1), "not rising, where the paper has it rising")
+
+    def test_inside_it_the_cells_own_side(self):
+        self.assertEqual(scatter.reading_words([0.001], SIGMA, 0), "level within the scatter, inside the paper's range")
+        self.assertEqual(scatter.reading_words([-0.05], SIGMA, 0), "sinking, inside the paper's range")
+
+
+class BracketTextTest(unittest.TestCase):
+    """Wiggle's bracket and the sign crossing, as the Table 1 blocks print them."""
+
+    def test_bracket(self):
+        cells = [(2.0, [-0.1]), (2.5, [0.0]), (3.0, [0.1])]
+        self.assertEqual(table1_blocks.bracket_text(2.5, 3.0, cells), "2.5-3")
+        self.assertEqual(table1_blocks.bracket_text(None, 2.0, cells), "<= 2")
+        self.assertEqual(table1_blocks.bracket_text(None, None, cells), "none: not rising at T = 2-3")
+        self.assertEqual(table1_blocks.bracket_text(None, None, cells[:1]), "none: not rising at T = 2")
+        self.assertEqual(table1_blocks.bracket_text(None, None, []), "not run")
+
+    def test_where_the_mean_turns_positive(self):
+        self.assertEqual(table1_blocks.sign_crossing([(2.0, [-0.1]), (2.5, [0.01, -0.02]), (3.0, [0.1])]), (2.5, 3.0))
+        self.assertEqual(table1_blocks.sign_crossing([(2.0, [0.1]), (3.0, [0.2])]), (None, 2.0))
+        self.assertEqual(table1_blocks.sign_crossing([(2.0, [-0.1]), (3.0, [-0.2])]), (3.0, None))
+        cells = [(2.0, [-0.1]), (3.0, [-0.2])]
+        self.assertEqual(table1_blocks.crossing_text(3.0, None, cells), "none: mean <= 0 up to T = 3")
+        self.assertEqual(table1_blocks.crossing_text(None, 2.0, cells), "> 0 already at T = 2, the shortest run")
+
+
+class FindingsWordsTest(unittest.TestCase):
+    """A finding's comparisons at one scale in study/FINDINGS.md's table and on the answer page."""
+
+    COMPARISONS = [compare("sinks", [-0.1], None, -1), compare("rises", [-0.1, -0.12], None, +1), None]
+
+    def test_counts_and_each_against_named(self):
+        self.assertEqual(findings_table.comparisons_text(0.05, self.COMPARISONS, []),
+                         "2 comparisons of cases of 1-2 beds: 1 the paper's way by >= 2 standard errors, "
+                         "0 within 2, 1 against: rises (-3.1)")
+        self.assertEqual(findings_table.comparisons_text(0.05, self.COMPARISONS[:1], ["one shape"]),
+                         "1 comparison of cases of 1 bed: 1 the paper's way by >= 2 standard errors, "
+                         "0 within 2, 0 against (one shape)")
+
+    def test_no_comparison_says_why_or_that_nothing_is_committed(self):
+        self.assertEqual(findings_table.comparisons_text(0.05, [None], ["not judged: why"]), "not judged: why")
+        self.assertEqual(findings_table.comparisons_text(0.05, [], []), "no committed results")
+
+    def test_the_answer_pages_verdict_reads_as_its_rule(self):
+        self.assertEqual(findings_table.verdict_cell(0.05, self.COMPARISONS, []),
+                         "**not reproduced**: 1 of 2 against (1 for, 0 within) (1-2 beds)")
+        self.assertEqual(findings_table.verdict_cell(0.05, self.COMPARISONS[:1], []), "**reproduced**: all 1 for (1 bed)")
+        self.assertEqual(findings_table.verdict_cell(0.05, [], ["why"]), "not judged")
+
+
+class ChangeWordsTest(unittest.TestCase):
+    """Which way a factor's change moves a cell (factor_tables)."""
+
+    BASE = [-0.047, -0.039]
+
+    def test_toward_away_or_within_by_two_standard_errors_the_papers_way(self):
+        self.assertEqual(factor_tables.toward_words(2.0), "toward the paper")
+        self.assertEqual(factor_tables.toward_words(-2.6), "away from the paper")
+        self.assertEqual(factor_tables.toward_words(1.9), "within the scatter")
+        self.assertEqual(factor_tables.toward_words(5.0, "1.1 se by its 2 beds' own scatter"), "within the scatter")
+
+    def test_a_change_resolved_on_sigma_but_not_by_its_own_beds_is_shown_within_the_scatter(self):
+        diff, z, toward, caveat = factor_tables.judged_change(compare("t", [-0.036, -0.009], self.BASE, +1), 0.008)
+        self.assertAlmostEqual(diff, 0.0205)
+        self.assertEqual((z, toward), (2.6, "within the scatter"))
+        self.assertEqual(caveat, "1.1 se by its 2 beds' own scatter, one bed's standard deviation 0.0191 "
+                                 "against sigma 0.0080")
+
+    def test_beds_that_agree_leave_it_toward_the_paper(self):
+        change = factor_tables.judged_change(compare("t", [-0.022, -0.023], self.BASE, +1), 0.008)
+        self.assertEqual(change[1:], (2.6, "toward the paper", ""))
+        self.assertEqual(factor_tables.change_text(change), "+0.0205 (2.6 se, toward the paper)")
+
+    def test_the_compared_rows_beds_are_named_when_theirs_scatter(self):
+        comparison = compare("t", [-0.022, -0.023], [-0.060, -0.026], +1)
+        caveat = factor_tables.judged_change(comparison, 0.008)[3]
+        self.assertTrue(caveat.startswith("0.9 se by the compared row's 2 beds' own scatter"), caveat)
+
+    def test_a_change_away_from_the_paper(self):
+        change = factor_tables.judged_change(compare("t", [-0.07, -0.07], self.BASE, +1), 0.008)
+        self.assertEqual(factor_tables.change_text(change), "-0.0270 (3.4 se, away from the paper)")
+
+    def test_where_a_period_stands_in_the_papers_range(self):
+        self.assertEqual([factor_tables.range_end(t, (3.0, 4.0)) for t in (3.0, 4.0, 5.0)],
+                         ["the lower end of", "the upper end of", "beside"])
+
+
+class CourseWordsTest(unittest.TestCase):
+    """How a rate holds through the paper's window, by its halves (answer_sentences)."""
+
+    def test_stalls_turns_back_faster_slower(self):
+        self.assertEqual(answer_sentences.course_words(0.070, 0.008), "then stalls")
+        self.assertEqual(answer_sentences.course_words(0.05, -0.03), "then turns back")
+        self.assertEqual(answer_sentences.course_words(-0.026, -0.056), "then faster")
+        self.assertEqual(answer_sentences.course_words(0.05, 0.03), "then slower")
+        # a quarter of the first half's rate is not yet a stall
+        self.assertEqual(answer_sentences.course_words(0.04, 0.01), "then slower")
+
+    def test_periods_that_go_alike_share_a_clause(self):
+        by_t = {3.0: [climbing(0.070, 0.008)], 4.0: [climbing(0.114, 0.004)], 5.0: [climbing(-0.02, -0.03)]}
+        self.assertEqual(answer_sentences.courses_text("square", by_t),
+                         ["the square climbs over t = 100-500 (+0.070 at T = 3, +0.114 at T = 4), then stalls over "
+                          "t = 500-1000 (+0.008, +0.004)",
+                          "the square sinks over t = 100-500 (-0.020 at T = 5), then faster over t = 500-1000 (-0.030)"])
+        self.assertEqual(len(answer_sentences.courses_text("square", by_t, ("then stalls", "then turns back"))), 1)
+
+
+class CrossingsSentenceTest(unittest.TestCase):
+    """Where the sign crossings lie against the paper's ranges, in a sentence."""
+
+    def crossing(self, shape, lo, hi, cells):
+        return (shape, lo, hi, findings.crossing_against_range(lo, hi, cases.PAPER_RANGE[shape]), cells)
+
+    def test_every_crossing_at_or_below_the_papers_lower_end_is_a_shift(self):
+        found = [self.crossing("disk", 2.0, 2.5, []), self.crossing("square", 2.5, 3.0, [])]
+        said = answer_sentences.crossings_sentence(found)
+        self.assertEqual(said, f"every crossing the runs place lies at or below the paper's lower end (disk 2-2.5 against "
+                               f"{cases.paper_observed('disk')}, square 2.5-3 against {cases.paper_observed('square')}): "
+                               "a shift to shorter periods")
+
+    def test_otherwise_each_placed_crossing_with_its_words_and_the_rest_after(self):
+        lo, hi = cases.PAPER_RANGE["square"]
+        found = [self.crossing("disk", 2.0, 2.5, []), self.crossing("square", hi, hi + 1, []),
+                 self.crossing("triangle", 5.0, None, [(3.0, [-0.1]), (5.0, [-0.1])])]
+        said = answer_sentences.crossings_sentence(found)
+        self.assertTrue(said.startswith(f"the crossings the runs place: disk 2-2.5, at or below the paper's lower end; "
+                                        f"square {hi:g}-{hi + 1:g}, above the paper's range; "), said)
+        self.assertTrue(said.endswith(f"the triangle's mean stays <= 0 up to T = 5 (paper: "
+                                      f"{cases.paper_observed('triangle')})"), said)
+        self.assertNotIn("triangle", answer_sentences.crossings_sentence(found, rest_too=False))
+
+
+class ReadmeWordsTest(unittest.TestCase):
+    """The README's paragraph: which list a shape's bracket goes in, and what the factors moved."""
+
+    def test_bracket_kinds(self):
+        paper = (3.0, 4.0)
+        self.assertEqual(answer_sentences.bracket_kind(3.0, 4.0, paper), "agrees")
+        self.assertEqual(answer_sentences.bracket_kind(3.0, 3.5, paper), "agrees")
+        self.assertEqual(answer_sentences.bracket_kind(None, None, paper), "never rises")
+        self.assertEqual(answer_sentences.bracket_kind(2.5, 3.0, paper), "differs")
+        self.assertEqual(answer_sentences.bracket_kind(None, 3.0, paper), "differs")
+        self.assertEqual(answer_sentences.bracket_kind(None, 3.5, paper), "not placed")
+
+    def test_what_the_factors_moved(self):
+        moved = ["the random pour moves the square at T = 3 toward the paper (2.4 se)"]
+        self.assertEqual(answer_sentences.moved_text(moved, []), moved[0])
+        self.assertEqual(answer_sentences.moved_text([], []), "none moves a cell by 2 standard errors")
+        self.assertEqual(answer_sentences.moved_text([], ["x by 2.6 se of sigma, why"]),
+                         "none moves a cell by 2 standard errors of its own beds' scatter (x by 2.6 se of sigma, why)")
+
+
+class VelocitySentenceTest(unittest.TestCase):
+    """Whether one bed a cell tells where the velocity reading crosses (answer_sentences)."""
+
+    def test_none_resolved_says_one_bed_does_not_tell(self):
+        said = answer_sentences.velocity_sentence({"disk": [(2.5, [0.001]), (3.0, [-0.015])], "square": []}, SIGMA)
+        self.assertTrue(said.startswith("At A = 5, read as a velocity, the disk gives +0.001, -0.015 at T = 2.5, 3 "
+                                        "(1 bed each: +0.1, -1.5 se), in standard errors"), said)
+        self.assertTrue(said.endswith("none is 2 se from zero, so one bed each does not tell whether, or where, "
+                                      "either crosses over the periods run."), said)
+
+    def test_one_resolved_either_way_is_shown_by_the_table(self):
+        said = answer_sentences.velocity_sentence({"disk": [(2.5, [0.001])], "square": [(3.0, [-0.02, -0.03])]}, SIGMA)
+        self.assertIn("the square gives -0.025 at T = 3 (2 beds each: -3.5 se)", said)
+        self.assertTrue(said.endswith("some are 2 se or more from zero, as the table above shows."), said)
+
+    def test_nothing_run_says_nothing(self):
+        self.assertEqual(answer_sentences.velocity_sentence({"disk": [], "square": []}, SIGMA), "")
+
+
+class WhatIsLeftTest(unittest.TestCase):
+    """What the factors measured in a cell account for, and what is left (answer_sentences)."""
+
+    TOWARD = ("the random pour", (0.02, 2.4, "toward the paper", ""))
+    WITHIN = ("the glued surface", (0.01, 1.2, "within the scatter", ""))
+    DOUBTED = ("the glued mass", (0.02, 2.6, "within the scatter", "1.1 se by its 2 beds' own scatter"))
+
+    def test_resolved_changes_are_named_with_their_way(self):
+        self.assertEqual(answer_sentences.what_moved([self.TOWARD, self.WITHIN]),
+                         "Resolved by 2 standard errors: the random pour, toward the paper. ")
+
+    def test_none_resolved_and_whether_by_its_own_beds_scatter(self):
+        self.assertEqual(answer_sentences.what_moved([self.WITHIN]), "No measured factor moves it by 2 standard errors. ")
+        self.assertEqual(answer_sentences.what_moved([self.WITHIN, self.DOUBTED]),
+                         "No measured factor moves it by 2 standard errors of its own beds' scatter. ")
+        self.assertEqual(answer_sentences.what_moved([]), "")
+
+    def test_on_the_papers_side_there_is_nothing_to_account_for(self):
+        self.assertEqual(answer_sentences.what_is_left([self.WITHIN], True, ""),
+                         "In the paper's box by its protocol the cell is on the paper's side.")
+
+    def test_none_toward_the_paper_leaves_all_of_it_some_leaves_the_rest(self):
+        self.assertEqual(answer_sentences.what_is_left([self.WITHIN], False, "the coupling"),
+                         "So none of the difference is accounted for: what is left is all of it: the coupling.")
+        self.assertEqual(answer_sentences.what_is_left([self.TOWARD, self.WITHIN], False, "the coupling"),
+                         "So not all of the difference is accounted for: what is left is the rest: the coupling.")
+
+    def test_the_coupling_screen_so_far(self):
+        within = (0.001, 0.5, "within the scatter", "the lattice body", "the square at T = 3", 2)
+        moved = (0.02, 3.0, "toward the paper", "turning", "the triangle at T = 5", 1)
+        self.assertEqual(answer_sentences.coupling_status([within, None]),
+                         "its screen being run, 1 change measured so far, on 2 beds each: none moves a cell by 2 "
+                         "standard errors so far; study/VALIDATION.md, \"The intruder's coupling\"")
+        self.assertEqual(answer_sentences.coupling_status([within, moved]),
+                         "its screen being run, 2 changes measured so far, on 1-2 beds each: the turning moves the "
+                         "triangle at T = 5 toward the paper; study/VALIDATION.md, \"The intruder's coupling\"")
+
+
+if __name__ == "__main__":
+    unittest.main()

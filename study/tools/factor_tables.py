@@ -1,0 +1,284 @@
+"""The factor tables of the answer page (study/VALIDATION.md): the protocol block, the preset's
+differences from the paper's stated protocol one at a time by the paper's clock (issue 51), and the
+coupling screen, the intruder's coupling to its grains as the paper's LAMMPS body had it (issue 79);
+each change in standard errors of the shape's sigma by the paper's clock, and which way it moves
+the cell against the paper's side there. The changes here are what the answer's sentences
+(answer_sentences.py) say of them.
+"""
+import findings
+from cases import (COUPLING, PAPER_BOX, PAPER_RANGE, SO_FAR_FROM, T1000_BEDS, T1000_WINDOWS, beds, cell_text, chord,
+                   committed, head_lines, paper_observed, row_line, select, so_far, unfinished)
+from findings import RESOLVED
+from scatter import PAPER_SIDE, clock_sigma, scatter_words
+from table_kinds import windows
+
+# The paper's own protocol (issue 51): the preset's differences from the paper's stated protocol,
+# one at a time at t = 1000, for the two cells that disagree most with the paper (the square at T = 3
+# rises where the paper's Table 1 has it not rising yet; the triangle at T = 5 sinks where the paper's
+# rises), then all of them together in the preset's 60 d box and in the paper's own 300 d box.
+PROTOCOL_FOLDERS = ["results/paper_depth/mass_t1000", "results/paper_depth/factors_t1000"] + PAPER_BOX
+PRESET_PROTOCOL = {"intruder.surface": "smooth", "bed.pour": "lattice", "intruder.mass_rule": "disk_area"}
+PAPER_PROTOCOL = {"intruder.surface": "glued", "bed.pour": "random", "intruder.mass_rule": "glued_disk"}
+# (what changes from the preset, in the table and in a sentence; its cases: folders and the keys that
+# differ; paired: run on the baseline's own beds, so compared with the baseline's runs of the same seeds only)
+PROTOCOL_ROWS = [
+    ("none: the preset (baseline)", "the preset", T1000_BEDS, {}, False),
+    ("the glued disk's mass, 9.88 (on the baseline's own bed)", "the glued disk's mass (9.88 against 25.66, same bed)",
+     ["results/paper_depth/mass_t1000"], {"intruder.mass_rule": "glued_disk"}, True),
+    ("the glued 0.5 d surface (new pour)", "the glued 0.5 d surface", ["results/paper_depth/factors_t1000"],
+     {"intruder.surface": "glued"}, False),
+    ("the random pour (new pour)", "the random pour", ["results/paper_depth/factors_t1000"], {"bed.pour": "random"}, False),
+    ("all three: the paper's protocol in the 60 d box", "the paper's protocol in the 60 d box",
+     ["results/paper_depth/factors_t1000"], PAPER_PROTOCOL, False),
+    ("the paper's protocol in its own 300 d box", "the paper's protocol in its own 300 d box", PAPER_BOX,
+     PAPER_PROTOCOL, False),
+]
+# shape, T, the paper's sign of V_y there
+PROTOCOL_CELLS = [(shape, t, findings.paper_side(t, PAPER_RANGE[shape])) for shape, t in [("square", 3.0), ("triangle", 5.0)]]
+# The box's width alone: the last row (the paper's protocol in its 300 d box) against the row before
+# it (the same protocol in the 60 d box), said beside the last row's change from the preset.
+BOX_ROW, BOX_AGAINST = len(PROTOCOL_ROWS) - 1, len(PROTOCOL_ROWS) - 2
+BOX_ALONE = "the 300 d box alone (against the paper's protocol in the 60 d box)"
+PROTOCOL_CELL_KEYS = [(shape, period) for shape, period, _ in PROTOCOL_CELLS]
+
+
+def protocol_beds(folders, where):
+    """{seed: V_y} of a protocol row's cell (only the folders committed so far)."""
+    present = committed(folders)
+    return {c.get("box.seed"): float(c.get("vy")) for c in beds(select(present, where), f"{present} {where}")}
+
+
+def protocol_cell(shape, period):
+    """The keys of one of PROTOCOL_CELLS' cases (A = 5)."""
+    return {"intruder.shape": shape, "drive.amplitude": 5.0, "drive.period": period}
+
+
+def row_where(row, shape, period):
+    """The keys of a case of PROTOCOL_ROWS[row] in the cell (shape, T)."""
+    return dict(PRESET_PROTOCOL, **PROTOCOL_ROWS[row][3], **protocol_cell(shape, period))
+
+
+def protocol_so_far_cell(row, shape, period):
+    """A cell of PROTOCOL_ROWS[row] not finished yet whose case is on its way: its rate so far, by the
+    paper's rule over t = 100 to its last committed sample, beside the baseline's over the same window
+    (and, in the 300 d box's row, the 60 d box's: BOX_ALONE); "" when none."""
+    compared = [(0, "the baseline")] + ([(BOX_AGAINST, "the 60 d box's")] if row == BOX_ROW else [])
+    on_way = [c for f in committed(PROTOCOL_ROWS[row][2]) for c in unfinished(f)
+              if all(c.get(k) == v for k, v in row_where(row, shape, period).items())]
+    parts = []
+    for c in on_way:
+        t_now, rate = so_far(c)
+        if rate is None:
+            continue
+        window = chord(100.0, t_now)
+        beside = []
+        for i, name in compared:
+            keys = row_where(i, shape, period)
+            done = beds(select(committed(PROTOCOL_ROWS[i][2]), keys), f"{name} {keys}")
+            if done:
+                beside.append(f"{name} {cell_text([window(b) for b in done])}")
+        parts.append(f"not finished, t = {t_now:g} of 1000 so far: over t = 100-{t_now:g} {cell_text([rate])}, "
+                     + ", ".join(beside))
+    return "; ".join(parts)
+
+
+# Which way a change moves a cell, by the side of zero of its standard errors the paper's way
+TOWARD = {+1: "toward the paper", -1: "away from the paper", 0: "within the scatter"}
+
+
+def protocol_change(row, shape, period, paper_sign, sig, against=0):
+    """One cell of PROTOCOL_ROWS[row]: (its V_y values, or [] when none is committed; the change from
+    row `against` (the baseline unless said), its size in standard errors and which way it moves the
+    cell), the change None for the compared row itself or while that row has no values."""
+    def row_beds(i):
+        return protocol_beds(PROTOCOL_ROWS[i][2], row_where(i, shape, period))
+    beds_of_row = row_beds(row)
+    values = list(beds_of_row.values())
+    if not values or row == against:
+        return values, None
+    compared = row_beds(against)
+    paired = PROTOCOL_ROWS[row][4]
+    base = [v for seed, v in compared.items() if seed in beds_of_row] if paired else list(compared.values())
+    if not base:
+        return values, None
+    return values, judged_change(findings.Comparison(shape, values, base, paper_sign), sig)
+
+
+def judged_change(comparison, sig):
+    """(the change, its size in standard errors, which way it moves the cell, the own-scatter caveat
+    or "") of a protocol row's comparison with the row it is compared with."""
+    diff, z, _ = findings.judged(comparison, sig)
+    caveat = own_scatter_caveat(comparison, z, sig)
+    return diff, abs(z), toward_words(z, caveat), caveat
+
+
+def toward_words(z, caveat=""):
+    """Which way a change of z standard errors (the paper's way) moves its cell; within the scatter,
+    whatever z, where a caveat says its own beds do not resolve it."""
+    return TOWARD[0 if caveat else findings.resolved_side(z)]
+
+
+def own_scatter_caveat(comparison, z, sig):
+    """The words that say a change resolved on the scale's sigma is not resolved by its own beds'
+    larger scatter (findings.own_scatter_judged), else ""."""
+    doubt = findings.own_scatter_judged(comparison, z, sig)
+    if doubt is None:
+        return ""
+    side, n, own, z_own = doubt
+    whose = {"a": "its", "b": "the compared row's"}[side]
+    return (f"{abs(z_own):.1f} se by {whose} {n} beds' own scatter, one bed's standard deviation {own:.4f} "
+            f"against sigma {sig:.4f}")
+
+
+def protocol_row(case):
+    """(shape, T, the index of its PROTOCOL_ROWS row) of a case of one of the protocol block's cells,
+    None for any other case of its folders."""
+    cell = (case.get("intruder.shape"), case.get("drive.period"))
+    if cell not in PROTOCOL_CELL_KEYS:
+        return None
+    for i, (_, _, folders, keys, _) in enumerate(PROTOCOL_ROWS):
+        if case.source in folders and all(case.get(k) == v for k, v in dict(PRESET_PROTOCOL, **keys).items()):
+            return cell + (i,)
+    return None
+
+
+def box_alone_change(shape, period, paper_sign, sig):
+    """BOX_ALONE's change in one cell, as protocol_change gives it; None while either row has no value."""
+    return protocol_change(BOX_ROW, shape, period, paper_sign, sig, against=BOX_AGAINST)[1]
+
+
+def change_text(change):
+    diff, z, toward, caveat = change
+    return f"{diff:+.4f} ({z:.1f} se, {toward}" + (f": {caveat}" if caveat else "") + ")"
+
+
+def protocol_cells_text():
+    """'the square not rising at T = 3 (the lower end of its 3-4) and ...': what the paper's Table 1 says
+    at the protocol block's cells."""
+    return " and ".join(f"the {shape} {PAPER_SIDE[sign]} at T = {period:g} ({range_end(period, PAPER_RANGE[shape])} "
+                        f"its {paper_observed(shape)})" for shape, period, sign in PROTOCOL_CELLS)
+
+
+def range_end(period, paper_range):
+    """Where a period stands in the paper's range (lo, hi): 'the lower end of', 'the upper end of', 'beside'."""
+    lo, hi = paper_range
+    return "the lower end of" if period == lo else "the upper end of" if period == hi else "beside"
+
+
+def answer_protocol(spec):
+    """The factor table: each row's V_y per cell, its change from the baseline in standard errors of
+    the paper's clock (one bed's sigma of that shape there), and whether it moves the cell toward the
+    paper's side."""
+    lines = head_lines(["what changes"] + [f"{s}, A = 5, T = {t:g}: V_y; change (se)" for s, t, _ in PROTOCOL_CELLS])
+    for row, (label, *_) in enumerate(PROTOCOL_ROWS):
+        cells = []
+        for shape, period, paper_sign in PROTOCOL_CELLS:
+            sig = clock_sigma(shape)
+            values, change = protocol_change(row, shape, period, paper_sign, sig)
+            box = box_alone_change(shape, period, paper_sign, sig) if row == BOX_ROW else None
+            if not values:
+                cells.append(protocol_so_far_cell(row, shape, period) or "not run yet")
+            elif change is None:
+                cells.append(cell_text(values))
+            else:
+                cells.append(f"{cell_text(values)}; {change_text(change)}"
+                             + (f"; the box alone: {change_text(box)}" if box else ""))
+        lines.append(row_line([label] + cells))
+    few = findings.OWN_SCATTER_BEDS - 1
+    few_beds = f"2 to {few} beds" if few > 2 else "2 beds"
+    shapes = list(dict.fromkeys(s for s, _, _ in PROTOCOL_CELLS))
+    lines += ["", f"(V_y over t = 100-1000 of runs to t = 1000, A = 5 d. The paper's Table 1 has {protocol_cells_text()}. "
+              f"A change is the row's mean minus the baseline's, in standard errors se = sigma sqrt(1/n_row + 1/n_baseline), "
+              "sigma " + scatter_words(shapes) + ". The mass's change is against the baseline's run on the same bed, "
+              "with the same sigma, which its pairing is expected to make smaller (not measured); the 300 d box's "
+              "sigma is taken as the 60 d box's (one bed per cell there, so not measured); the box alone is the "
+              "300 d box's row against the 60 d box's row of the same protocol; a change moves the "
+              f"cell toward the paper's side when >= {RESOLVED:g} se that way, also by the own standard deviation of "
+              f"a side of {few_beds} where that is larger than sigma (from "
+              f"{findings.OWN_SCATTER_BEDS} beds on, a side's own scatter counts in its se as everywhere on this page). "
+              f"A case not finished yet is shown by the paper's rule over t = 100 to its last committed sample, beside "
+              f"the baseline's over the same window (and the 60 d box's, in the 300 d box's row), once that window spans "
+              f"{SO_FAR_FROM:g}: a rate so far, not judged)"]
+    return lines, committed(PROTOCOL_FOLDERS + T1000_BEDS)
+
+
+# ---- the coupling screen
+
+# The coupling screen (issue 79): each factor on the factor screen's beds of the paper's protocol in the
+# 60 d box, paired bed by bed with that protocol's own run there (its `*_paper` cases; the square at
+# T = 4, the control, has its baseline in COUPLING).
+COUPLING_CELLS = [("square", 3.0), ("triangle", 5.0), ("square", 4.0)]
+COUPLING_BASE = dict(PAPER_PROTOCOL, **{"intruder.contact_mass": "body", "intruder.rotation": "locked",
+                                        "drive.form": "displacement"})
+COUPLING_ROWS = [('the atoms\' mass in the contacts (intruder.contact_mass = "atom")', {"intruder.contact_mass": "atom"}),
+                 ('the lattice body (intruder.surface = "lattice", on the same bed)', {"intruder.surface": "lattice"}),
+                 ('turning (intruder.rotation = "free")', {"intruder.rotation": "free"}),
+                 ('the drive read as a velocity (drive.form = "velocity")', {"drive.form": "velocity"})]
+
+
+def coupling_beds(shape, period, changes):
+    """{seed: V_y} of the coupling screen's cell with `changes` from the paper's protocol (none: its baseline)."""
+    where = dict(COUPLING_BASE, **changes, **{"intruder.shape": shape, "drive.period": period, "drive.amplitude": 5.0,
+                                              "box.width": 60.0})
+    return protocol_beds(COUPLING + ["results/paper_depth/factors_t1000"], where)
+
+
+def coupling_change(shape, period, changes):
+    """(change, z, which way, the factor's short name, the cell) of a coupling row in one cell, over the beds it
+    shares with the baseline; None while there are none."""
+    values, base = coupling_beds(shape, period, changes), coupling_beds(shape, period, {})
+    paired = sorted(set(values) & set(base))
+    if not paired:
+        return None
+    paper_sign = findings.paper_side(period, PAPER_RANGE[shape])
+    comparison = findings.Comparison(shape, [values[b] for b in paired], [base[b] for b in paired], paper_sign)
+    diff, z, _ = findings.judged(comparison, clock_sigma(shape))
+    # no own-scatter caveat here, as before the split: the sides are paired bed by bed (answer_coupling's note)
+    toward = toward_words(z)
+    name = next(label.split(" (")[0] for label, c in COUPLING_ROWS if c == changes)
+    return diff, z, toward, name, f"the {shape} at T = {period:g}", len(paired)
+
+
+def answer_coupling(spec):
+    """The coupling screen: each factor's V_y per bed and its change from the paper's protocol on the
+    same beds, in standard errors of the shape's sigma by the paper's clock, and which way it moves the
+    cell against the paper's side there."""
+    lines = head_lines(["what changes"] + [f"{s}, A = 5, T = {t:g}: V_y; change (se)" for s, t in COUPLING_CELLS])
+    rows = [("none: the paper's protocol in the 60 d box (baseline)", {})] + COUPLING_ROWS
+    for label, changes in rows:
+        cells = []
+        for shape, period in COUPLING_CELLS:
+            values = coupling_beds(shape, period, changes)
+            if not values:
+                cells.append("not run yet")
+                continue
+            each = ", ".join(f"{v:+.4f} (bed {seed:g})" for seed, v in sorted(values.items()))
+            change = coupling_change(shape, period, changes) if changes else None
+            if not change:
+                cells.append(each)
+                continue
+            diff, z, toward, _, _, paired = change
+            cells.append(f"{each}; {diff:+.4f} ({abs(z):.1f} se, {toward}; {paired} bed{'s' if paired > 1 else ''} paired)")
+        lines.append(row_line([label] + cells))
+    shapes = list(dict.fromkeys(s for s, _ in COUPLING_CELLS))
+    lines += ["", "(V_y over t = 100-1000 of runs to t = 1000, A = 5 d, on the factor screen's beds of the paper's "
+              "protocol in the 60 d box (random pour, glued 0.5 d shell, the glued disk's mass 9.88; bed = box.seed); "
+              "study/sweeps/paper_depth_coupling_t1000.toml. The paper's side: not rising at T = 3 for the square "
+              "(the lower end of its 3-4), rising at T = 4; rising at T = 5 for the triangle (the upper end of its 4-5). "
+              "A change is the row's mean minus the baseline's over the beds both have, in standard errors se = sigma "
+              "sqrt(1/n + 1/n), sigma " + scatter_words(shapes) + ". The pairing on one bed is expected to make a "
+              f"change's own scatter smaller than that (not measured). A change moves the cell toward the paper's side "
+              f"when >= {RESOLVED:g} se that way)"]
+    return lines, committed(COUPLING + ["results/paper_depth/factors_t1000"])
+
+
+TABLES = [
+    {"name": "answer_protocol", "kind": answer_protocol, "sources": PROTOCOL_FOLDERS + T1000_BEDS},
+    {"name": "answer_coupling", "kind": answer_coupling, "sources": COUPLING + ["results/paper_depth/factors_t1000"]},
+    # The protocol block's cases in the thirds of the paper's window, as depth_t1000_windows the preset's
+    {"name": "protocol_windows", "kind": windows, "sources": T1000_BEDS + PROTOCOL_FOLDERS,
+     "where": {"drive.amplitude": 5.0}, "row": protocol_row,
+     "row_sort": lambda r: (PROTOCOL_CELL_KEYS.index(r[:2]), r[2]),
+     "row_head": ["shape", "T", "what changes"],
+     "row_label": lambda r: (r[0], f"{r[1]:g}", PROTOCOL_ROWS[r[2]][1]), "windows": T1000_WINDOWS},
+]
