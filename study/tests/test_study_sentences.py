@@ -272,6 +272,21 @@ class WhatIsLeftTest(unittest.TestCase):
         self.assertEqual(answer_sentences.what_is_left([self.TOWARD, self.WITHIN], False, "the coupling"),
                          "So not all of the difference is accounted for: what is left is the rest: the coupling.")
 
+    def test_a_coupling_factor_toward_the_paper_is_named_with_where_it_has_run(self):
+        lattice = (0.11, 10.2, "toward the paper", "the lattice body", "the triangle at T = 5", 2)
+        self.assertEqual(answer_sentences.what_is_left([self.WITHIN], False, "the rest", [(lattice, None)]),
+                         "So the protocol's factors account for none of the difference; the intruder's coupling may: "
+                         "the lattice body moves it +0.1100 (10.2 se, toward the paper; 2 beds paired) in the 60 d box; "
+                         "in the paper's box: not run yet. Left beside it: the rest.")
+        self.assertEqual(answer_sentences.what_is_left([self.TOWARD], False, "the rest", [(lattice, (0.02, -0.04))]),
+                         "So the protocol's factors account for not all of the difference; the intruder's coupling may: "
+                         "the lattice body moves it +0.1100 (10.2 se, toward the paper; 2 beds paired) in the 60 d box; "
+                         "in the paper's box: V_y +0.0200 against the protocol's -0.0400 on the same bed (one bed). "
+                         "Left beside it: the rest.")
+        # on the paper's side there is nothing to account for, whatever the coupling does
+        self.assertEqual(answer_sentences.what_is_left([self.WITHIN], True, "", [(lattice, None)]),
+                         "In the paper's box by its protocol the cell is on the paper's side.")
+
     def test_the_coupling_screen_so_far(self):
         within = (0.001, 0.5, "within the scatter", "the lattice body", "the square at T = 3", 2)
         moved = (0.02, 3.0, "toward the paper", "turning", "the triangle at T = 5", 1)

@@ -13,8 +13,8 @@ from cases import (CLOCK_A3, CLOCK_A5, COUPLING, DEPTH_A5, PAPER_RANGE, SHAPES, 
                    T1000_BEDS, Cell, beds, beds_count, beds_text, by_period, cell_text, committed, count_range, load,
                    mean, paper_observed, select, so_far)
 from factor_tables import (BOX_ALONE, BOX_ROW, COUPLING_CELLS, COUPLING_ROWS, PROTOCOL_CELLS, PROTOCOL_FOLDERS,
-                           PROTOCOL_ROWS, box_alone_change, change_text, coupling_change, protocol_beds,
-                           protocol_change, row_where)
+                           PROTOCOL_ROWS, box_alone_change, change_text, coupling_change, paper_box_coupling,
+                           protocol_beds, protocol_change, row_where)
 from findings import RESOLVED
 from findings_table import FINDING_SOURCES, against_findings, paper_findings
 from scatter import (PAPER_SIDE, SHAPE_NAMES, beds_z_text, clock_scatter, clock_sigma, depth_sigma,
@@ -377,8 +377,30 @@ def factors_text(shape, period, paper_sign, sig, box_values):
     text += what_moved(changes)
     if box_values:
         on_side = findings.on_paper_side(box_values, sig, paper_sign)
-        text += what_is_left(changes, on_side, "" if on_side else unmeasured())
+        coupling = coupling_toward(shape, period)
+        text += what_is_left(changes, on_side, "" if on_side else UNMEASURED if coupling else unmeasured(), coupling)
     return text
+
+
+def coupling_toward(shape, period):
+    """[(coupling_change's change, its paper-box reading: paper_box_coupling's)] of the coupling rows that
+    move the cell toward the paper by RESOLVED standard errors in the 60 d box."""
+    found = []
+    for _, changes in COUPLING_ROWS:
+        change = coupling_change(shape, period, changes)
+        if change and change[2] == "toward the paper":
+            found.append((change, paper_box_coupling(shape, period, changes)))
+    return found
+
+
+def coupling_words(change, paper_box):
+    """One coupling factor that moves a cell toward the paper, in words: its change on the 60 d box's
+    paired beds and what it gives in the paper's own box (paper_box: (V_y, the protocol's) or None)."""
+    diff, z, _, name, _, paired = change
+    box = ("not run yet" if paper_box is None else
+           f"V_y {paper_box[0]:+.4f} against the protocol's {paper_box[1]:+.4f} on the same bed (one bed)")
+    return (f"{name} moves it {diff:+.4f} ({abs(z):.1f} se, toward the paper; {beds_count([paired])} paired) in the "
+            f"60 d box; in the paper's box: {box}")
 
 
 def what_moved(changes):
@@ -394,13 +416,19 @@ def what_moved(changes):
     return ""
 
 
-def what_is_left(changes, on_side, unmeasured_words):
+def what_is_left(changes, on_side, unmeasured_words, coupling=()):
     """Whether a cell's changes account for the paper's box differing from the paper there: nothing to
     account for when the box's cell is on the paper's side (on_side); else none of the difference
-    (no change moves it toward the paper) or not all, and what is left (unmeasured_words)."""
+    (no change moves it toward the paper) or not all, and what is left (unmeasured_words). Where a
+    coupling factor moves the cell toward the paper (coupling: coupling_toward's), it is named as what
+    may account for the difference, with where it has been run."""
     if on_side:
         return "In the paper's box by its protocol the cell is on the paper's side."
     toward = any(c[2] == "toward the paper" for _, c in changes)
+    if coupling:
+        return (f"So the protocol's factors account for {'none' if not toward else 'not all'} of the difference; "
+                "the intruder's coupling may: " + "; ".join(coupling_words(c, box) for c, box in coupling)
+                + f". Left beside it: {unmeasured_words}.")
     return ("So " + ("none" if not toward else "not all") + " of the difference is accounted for: what is left "
             f"is {'all of it' if not toward else 'the rest'}: {unmeasured_words}.")
 

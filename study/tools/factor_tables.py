@@ -239,6 +239,22 @@ def coupling_change(shape, period, changes):
     return diff, z, toward, name, f"the {shape} at T = {period:g}", len(paired)
 
 
+# Where a coupling factor moves a 60 d cell toward the paper, it is run in the paper's own box
+# (issue 79, item 5; study/sweeps/paper_box_lattice_t1000.toml), each case on paper_box_t1000's bed of
+# its shape.
+PAPER_BOX_COUPLING = ["results/paper_box/lattice_t1000"]
+
+
+def paper_box_coupling(shape, period, changes):
+    """(V_y, the paper's protocol's V_y on the same bed) of a coupling row's case in the paper's own box;
+    None while it has not finished there."""
+    where = dict(COUPLING_BASE, **{"intruder.shape": shape, "drive.period": period, "drive.amplitude": 5.0,
+                                   "box.width": 300.0})
+    changed, base = protocol_beds(PAPER_BOX_COUPLING, dict(where, **changes)), protocol_beds(PAPER_BOX, where)
+    paired = sorted(set(changed) & set(base))
+    return (changed[paired[0]], base[paired[0]]) if paired else None
+
+
 def answer_coupling(spec):
     """The coupling screen: each factor's V_y per bed and its change from the paper's protocol on the
     same beds, in standard errors of the shape's sigma by the paper's clock, and which way it moves the
