@@ -294,8 +294,12 @@ class WhatIsLeftTest(unittest.TestCase):
                          "its screen being run, 1 change measured so far, on 2 beds each: none moves a cell by 2 "
                          "standard errors so far; study/VALIDATION.md, \"The intruder's coupling\"")
         self.assertEqual(answer_sentences.coupling_status([within, moved]),
-                         "its screen being run, 2 changes measured so far, on 1-2 beds each: the turning moves the "
+                         "its screen being run, 2 changes measured so far, on 1-2 beds each: turning moves the "
                          "triangle at T = 5 toward the paper; study/VALIDATION.md, \"The intruder's coupling\"")
+        # a factor's name carries its own article: it is not doubled
+        lattice = (0.11, 7.1, "toward the paper", "the lattice body", "the triangle at T = 5", 1)
+        self.assertIn("each: the lattice body moves the triangle at T = 5 toward the paper",
+                      answer_sentences.coupling_status([lattice]))
 
 
 if __name__ == "__main__":
