@@ -295,10 +295,11 @@ class WhatIsLeftTest(unittest.TestCase):
                          "standard errors so far; study/VALIDATION.md, \"The intruder's coupling\"")
         self.assertEqual(answer_sentences.coupling_status([within, moved]),
                          "its screen being run, 2 changes measured so far, on 1-2 beds each: turning moves the "
-                         "triangle at T = 5 toward the paper; study/VALIDATION.md, \"The intruder's coupling\"")
+                         "triangle at T = 5 toward the paper (+0.020, 3.0 se, in the 60 d box); study/VALIDATION.md, "
+                         "\"The intruder's coupling\"")
         # a factor's name carries its own article: it is not doubled
         lattice = (0.11, 7.1, "toward the paper", "the lattice body", "the triangle at T = 5", 1)
-        self.assertIn("each: the lattice body moves the triangle at T = 5 toward the paper",
+        self.assertIn("each: the lattice body moves the triangle at T = 5 toward the paper (+0.110, 7.1 se",
                       answer_sentences.coupling_status([lattice]))
 
 

@@ -344,7 +344,8 @@ def coupling_status(changes):
     return (f"its screen being run, {len(changes)} change{'s' if len(changes) > 1 else ''} measured so far, on "
             f"{beds_count(c[5] for c in changes)} each: "
             + (f"none moves a cell by {RESOLVED:g} standard errors so far" if not moved else
-               "; ".join(f"{c[3]} moves {c[4]} {c[2]}" for c in moved))
+               "; ".join(f"{c[3]} moves {c[4]} {c[2]} ({c[0]:+.3f}, {abs(c[1]):.1f} se, in the 60 d box)"
+                         for c in moved))
             + "; study/VALIDATION.md, \"The intruder's coupling\"")
 
 
