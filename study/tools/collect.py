@@ -1,11 +1,13 @@
 #!/usr/bin/python3
 """Copy a sweep's results (not its checkpoints or dumps) into the repository, so they outlive the machine.
 
-    study/tools/collect.py SWEEP_DIR DEST [--fields] [--carry]
+    study/tools/collect.py SWEEP_DIR DEST [--fields] [--phase] [--carry]
 
 Copies SWEEP_DIR/results.csv, cells.csv (where the sweep wrote one) and sweep.log, and for every case directory the files that are the
-result and how it was made: config.toml, summary.json, trajectory.csv, phase_rates.csv, model.json,
-log.txt (a case still running contributes its config and log only); with --fields also each case's
+result and how it was made: config.toml, summary.json, trajectory.csv and log.txt (a case still running
+contributes its config and log only; model.json, the cavity model's, `wiggle model` remakes from the
+config); with --phase also each case's phase_rates.csv, for a study whose tables read the phase
+profile (figure 8); with --fields also each case's
 fields.csv (about 2 MB at the default grid), for a study whose result is its field maps. Checkpoints, dumps and beds
 stay behind: they are large and any of them can be made again from the config, bit for bit.
 Run it again as the sweep goes on; it overwrites what it copied before, except that DEST/sweep.log
@@ -31,7 +33,7 @@ import shutil
 import sys
 import tomllib
 
-CASE_FILES = ("config.toml", "summary.json", "trajectory.csv", "phase_rates.csv", "model.json", "log.txt")
+CASE_FILES = ("config.toml", "summary.json", "trajectory.csv", "log.txt")
 
 
 def merged_log(earlier, current):
@@ -127,13 +129,14 @@ def carry(src, dest):
 def main():
     args = sys.argv[1:]
     with_fields = "--fields" in args
+    with_phase = "--phase" in args
     with_carry = "--carry" in args
-    args = [a for a in args if a not in ("--fields", "--carry")]
+    args = [a for a in args if a not in ("--fields", "--phase", "--carry")]
     if len(args) != 2:
         print("usage: " + __doc__.strip().splitlines()[2].strip(), file=sys.stderr)
         sys.exit(2)
     src, dest = args
-    files = CASE_FILES + (("fields.csv",) if with_fields else ())
+    files = CASE_FILES + (("phase_rates.csv",) if with_phase else ()) + (("fields.csv",) if with_fields else ())
     if not os.path.isfile(os.path.join(src, "results.csv")):
         print(f"collect: {src} is not a sweep directory (no results.csv)", file=sys.stderr)
         sys.exit(2)
