@@ -148,7 +148,8 @@ def paper_box_shapes():
 
 # How a run's rate holds through the paper's window: V_y by the paper's rule over its halves
 HALVES = ((100.0, 500.0), (500.0, 1000.0))
-PAPER_BOX_FIGURE = "`wiggle plot results/paper_box/t1000 --out DIR` draws the trajectories, DIR/trajectories.png"
+PAPER_BOX_FIGURE = ("the trajectories: study/figures/paper_box_t1000_trajectories.png, redrawn by "
+                    "`wiggle plot results/paper_box/t1000 --out DIR` as DIR/trajectories.png")
 
 
 def halves_text():
