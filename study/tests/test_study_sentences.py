@@ -302,6 +302,28 @@ class WhatIsLeftTest(unittest.TestCase):
         self.assertIn("each: the lattice body moves the triangle at T = 5 toward the paper (+0.110, 7.1 se",
                       answer_sentences.coupling_status([lattice]))
 
+    def test_the_paired_changes_own_scatter_is_pooled_by_shape(self):
+        # made-up screen: (V_y with the change, the baseline's) per bed, by cell and factor
+        screen = {("square", 3.0, "intruder.contact_mass"): ([0.019, 0.018], [0.023, 0.022]),   # changes -0.004, -0.004
+                  ("square", 4.0, "intruder.contact_mass"): ([0.066], [0.050]),                 # one bed: tells nothing
+                  ("triangle", 5.0, "intruder.contact_mass"): ([-0.024, -0.025], [-0.030, -0.030]),   # +0.006, +0.005
+                  ("triangle", 5.0, "intruder.surface"): ([0.078, 0.081], [-0.030, -0.030])}          # +0.108, +0.111
+
+        def made_up(shape, period, changes):
+            return screen.get((shape, period, next(iter(changes))), ([], []))
+        real, factor_tables.coupling_paired = factor_tables.coupling_paired, made_up
+        try:
+            self.assertEqual(factor_tables.paired_scatter("square")[1], 1)
+            self.assertAlmostEqual(factor_tables.paired_scatter("square")[0], 0.0, places=12)
+            sigma, dof = factor_tables.paired_scatter("triangle")
+            # squares (0.0005^2 x 2) + (0.0015^2 x 2) over 1 + 1 degrees of freedom
+            self.assertEqual(dof, 2)
+            self.assertAlmostEqual(sigma, ((0.0005 ** 2 * 2 + 0.0015 ** 2 * 2) / 2) ** 0.5)
+            self.assertIn("square 0.0000 (1 dof), triangle 0.0016 (2 dof), disk not measured yet; the rule keeps",
+                          factor_tables.paired_scatter_words(["square", "triangle", "disk"]))
+        finally:
+            factor_tables.coupling_paired = real
+
 
 if __name__ == "__main__":
     unittest.main()

@@ -223,20 +223,46 @@ def coupling_beds(shape, period, changes):
     return protocol_beds(COUPLING + ["results/paper_depth/factors_t1000"], where)
 
 
+def coupling_paired(shape, period, changes):
+    """([V_y with `changes`], [the baseline's V_y]) over the beds both have, in bed order."""
+    values, base = coupling_beds(shape, period, changes), coupling_beds(shape, period, {})
+    paired = sorted(set(values) & set(base))
+    return [values[b] for b in paired], [base[b] for b in paired]
+
+
 def coupling_change(shape, period, changes):
     """(change, z, which way, the factor's short name, the cell) of a coupling row in one cell, over the beds it
     shares with the baseline; None while there are none."""
-    values, base = coupling_beds(shape, period, changes), coupling_beds(shape, period, {})
-    paired = sorted(set(values) & set(base))
-    if not paired:
+    values, base = coupling_paired(shape, period, changes)
+    if not values:
         return None
     paper_sign = findings.paper_side(period, PAPER_RANGE[shape])
-    comparison = findings.Comparison(shape, [values[b] for b in paired], [base[b] for b in paired], paper_sign)
+    comparison = findings.Comparison(shape, values, base, paper_sign)
     diff, z, _ = findings.judged(comparison, clock_sigma(shape))
     # no own-scatter caveat here, as before the split: the sides are paired bed by bed (answer_coupling's note)
     toward = toward_words(z)
     name = next(label.split(" (")[0] for label, c in COUPLING_ROWS if c == changes)
-    return diff, z, toward, name, f"the {shape} at T = {period:g}", len(paired)
+    return diff, z, toward, name, f"the {shape} at T = {period:g}", len(values)
+
+
+def paired_scatter(shape):
+    """(one bed's standard deviation of a paired change, its degrees of freedom) of `shape`, pooled over the
+    coupling screen's changes measured on two beds or more: how far one bed's change strays from the
+    cell's mean change. dof 0 while no change has two beds."""
+    groups = [[a - b for a, b in zip(*coupling_paired(s, period, changes))]
+              for s, period in COUPLING_CELLS if s == shape for _, changes in COUPLING_ROWS]
+    sigma, dof, _ = findings.pooled_sd(groups)
+    return sigma, dof
+
+
+def paired_scatter_words(shapes):
+    """The measured scatter of the paired changes, shape by shape, beside the rule's sigma."""
+    measured = [(shape, *paired_scatter(shape)) for shape in shapes]
+    each = ", ".join(f"{shape} {sigma:.4f} ({dof} dof)" if dof else f"{shape} not measured yet"
+                     for shape, sigma, dof in measured)
+    return ("The pairing on one bed makes a change's own scatter smaller than that: one bed's standard deviation "
+            f"of a change, pooled over this table's changes of two beds or more, {each}; the rule keeps the "
+            "shape's sigma, the larger")
 
 
 # Where a coupling factor moves a 60 d cell toward the paper, it is run in the paper's own box
@@ -282,9 +308,8 @@ def answer_coupling(spec):
               "study/sweeps/paper_depth_coupling_t1000.toml. The paper's side: not rising at T = 3 for the square "
               "(the lower end of its 3-4), rising at T = 4; rising at T = 5 for the triangle (the upper end of its 4-5). "
               "A change is the row's mean minus the baseline's over the beds both have, in standard errors se = sigma "
-              "sqrt(1/n + 1/n), sigma " + scatter_words(shapes) + ". The pairing on one bed is expected to make a "
-              f"change's own scatter smaller than that (not measured). A change moves the cell toward the paper's side "
-              f"when >= {RESOLVED:g} se that way)"]
+              "sqrt(1/n + 1/n), sigma " + scatter_words(shapes) + ". " + paired_scatter_words(shapes) + ". A change "
+              f"moves the cell toward the paper's side when >= {RESOLVED:g} se that way)"]
     return lines, committed(COUPLING + ["results/paper_depth/factors_t1000"])
 
 
