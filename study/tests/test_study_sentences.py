@@ -319,7 +319,7 @@ class WhatIsLeftTest(unittest.TestCase):
             # squares (0.0005^2 x 2) + (0.0015^2 x 2) over 1 + 1 degrees of freedom
             self.assertEqual(dof, 2)
             self.assertAlmostEqual(sigma, ((0.0005 ** 2 * 2 + 0.0015 ** 2 * 2) / 2) ** 0.5)
-            self.assertIn("square 0.0000 (1 dof), triangle 0.0016 (2 dof), disk not measured yet; the rule keeps",
+            self.assertIn("square 0.0000 (1 dof), triangle 0.0016 (2 dof), disk not measured yet; the rule takes",
                           factor_tables.paired_scatter_words(["square", "triangle", "disk"]))
         finally:
             factor_tables.coupling_paired = real

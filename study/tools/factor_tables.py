@@ -256,13 +256,13 @@ def paired_scatter(shape):
 
 
 def paired_scatter_words(shapes):
-    """The measured scatter of the paired changes, shape by shape, beside the rule's sigma."""
+    """The measured scatter of the paired changes, shape by shape, beside the rule's sigma (no claim which is
+    smaller: a few pairs tell little, and a change of the body on the same bed may stray as far as another bed)."""
     measured = [(shape, *paired_scatter(shape)) for shape in shapes]
     each = ", ".join(f"{shape} {sigma:.4f} ({dof} dof)" if dof else f"{shape} not measured yet"
                      for shape, sigma, dof in measured)
-    return ("The pairing on one bed makes a change's own scatter smaller than that: one bed's standard deviation "
-            f"of a change, pooled over this table's changes of two beds or more, {each}; the rule keeps the "
-            "shape's sigma, the larger")
+    return ("A change's own scatter, paired bed by bed: one bed's standard deviation of a change, pooled over this "
+            f"table's changes of two beds or more, {each}; the rule takes the shape's sigma whichever is larger")
 
 
 # Where a coupling factor moves a 60 d cell toward the paper, it is run in the paper's own box
