@@ -5,9 +5,11 @@ each change in standard errors of the shape's sigma by the paper's clock, and wh
 the cell against the paper's side there. The changes here are what the answer's sentences
 (answer_sentences.py) say of them.
 """
+from dataclasses import dataclass
+
 import findings
 from cases import (COUPLING, PAPER_BOX, PAPER_RANGE, SO_FAR_FROM, T1000_BEDS, T1000_WINDOWS, beds, cell_text, chord,
-                   committed, head_lines, paper_observed, row_line, select, so_far, unfinished)
+                   committed, head_lines, key_of, paper_observed, row_line, select, so_far, unfinished)
 from findings import RESOLVED
 from scatter import PAPER_SIDE, clock_sigma, scatter_words
 from table_kinds import windows
@@ -271,14 +273,33 @@ def paired_scatter_words(shapes):
 PAPER_BOX_COUPLING = ["results/paper_box/lattice_t1000"]
 
 
+@dataclass
+class PaperBoxReading:
+    """A coupling row's case in the paper's own box beside the paper's protocol on the same bed (one bed
+    each), V_y by the paper's rule over the same window: t = 100-1000 once it has finished (t_now None),
+    else t = 100 to its last committed sample, t_now (vy and base None while that spans < SO_FAR_FROM)."""
+    vy: float | None
+    base: float | None
+    t_now: float | None = None
+
+
 def paper_box_coupling(shape, period, changes):
-    """(V_y, the paper's protocol's V_y on the same bed) of a coupling row's case in the paper's own box;
-    None while it has not finished there."""
+    """PaperBoxReading of a coupling row's case in the paper's own box; None while none is committed."""
     where = dict(COUPLING_BASE, **{"intruder.shape": shape, "drive.period": period, "drive.amplitude": 5.0,
                                    "box.width": 300.0})
     changed, base = protocol_beds(PAPER_BOX_COUPLING, dict(where, **changes)), protocol_beds(PAPER_BOX, where)
     paired = sorted(set(changed) & set(base))
-    return (changed[paired[0]], base[paired[0]]) if paired else None
+    if paired:
+        return PaperBoxReading(changed[paired[0]], base[paired[0]])
+    on_way = [c for f in committed(PAPER_BOX_COUPLING) for c in unfinished(f)
+              if all(key_of(c, k) == v for k, v in dict(where, **changes).items())]
+    if not on_way:
+        return None
+    t_now, rate = so_far(on_way[0])
+    baseline = [b for b in select(committed(PAPER_BOX), where) if b.get("box.seed") == on_way[0].get("box.seed")]
+    if rate is None or not baseline:
+        return PaperBoxReading(None, None, t_now)
+    return PaperBoxReading(rate, chord(100.0, t_now)(baseline[0]), t_now)
 
 
 def answer_coupling(spec):
