@@ -286,10 +286,10 @@ class WhatIsLeftTest(unittest.TestCase):
                          "Left beside it: the rest.")
         # a case carried part-way: where it has got, then its rate so far once the window is long enough
         self.assertIn("in the paper's box: being run (t = 150 of 1000 committed). Left",
-                      answer_sentences.what_is_left([self.WITHIN], False, "the rest", [(lattice, reading(None, None, 150.0))]))
+                      answer_sentences.what_is_left([self.WITHIN], False, "the rest", [(lattice, reading(None, None, 150.0, 1000.0))]))
         self.assertIn("in the paper's box: being run, so far (t = 100-315, not judged) +0.0300 against the protocol's "
                       "-0.0250 on the same bed over the same window (one bed). Left",
-                      answer_sentences.what_is_left([self.WITHIN], False, "the rest", [(lattice, reading(0.03, -0.025, 315.0))]))
+                      answer_sentences.what_is_left([self.WITHIN], False, "the rest", [(lattice, reading(0.03, -0.025, 315.0, 1000.0))]))
         # on the paper's side there is nothing to account for, whatever the coupling does
         self.assertEqual(answer_sentences.what_is_left([self.WITHIN], True, "", [(lattice, None)]),
                          "In the paper's box by its protocol the cell is on the paper's side.")

@@ -396,14 +396,14 @@ def coupling_toward(shape, period):
 
 def coupling_words(change, paper_box):
     """One coupling factor that moves a cell toward the paper, in words: its change on the 60 d box's
-    paired beds and what it gives in the paper's own box (paper_box: (V_y, the protocol's) or None)."""
+    paired beds and what it gives in the paper's own box (paper_box: a PaperBoxReading, or None)."""
     diff, z, _, name, _, paired = change
     if paper_box is None:
         box = "not run yet"
     elif paper_box.t_now is None:
         box = f"V_y {paper_box.vy:+.4f} against the protocol's {paper_box.base:+.4f} on the same bed (one bed)"
     elif paper_box.vy is None:
-        box = f"being run (t = {paper_box.t_now:g} of 1000 committed)"
+        box = f"being run (t = {paper_box.t_now:g} of {paper_box.duration:g} committed)"
     else:
         box = (f"being run, so far (t = 100-{paper_box.t_now:g}, not judged) {paper_box.vy:+.4f} against the "
                f"protocol's {paper_box.base:+.4f} on the same bed over the same window (one bed)")

@@ -5,8 +5,8 @@
 
 Copies SWEEP_DIR/results.csv, cells.csv (where the sweep wrote one) and sweep.log, and for every case directory the files that are the
 result and how it was made: config.toml, summary.json, trajectory.csv and log.txt (a case still running
-has no summary.json yet, and its trajectory.csv goes to its last checkpoint; model.json, the cavity model's, `wiggle model` remakes from the
-config); with --phase also each case's phase_rates.csv, for a study whose tables read the phase
+has no summary.json yet, and its trajectory.csv goes to its last checkpoint; model.json, the cavity
+model's, `wiggle model` remakes from the config); with --phase also each case's phase_rates.csv, for a study whose tables read the phase
 profile (figure 8); with --fields also each case's
 fields.csv (about 2 MB at the default grid), for a study whose result is its field maps. Checkpoints, dumps and beds
 stay behind: they are large and any of them can be made again from the config, bit for bit.

@@ -277,10 +277,12 @@ PAPER_BOX_COUPLING = ["results/paper_box/lattice_t1000"]
 class PaperBoxReading:
     """A coupling row's case in the paper's own box beside the paper's protocol on the same bed (one bed
     each), V_y by the paper's rule over the same window: t = 100-1000 once it has finished (t_now None),
-    else t = 100 to its last committed sample, t_now (vy and base None while that spans < SO_FAR_FROM)."""
+    else t = 100 to its last committed sample, t_now, of its duration (vy and base None while that spans
+    < SO_FAR_FROM)."""
     vy: float | None
     base: float | None
     t_now: float | None = None
+    duration: float | None = None
 
 
 def paper_box_coupling(shape, period, changes):
@@ -295,11 +297,13 @@ def paper_box_coupling(shape, period, changes):
               if all(key_of(c, k) == v for k, v in dict(where, **changes).items())]
     if not on_way:
         return None
-    t_now, rate = so_far(on_way[0])
-    baseline = [b for b in select(committed(PAPER_BOX), where) if b.get("box.seed") == on_way[0].get("box.seed")]
+    case = on_way[0]
+    t_now, rate = so_far(case)
+    duration = float(case.get("run.duration"))
+    baseline = [b for b in select(committed(PAPER_BOX), where) if b.get("box.seed") == case.get("box.seed")]
     if rate is None or not baseline:
-        return PaperBoxReading(None, None, t_now)
-    return PaperBoxReading(rate, chord(100.0, t_now)(baseline[0]), t_now)
+        return PaperBoxReading(None, None, t_now, duration)
+    return PaperBoxReading(rate, chord(100.0, t_now)(baseline[0]), t_now, duration)
 
 
 def answer_coupling(spec):
