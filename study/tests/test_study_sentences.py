@@ -331,6 +331,30 @@ class WhatIsLeftTest(unittest.TestCase):
         finally:
             factor_tables.coupling_paired = real
 
+    def test_a_shape_whose_paired_changes_stray_more_than_its_sigma_is_named(self):
+        # the square's two paired changes -0.006 and +0.012 (sd 0.0127, 1 dof) against a sigma of 0.0024
+        # (sigma sqrt 2 = 0.0034); the triangle's +0.109 and +0.111 (sd 0.0014) against 0.0108
+        screen = {("square", 3.0): ([0.017, 0.034], [0.023, 0.022]), ("triangle", 5.0): ([0.078, 0.080], [-0.031, -0.031])}
+        sigmas = {"square": 0.0024, "triangle": 0.0108}
+        real = factor_tables.coupling_paired, factor_tables.clock_sigma
+        factor_tables.coupling_paired = lambda shape, period, changes: (
+            screen.get((shape, period), ([], [])) if "intruder.surface" in changes else ([], []))
+        factor_tables.clock_sigma = sigmas.get
+        try:
+            [(shape, sd, dof, rule)] = factor_tables.straying(["square", "triangle"])
+            self.assertEqual((shape, dof), ("square", 1))
+            self.assertAlmostEqual(sd, 0.018 / 2 ** 0.5)
+            self.assertAlmostEqual(rule, 0.0024 * 2 ** 0.5)
+            self.assertIn("; the square's is 3.8 x the rule's sigma sqrt 2 (0.0034): its changes' counts of standard "
+                          "errors overstate them by as much", factor_tables.paired_scatter_words(["square", "triangle"]))
+            self.assertIn("the square's paired runs on one bed stray 3.8 x more than its sigma allows (1 dof)",
+                          answer_sentences.straying_note())
+            sigmas["square"] = 0.01   # a sigma that allows the spread: nothing named
+            self.assertEqual(factor_tables.straying(["square", "triangle"]), [])
+            self.assertEqual(answer_sentences.straying_note(), "")
+        finally:
+            factor_tables.coupling_paired, factor_tables.clock_sigma = real
+
 
 if __name__ == "__main__":
     unittest.main()

@@ -14,7 +14,7 @@ from cases import (CLOCK_A3, CLOCK_A5, COUPLING, DEPTH_A5, PAPER_RANGE, SHAPES, 
                    mean, paper_observed, select, so_far)
 from factor_tables import (BOX_ALONE, BOX_ROW, COUPLING_CELLS, COUPLING_ROWS, PROTOCOL_CELLS, PROTOCOL_FOLDERS,
                            PROTOCOL_ROWS, box_alone_change, change_text, coupling_change, paper_box_coupling,
-                           protocol_beds, protocol_change, row_where)
+                           protocol_beds, protocol_change, row_where, straying)
 from findings import RESOLVED
 from findings_table import FINDING_SOURCES, against_findings, paper_findings
 from scatter import (PAPER_SIDE, SHAPE_NAMES, beds_z_text, clock_scatter, clock_sigma, depth_sigma,
@@ -151,6 +151,15 @@ def bracket_kind(lo, hi, paper_range):
     return "differs" if verdict.startswith("**no") else "not placed"
 
 
+def straying_note():
+    """Where the coupling screen's paired runs of a shape stray more than its sigma allows, a clause that says
+    so ("" where none does)."""
+    found = straying(SHAPES)
+    return ("; " + "; ".join(f"the {short_name(shape)}'s paired runs on one bed stray {sd / rule:.1f} x more than its "
+                             f"sigma allows ({dof} dof)" for shape, sd, dof, rule in found)
+            + ": study/VALIDATION.md, \"The intruder's coupling\"") if found else ""
+
+
 def readme_answer(spec):
     """The README's paragraph "Does it reproduce the paper?": the page above in a few lines. The same
     paragraph opens study/README.md (spec "within": "study/"), its paths to the study's pages written
@@ -182,7 +191,7 @@ def readme_answer(spec):
     verdicts = [findings.finding_verdict(*by_scale.get("paper's clock", (0.0, []))) for _, _, by_scale in paper_findings()]
     text = (f"Partly. By the paper's clock (runs to t = 1000, V_y over t = 100-1000; {count_range(len(v) for _, v in cells_all)} beds a "
             f"period) at its depth in a 60 d box, each shape judged at {RESOLVED:g} standard errors of its own scatter "
-            f"(one bed's sigma {sigmas[0]:.4f}-{sigmas[-1]:.4f}, {dofs[0]}-{dofs[-1]} degrees of freedom), Table 1's "
+            f"(one bed's sigma {sigmas[0]:.4f}-{sigmas[-1]:.4f}, {dofs[0]}-{dofs[-1]} degrees of freedom{straying_note()}), Table 1's "
             f"bracket is the paper's for {len(agree)} of 5 shapes (" + ", ".join(agree) + "); "
             + "; ".join(differ + unplaced + never) + ". By the sign of the mean, as the paper reads it, "
             + crossings_sentence(crossings(), rest_too=False) + ". " + paper_box_summary() + protocol_summary()

@@ -5,6 +5,7 @@ each change in standard errors of the shape's sigma by the paper's clock, and wh
 the cell against the paper's side there. The changes here are what the answer's sentences
 (answer_sentences.py) say of them.
 """
+import math
 from dataclasses import dataclass
 
 import findings
@@ -257,14 +258,31 @@ def paired_scatter(shape):
     return sigma, dof
 
 
+def rule_change_sd(shape):
+    """One bed's standard deviation of a change between two runs as the rule has it: sigma sqrt 2, sigma the
+    shape's (the two runs independent)."""
+    return clock_sigma(shape) * math.sqrt(2.0)
+
+
+def straying(shapes):
+    """[(shape, its paired changes' own scatter, dof, the rule's sigma sqrt 2)] of the shapes whose paired
+    changes stray more than the rule allows: there the counts of standard errors overstate a change."""
+    return [(shape, sd, dof, rule_change_sd(shape)) for shape in shapes
+            for sd, dof in [paired_scatter(shape)] if dof and sd > rule_change_sd(shape)]
+
+
 def paired_scatter_words(shapes):
     """The measured scatter of the paired changes, shape by shape, beside the rule's sigma (no claim which is
-    smaller: a few pairs tell little, and a change of the body on the same bed may stray as far as another bed)."""
+    smaller: a few pairs tell little, and a change of the body on the same bed may stray as far as another bed),
+    and where it is the larger, that the rule's standard errors understate it."""
     measured = [(shape, *paired_scatter(shape)) for shape in shapes]
     each = ", ".join(f"{shape} {sigma:.4f} ({dof} dof)" if dof else f"{shape} not measured yet"
                      for shape, sigma, dof in measured)
+    larger = "; ".join(f"the {shape}'s is {sd / rule:.1f} x the rule's sigma sqrt 2 ({rule:.4f}): its changes' counts "
+                       "of standard errors overstate them by as much" for shape, sd, _, rule in straying(shapes))
     return ("A change's own scatter, paired bed by bed: one bed's standard deviation of a change, pooled over this "
-            f"table's changes of two beds or more, {each}; the rule takes the shape's sigma whichever is larger")
+            f"table's changes of two beds or more, {each}; the rule takes the shape's sigma"
+            + (f"; {larger}" if larger else ""))
 
 
 # Where a coupling factor moves a 60 d cell toward the paper, it is run in the paper's own box
