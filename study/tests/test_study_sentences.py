@@ -347,7 +347,7 @@ class WhatIsLeftTest(unittest.TestCase):
             self.assertAlmostEqual(rule, 0.0024 * 2 ** 0.5)
             self.assertIn("; the square's is 3.8 x the rule's sigma sqrt 2 (0.0034): its changes' counts of standard "
                           "errors overstate them by as much", factor_tables.paired_scatter_words(["square", "triangle"]))
-            self.assertIn("the square's paired runs on one bed stray 3.8 x more than its sigma allows (1 dof)",
+            self.assertIn("the square's paired runs on one bed stray 3.8 x as far as its sigma allows (1 dof)",
                           answer_sentences.straying_note())
             sigmas["square"] = 0.01   # a sigma that allows the spread: nothing named
             self.assertEqual(factor_tables.straying(["square", "triangle"]), [])

@@ -155,7 +155,7 @@ def straying_note():
     """Where the coupling screen's paired runs of a shape stray more than its sigma allows, a clause that says
     so ("" where none does)."""
     found = straying(SHAPES)
-    return ("; " + "; ".join(f"the {short_name(shape)}'s paired runs on one bed stray {sd / rule:.1f} x more than its "
+    return ("; " + "; ".join(f"the {short_name(shape)}'s paired runs on one bed stray {sd / rule:.1f} x as far as its "
                              f"sigma allows ({dof} dof)" for shape, sd, dof, rule in found)
             + ": study/VALIDATION.md, \"The intruder's coupling\"") if found else ""
 
