@@ -279,17 +279,27 @@ class WhatIsLeftTest(unittest.TestCase):
                          "the lattice body moves it +0.1100 (10.2 se, toward the paper; 2 beds paired) in the 60 d box; "
                          "in the paper's box: not run yet. Left beside it: the rest.")
         reading = factor_tables.PaperBoxReading
-        self.assertEqual(answer_sentences.what_is_left([self.TOWARD], False, "the rest", [(lattice, reading(0.02, -0.04))]),
+        # finished: judged as a cell (its side by the rule, against the paper's) and as a change of one bed a side
+        sig = scatter.clock_sigma("triangle")
+        vy, base = 5.0 * sig, -4.0 * sig
+        z_vy, z_change = round(vy / sig, 1), round((vy - base) / (sig * 2 ** 0.5), 1)
+        self.assertEqual(answer_sentences.what_is_left([self.TOWARD], False, "the rest",
+                                                       [(lattice, reading("triangle", 5.0, vy, base))]),
                          "So the protocol's factors account for not all of the difference; the intruder's coupling may: "
                          "the lattice body moves it +0.1100 (10.2 se, toward the paper; 2 beds paired) in the 60 d box; "
-                         "in the paper's box: V_y +0.0200 against the protocol's -0.0400 on the same bed (one bed). "
+                         f"in the paper's box: V_y {vy:+.3f} (1 bed, {z_vy:+.1f} se), rising, as the paper; against the "
+                         f"protocol's {base:+.4f} on the same bed, {vy - base:+.4f} ({z_change:.1f} se, toward the paper). "
                          "Left beside it: the rest.")
+        # a small rise on one bed is not judged rising, and a small change is within the scatter
+        small = answer_sentences.what_is_left([self.TOWARD], False, "", [(lattice, reading("triangle", 5.0, 0.5 * sig, 0.0))])
+        self.assertIn("(1 bed, +0.5 se), not rising, where the paper has it rising; against", small)
+        self.assertIn("(0.4 se, within the scatter)", small)
         # a case carried part-way: where it has got, then its rate so far once the window is long enough
         self.assertIn("in the paper's box: being run (t = 150 of 1000 committed). Left",
-                      answer_sentences.what_is_left([self.WITHIN], False, "the rest", [(lattice, reading(None, None, 150.0, 1000.0))]))
+                      answer_sentences.what_is_left([self.WITHIN], False, "the rest", [(lattice, reading("triangle", 5.0, None, None, 150.0, 1000.0))]))
         self.assertIn("in the paper's box: being run, so far (t = 100-315, not judged) +0.0300 against the protocol's "
                       "-0.0250 on the same bed over the same window (one bed). Left",
-                      answer_sentences.what_is_left([self.WITHIN], False, "the rest", [(lattice, reading(0.03, -0.025, 315.0, 1000.0))]))
+                      answer_sentences.what_is_left([self.WITHIN], False, "the rest", [(lattice, reading("triangle", 5.0, 0.03, -0.025, 315.0, 1000.0))]))
         # on the paper's side there is nothing to account for, whatever the coupling does
         self.assertEqual(answer_sentences.what_is_left([self.WITHIN], True, "", [(lattice, None)]),
                          "In the paper's box by its protocol the cell is on the paper's side.")
@@ -297,17 +307,24 @@ class WhatIsLeftTest(unittest.TestCase):
     def test_the_coupling_screen_so_far(self):
         within = (0.001, 0.5, "within the scatter", "the lattice body", "the square at T = 3", 2)
         moved = (0.02, 3.0, "toward the paper", "turning", "the triangle at T = 5", 1)
-        self.assertEqual(answer_sentences.coupling_status([within, None]),
+        self.assertEqual(answer_sentences.coupling_status([(within, None), (None, None)]),
                          "its screen being run, 1 change measured so far, on 2 beds each: none moves a cell by 2 "
                          "standard errors so far; study/VALIDATION.md, \"The intruder's coupling\"")
-        self.assertEqual(answer_sentences.coupling_status([within, moved]),
+        self.assertEqual(answer_sentences.coupling_status([(within, None), (moved, None)]),
                          "its screen being run, 2 changes measured so far, on 1-2 beds each: turning moves the "
-                         "triangle at T = 5 toward the paper (+0.020, 3.0 se, in the 60 d box); study/VALIDATION.md, "
-                         "\"The intruder's coupling\"")
+                         "triangle at T = 5 toward the paper (+0.020, 3.0 se, in the 60 d box; not run in the paper's "
+                         "box yet); study/VALIDATION.md, \"The intruder's coupling\"")
         # a factor's name carries its own article: it is not doubled
         lattice = (0.11, 7.1, "toward the paper", "the lattice body", "the triangle at T = 5", 1)
         self.assertIn("each: the lattice body moves the triangle at T = 5 toward the paper (+0.110, 7.1 se",
-                      answer_sentences.coupling_status([lattice]))
+                      answer_sentences.coupling_status([(lattice, None)]))
+        # where the paper's box has run it: how it reads there, by the rule, against the paper
+        reading = factor_tables.PaperBoxReading
+        sig = scatter.clock_sigma("triangle")
+        self.assertIn(f"in the 60 d box; in the paper's box {5 * sig:+.3f} (1 bed, +5.0 se): rising, as the paper)",
+                      answer_sentences.coupling_status([(lattice, reading("triangle", 5.0, 5 * sig, -sig))]))
+        self.assertIn("in the 60 d box; being run in the paper's box)",
+                      answer_sentences.coupling_status([(lattice, reading("triangle", 5.0, None, None, 150.0, 1000.0))]))
 
     def test_the_paired_changes_own_scatter_is_pooled_by_shape(self):
         # made-up screen: (V_y with the change, the baseline's) per bed, by cell and factor

@@ -13,7 +13,8 @@ from cases import (CLOCK_A3, CLOCK_A5, COUPLING, DEPTH_A5, PAPER_RANGE, SHAPES, 
                    T1000_BEDS, Cell, beds, beds_count, beds_text, by_period, cell_text, committed, count_range, load,
                    mean, paper_observed, select, so_far)
 from factor_tables import (BOX_ALONE, BOX_ROW, COUPLING_CELLS, COUPLING_ROWS, PROTOCOL_CELLS, PROTOCOL_FOLDERS,
-                           PROTOCOL_ROWS, box_alone_change, change_text, coupling_change, paper_box_coupling,
+                           PROTOCOL_ROWS, box_alone_change, change_text, coupling_change, paper_box_change,
+                           paper_box_coupling,
                            protocol_beds, protocol_change, row_where, straying)
 from findings import RESOLVED
 from findings_table import FINDING_SOURCES, against_findings, paper_findings
@@ -337,25 +338,37 @@ def unmeasured(short=False):
     if not done:
         status = "its screen, study/sweeps/paper_depth_coupling_t1000.toml, being run, no results committed yet"
     else:
-        status = coupling_status([coupling_change(shape, period, changes) for _, changes in COUPLING_ROWS
-                                  for shape, period in COUPLING_CELLS])
+        status = coupling_status([(change, paper_box_coupling(shape, period, changes) if change else None)
+                                  for _, changes in COUPLING_ROWS for shape, period in COUPLING_CELLS
+                                  for change in [coupling_change(shape, period, changes)]])
     if short:
         return f"how the paper's glued LAMMPS body met its grains ({status}), " + UNMEASURED_SHORT
     return ("how the paper's glued LAMMPS body met its grains (its atoms' masses in the contacts' damping, a body "
             f"built on a lattice, its rotation; {status}), " + UNMEASURED)
 
 
-def coupling_status(changes):
-    """How far the coupling screen has gone, from its changes (coupling_change's; None for a cell not
-    measured yet): how many, on how many beds, and which move a cell by RESOLVED standard errors."""
-    changes = [c for c in changes if c]
-    moved = [c for c in changes if c[2] != "within the scatter"]
+def coupling_status(measured):
+    """How far the coupling screen has gone, from its cells' (change, paper-box reading) (coupling_change's,
+    None for a cell not measured yet; paper_box_coupling's): how many changes, on how many beds, and which
+    move a cell by RESOLVED standard errors, with what each gives in the paper's box."""
+    changes = [(c, box) for c, box in measured if c]
+    moved = [(c, box) for c, box in changes if c[2] != "within the scatter"]
     return (f"its screen being run, {len(changes)} change{'s' if len(changes) > 1 else ''} measured so far, on "
-            f"{beds_count(c[5] for c in changes)} each: "
+            f"{beds_count(c[5] for c, _ in changes)} each: "
             + (f"none moves a cell by {RESOLVED:g} standard errors so far" if not moved else
-               "; ".join(f"{c[3]} moves {c[4]} {c[2]} ({c[0]:+.3f}, {abs(c[1]):.1f} se, in the 60 d box)"
-                         for c in moved))
+               "; ".join(f"{c[3]} moves {c[4]} {c[2]} ({c[0]:+.3f}, {abs(c[1]):.1f} se, in the 60 d box; "
+                         f"{paper_box_short(box)})" for c, box in moved))
             + "; study/VALIDATION.md, \"The intruder's coupling\"")
+
+
+def paper_box_short(reading):
+    """What a coupling row gives in the paper's own box, in a few words (reading: paper_box_coupling's)."""
+    if reading is None:
+        return "not run in the paper's box yet"
+    if reading.t_now is not None:
+        return "being run in the paper's box"
+    return (f"in the paper's box {beds_z_text([reading.vy], reading.shape)}: "
+            f"{paper_reading([reading.vy], reading.shape, reading.period)}")
 
 
 def factor_changes(shape, period, paper_sign, sig):
@@ -410,7 +423,10 @@ def coupling_words(change, paper_box):
     if paper_box is None:
         box = "not run yet"
     elif paper_box.t_now is None:
-        box = f"V_y {paper_box.vy:+.4f} against the protocol's {paper_box.base:+.4f} on the same bed (one bed)"
+        shape, period = paper_box.shape, paper_box.period
+        box_diff, box_z, box_toward = paper_box_change(paper_box)
+        box = (f"V_y {beds_z_text([paper_box.vy], shape)}, {paper_reading([paper_box.vy], shape, period)}; against "
+               f"the protocol's {paper_box.base:+.4f} on the same bed, {box_diff:+.4f} ({abs(box_z):.1f} se, {box_toward})")
     elif paper_box.vy is None:
         box = f"being run (t = {paper_box.t_now:g} of {paper_box.duration:g} committed)"
     else:

@@ -209,8 +209,9 @@ def answer_protocol(spec):
 
 # The coupling screen (issue 79): each factor on the factor screen's beds of the paper's protocol in the
 # 60 d box, paired bed by bed with that protocol's own run there (its `*_paper` cases; the square at
-# T = 4, the control, has its baseline in COUPLING).
-COUPLING_CELLS = [("square", 3.0), ("triangle", 5.0), ("square", 4.0)]
+# T = 4, the control, and the triangle at T = 4, the lattice body's other side of the paper's bracket,
+# have their baselines in COUPLING).
+COUPLING_CELLS = [("square", 3.0), ("triangle", 5.0), ("square", 4.0), ("triangle", 4.0)]
 COUPLING_BASE = dict(PAPER_PROTOCOL, **{"intruder.contact_mass": "body", "intruder.rotation": "locked",
                                         "drive.form": "displacement"})
 COUPLING_ROWS = [('the atoms\' mass in the contacts (intruder.contact_mass = "atom")', {"intruder.contact_mass": "atom"}),
@@ -294,9 +295,11 @@ PAPER_BOX_COUPLING = ["results/paper_box/lattice_t1000"]
 @dataclass
 class PaperBoxReading:
     """A coupling row's case in the paper's own box beside the paper's protocol on the same bed (one bed
-    each), V_y by the paper's rule over the same window: t = 100-1000 once it has finished (t_now None),
-    else t = 100 to its last committed sample, t_now, of its duration (vy and base None while that spans
-    < SO_FAR_FROM)."""
+    each), the shape at the period, V_y by the paper's rule over the same window: t = 100-1000 once it
+    has finished (t_now None), else t = 100 to its last committed sample, t_now, of its duration (vy and
+    base None while that spans < SO_FAR_FROM)."""
+    shape: str
+    period: float
     vy: float | None
     base: float | None
     t_now: float | None = None
@@ -310,7 +313,7 @@ def paper_box_coupling(shape, period, changes):
     changed, base = protocol_beds(PAPER_BOX_COUPLING, dict(where, **changes)), protocol_beds(PAPER_BOX, where)
     paired = sorted(set(changed) & set(base))
     if paired:
-        return PaperBoxReading(changed[paired[0]], base[paired[0]])
+        return PaperBoxReading(shape, period, changed[paired[0]], base[paired[0]])
     on_way = [c for f in committed(PAPER_BOX_COUPLING) for c in unfinished(f)
               if all(key_of(c, k) == v for k, v in dict(where, **changes).items())]
     if not on_way:
@@ -320,8 +323,17 @@ def paper_box_coupling(shape, period, changes):
     duration = float(case.get("run.duration"))
     baseline = [b for b in select(committed(PAPER_BOX), where) if b.get("box.seed") == case.get("box.seed")]
     if rate is None or not baseline:
-        return PaperBoxReading(None, None, t_now, duration)
-    return PaperBoxReading(rate, chord(100.0, t_now)(baseline[0]), t_now, duration)
+        return PaperBoxReading(shape, period, None, None, t_now, duration)
+    return PaperBoxReading(shape, period, rate, chord(100.0, t_now)(baseline[0]), t_now, duration)
+
+
+def paper_box_change(reading):
+    """(change, z, which way) of a finished PaperBoxReading against the protocol's run on the same bed, in
+    standard errors of its shape's sigma (one bed each side), judged as the screen's changes are."""
+    paper_sign = findings.paper_side(reading.period, PAPER_RANGE[reading.shape])
+    comparison = findings.Comparison(reading.shape, [reading.vy], [reading.base], paper_sign)
+    diff, z, _ = findings.judged(comparison, clock_sigma(reading.shape))
+    return diff, z, toward_words(z)
 
 
 def answer_coupling(spec):
@@ -349,7 +361,8 @@ def answer_coupling(spec):
     lines += ["", "(V_y over t = 100-1000 of runs to t = 1000, A = 5 d, on the factor screen's beds of the paper's "
               "protocol in the 60 d box (random pour, glued 0.5 d shell, the glued disk's mass 9.88; bed = box.seed); "
               "study/sweeps/paper_depth_coupling_t1000.toml. The paper's side: not rising at T = 3 for the square "
-              "(the lower end of its 3-4), rising at T = 4; rising at T = 5 for the triangle (the upper end of its 4-5). "
+              "(the lower end of its 3-4), rising at T = 4; rising at T = 5 for the triangle (the upper end of its 4-5), "
+              "not rising at T = 4. "
               "A change is the row's mean minus the baseline's over the beds both have, in standard errors se = sigma "
               "sqrt(1/n + 1/n), sigma " + scatter_words(shapes) + ". " + paired_scatter_words(shapes) + ". A change "
               f"moves the cell toward the paper's side when >= {RESOLVED:g} se that way)"]
