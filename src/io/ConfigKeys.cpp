@@ -151,8 +151,8 @@ const std::vector<KeyInfo>& keyTable() {
                     [](C& c, const std::string& v) { c.intruder.surface = *choiceNamed<IntruderSurface>(v); },
                     "the clump's atoms: smooth = a shell along the outline, neighbours at most 0.35 d apart; glued = "
                     "the same shell with touching atoms (0.5 d apart), a rough surface like the paper's glued spheres; "
-                    "lattice = the outline filled with touching 0.5 d spheres on a hexagonal lattice, cut by the "
-                    "outline, so slant faces are staircases (docs/SHAPES.md)")),
+                    "lattice = the outline filled with touching 0.5 d spheres on a square lattice (LAMMPS's lattice "
+                    "sq), cut by the outline, so slant faces are staircases (docs/SHAPES.md)")),
       shapesBed(choice(
                     "intruder.contact_mass", choiceNameList<ContactMass>(),
                     [](const C& c) -> std::string { return std::string(choiceName(c.intruder.contactMass)); },
