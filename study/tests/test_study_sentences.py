@@ -223,7 +223,9 @@ class ReadmeWordsTest(unittest.TestCase):
         self.assertEqual(answer_sentences.moved_text(moved, []), moved[0])
         self.assertEqual(answer_sentences.moved_text([], []), "none moves a cell by 2 standard errors")
         self.assertEqual(answer_sentences.moved_text([], ["x by 2.6 se of sigma, why"]),
-                         "none moves a cell by 2 standard errors of its own beds' scatter (x by 2.6 se of sigma, why)")
+                         "none moves a cell by 2 standard errors of the scatter its own runs show (x by 2.6 se of sigma, why)")
+        self.assertEqual(answer_sentences.moved_text(moved, ["x by 4.2 se of sigma, why"]),
+                         moved[0] + "; not by the scatter its own runs show, x by 4.2 se of sigma, why")
 
 
 class VelocitySentenceTest(unittest.TestCase):
@@ -259,7 +261,7 @@ class WhatIsLeftTest(unittest.TestCase):
     def test_none_resolved_and_whether_by_its_own_beds_scatter(self):
         self.assertEqual(answer_sentences.what_moved([self.WITHIN]), "No measured factor moves it by 2 standard errors. ")
         self.assertEqual(answer_sentences.what_moved([self.WITHIN, self.DOUBTED]),
-                         "No measured factor moves it by 2 standard errors of its own beds' scatter. ")
+                         "No measured factor moves it by 2 standard errors of the scatter its own runs show. ")
         self.assertEqual(answer_sentences.what_moved([]), "")
 
     def test_on_the_papers_side_there_is_nothing_to_account_for(self):
@@ -325,6 +327,27 @@ class WhatIsLeftTest(unittest.TestCase):
                       answer_sentences.coupling_status([(lattice, reading("triangle", 5.0, 5 * sig, -sig))]))
         self.assertIn("in the 60 d box; being run in the paper's box)",
                       answer_sentences.coupling_status([(lattice, reading("triangle", 5.0, None, None, 150.0, 1000.0))]))
+
+    def test_a_change_is_not_resolved_beyond_its_shapes_paired_runs(self):
+        # made-up: the square's paired changes stray (one bed's sd of a change 0.0200, 2 dof); the triangle's do not
+        found = {"square": [("square", 0.0200, 2, 0.0034)], "triangle": []}
+        real, factor_tables.straying = factor_tables.straying, lambda shapes: found[shapes[0]]
+        try:
+            sig = 0.0024
+            run_sd = 0.0200 / 2 ** 0.5
+            # +0.0125 against one bed: 3.7 se of sigma, under 2 by one run's sd: shown within the scatter
+            change = factor_tables.judged_change(findings.Comparison("square", [0.0125], [0.0], 1), sig)
+            self.assertEqual(change[2], "within the scatter")
+            z_run = round(0.0125 / (run_sd * 2 ** 0.5), 1)
+            self.assertEqual(change[3], f"{z_run:.1f} se by the scatter the square's paired runs show, one run's "
+                                        f"standard deviation {run_sd:.4f} (2 dof) against sigma 0.0024")
+            # resolved by both: no caveat; the triangle's runs do not stray: sigma alone judges
+            self.assertEqual(factor_tables.judged_change(findings.Comparison("square", [0.1], [0.0], 1), sig)[2:],
+                             ("toward the paper", ""))
+            self.assertEqual(factor_tables.judged_change(findings.Comparison("triangle", [0.0125], [0.0], 1), sig)[2:],
+                             ("toward the paper", ""))
+        finally:
+            factor_tables.straying = real
 
     def test_the_paired_changes_own_scatter_is_pooled_by_shape(self):
         # made-up screen: (V_y with the change, the baseline's) per bed, by cell and factor

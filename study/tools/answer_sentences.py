@@ -35,7 +35,7 @@ def paper_triangle_text():
     return " and ".join(f'"{words}" ({where})' for words, where in PAPER_TRIANGLE_WORDS)
 
 
-OWN_SCATTER_WORDS = " of its own beds' scatter"  # after "by 2 standard errors", where a change is judged by it
+OWN_SCATTER_WORDS = " of the scatter its own runs show"  # after "by 2 standard errors", where a change is judged by it
 STALL = 4.0   # the second half's rate under 1/STALL of the first's: "then stalls"
 
 
@@ -285,13 +285,13 @@ def protocol_summary():
 
 def moved_text(toward, own_scatter):
     """protocol_summary's words for what the factors moved: each move toward or away from the paper
-    (toward: their words), else that none moves a cell by RESOLVED standard errors, "of its own beds'
-    scatter" where some change resolved on sigma is not by that (own_scatter: their words, after)."""
-    moved = "; ".join(toward) if toward else (f"none moves a cell by {RESOLVED:g} standard errors"
-                                              + (OWN_SCATTER_WORDS if own_scatter else ""))
-    if own_scatter:
-        moved += f" ({'; '.join(own_scatter)})"
-    return moved
+    (toward: their words), else that none moves a cell by RESOLVED standard errors, "of the scatter its
+    own runs show" where some change resolved on sigma is not by that (own_scatter: their words, after)."""
+    if toward:
+        return "; ".join(toward) + (f"; not by the scatter its own runs show, {'; '.join(own_scatter)}"
+                                    if own_scatter else "")
+    return (f"none moves a cell by {RESOLVED:g} standard errors" + (OWN_SCATTER_WORDS if own_scatter else "")
+            + (f" ({'; '.join(own_scatter)})" if own_scatter else ""))
 
 
 def protocol_so_far(shape, period):
@@ -438,8 +438,8 @@ def coupling_words(change, paper_box):
 
 def what_moved(changes):
     """After a cell's changes [(what changed, protocol_change's change)]: those resolved by RESOLVED
-    standard errors and which way, else that none is ("of its own beds' scatter" where one shown within
-    the scatter was resolved on sigma, as the README's sentence says); "" when none was measured."""
+    standard errors and which way, else that none is ("of the scatter its own runs show" where one shown
+    within the scatter was resolved on sigma, as the README's sentence says); "" when none was measured."""
     moved = [f"{name}, {c[2]}" for name, c in changes if c[2] != "within the scatter"]
     if moved:
         return f"Resolved by {RESOLVED:g} standard errors: " + "; ".join(moved) + ". "

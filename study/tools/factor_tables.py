@@ -108,10 +108,11 @@ def protocol_change(row, shape, period, paper_sign, sig, against=0):
 
 
 def judged_change(comparison, sig):
-    """(the change, its size in standard errors, which way it moves the cell, the own-scatter caveat
-    or "") of a protocol row's comparison with the row it is compared with."""
+    """(the change, its size in standard errors, which way it moves the cell, the caveat or "") of a
+    protocol row's comparison with the row it is compared with: the caveat of its own beds' scatter,
+    else of its shape's paired runs' (own_scatter_caveat, straying_caveat)."""
     diff, z, _ = findings.judged(comparison, sig)
-    caveat = own_scatter_caveat(comparison, z, sig)
+    caveat = own_scatter_caveat(comparison, z, sig) or straying_caveat(comparison, z, sig)
     return diff, abs(z), toward_words(z, caveat), caveat
 
 
@@ -131,6 +132,22 @@ def own_scatter_caveat(comparison, z, sig):
     whose = {"a": "its", "b": "the compared row's"}[side]
     return (f"{abs(z_own):.1f} se by {whose} {n} beds' own scatter, one bed's standard deviation {own:.4f} "
             f"against sigma {sig:.4f}")
+
+
+def straying_caveat(comparison, z, sig):
+    """The words that say a change resolved on sig is not resolved by the larger scatter its shape's paired
+    runs show (straying: one run's standard deviation, the paired changes' over sqrt 2), else "". As with
+    its own beds' scatter, a change is never shown as better known than its shape's runs show."""
+    found = straying([comparison.label])
+    if findings.resolved_side(z) == 0 or not found:
+        return ""
+    _, paired_sd, dof, _ = found[0]
+    run_sd = paired_sd / math.sqrt(2.0)
+    z_run = findings.judged(comparison, run_sd)[1]
+    if findings.resolved_side(z_run) != 0:
+        return ""
+    return (f"{abs(z_run):.1f} se by the scatter the {comparison.label}'s paired runs show, one run's standard "
+            f"deviation {run_sd:.4f} ({dof} dof) against sigma {sig:.4f}")
 
 
 def protocol_row(case):
