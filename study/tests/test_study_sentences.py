@@ -349,6 +349,14 @@ class WhatIsLeftTest(unittest.TestCase):
         finally:
             factor_tables.straying = real
 
+    def test_the_coupling_screen_at_one_cell(self):
+        atom = (-0.0042, -1.8, "within the scatter", "the atoms' mass", "the square at T = 3", 2)
+        self.assertEqual(answer_sentences.cell_coupling_status([("the atoms' mass", atom), ("turning", None)]),
+                         "its screen being run, at this cell the atoms' mass -0.0042 (1.8 se, within the scatter; "
+                         "2 beds paired); not run here yet: turning; study/VALIDATION.md, \"The intruder's coupling\"")
+        self.assertEqual(answer_sentences.cell_coupling_status([("turning", None)]),
+                         "its screen being run, not at this cell yet; study/VALIDATION.md, \"The intruder's coupling\"")
+
     def test_the_paired_changes_own_scatter_is_pooled_by_shape(self):
         # made-up screen: (V_y with the change, the baseline's) per bed, by cell and factor
         screen = {("square", 3.0, "intruder.contact_mass"): ([0.019, 0.018], [0.023, 0.022]),   # changes -0.004, -0.004

@@ -331,12 +331,15 @@ UNMEASURED_SHORT = ("what the paper leaves open (the grains' diameter distributi
                     "fraction) and its own scatter (no repeated beds, no error bars)")
 
 
-def unmeasured(short=False):
-    """What is left unexplained, in words: the coupling (as far as its screen has gone), then UNMEASURED
-    (short: UNMEASURED_SHORT)."""
+def unmeasured(short=False, cell=None):
+    """What is left unexplained, in words: the coupling (as far as its screen has gone; at `cell`, (shape,
+    period), what it measured there), then UNMEASURED (short: UNMEASURED_SHORT)."""
     done = [c for f in committed(COUPLING) for c in load(f)]
     if not done:
         status = "its screen, study/sweeps/paper_depth_coupling_t1000.toml, being run, no results committed yet"
+    elif cell:
+        status = cell_coupling_status([(label.split(" (")[0], coupling_change(*cell, changes))
+                                       for label, changes in COUPLING_ROWS])
     else:
         status = coupling_status([(change, paper_box_coupling(shape, period, changes) if change else None)
                                   for _, changes in COUPLING_ROWS for shape, period in COUPLING_CELLS
@@ -345,6 +348,16 @@ def unmeasured(short=False):
         return f"how the paper's glued LAMMPS body met its grains ({status}), " + UNMEASURED_SHORT
     return ("how the paper's glued LAMMPS body met its grains (its atoms' masses in the contacts' damping, a body "
             f"built on a lattice, its rotation; {status}), " + UNMEASURED)
+
+
+def cell_coupling_status(measured):
+    """What the coupling screen measured at one cell, from [(the factor's name, coupling_change's change
+    there or None)]: each change and which way, then the factors not run there yet."""
+    done = [f"{name} {c[0]:+.4f} ({abs(c[1]):.1f} se, {c[2]}; {beds_count([c[5]])} paired)" for name, c in measured if c]
+    left = [name for name, c in measured if not c]
+    return ("its screen being run, " + (f"at this cell {'; '.join(done)}" if done else "not at this cell yet")
+            + (f"; not run here yet: {', '.join(left)}" if done and left else "")
+            + "; study/VALIDATION.md, \"The intruder's coupling\"")
 
 
 def coupling_status(measured):
@@ -401,7 +414,8 @@ def factors_text(shape, period, paper_sign, sig, box_values):
     if box_values:
         on_side = findings.on_paper_side(box_values, sig, paper_sign)
         coupling = coupling_toward(shape, period)
-        text += what_is_left(changes, on_side, "" if on_side else UNMEASURED if coupling else unmeasured(), coupling)
+        text += what_is_left(changes, on_side, "" if on_side else UNMEASURED if coupling else
+                             unmeasured(cell=(shape, period)), coupling)
     return text
 
 
