@@ -349,6 +349,22 @@ class WhatIsLeftTest(unittest.TestCase):
         finally:
             factor_tables.straying = real
 
+    def test_where_a_coupling_factor_by_itself_starts_the_shape_rising(self):
+        sig = scatter.clock_sigma("triangle")
+        # one period tells no bracket
+        self.assertEqual(answer_sentences.coupling_bracket_words("triangle", [(5.0, [8 * sig, 8 * sig])]), "")
+        # rising at T = 5 but not at T = 4: the paper's 4-5
+        words = answer_sentences.coupling_bracket_words("triangle", [(4.0, [0.0, 0.5 * sig]), (5.0, [8 * sig, 8 * sig])])
+        self.assertIn("; by itself there T = 4 ", words)
+        self.assertIn(": its bracket 4-5, **yes**", words)
+        # rising at both: below the paper's range
+        words = answer_sentences.coupling_bracket_words("triangle", [(4.0, [6 * sig, 6 * sig]), (5.0, [8 * sig, 8 * sig])])
+        self.assertIn(": its bracket <= 4, **no**", words)
+        # and the words stand after the 60 d box's change in the cell's sentence
+        lattice = (0.11, 10.2, "toward the paper", "the lattice body", "the triangle at T = 5", 2)
+        self.assertIn("2 beds paired) in the 60 d box; by itself there T = 4 ",
+                      answer_sentences.what_is_left([], False, "", [(lattice, None, words)]))
+
     def test_the_coupling_screen_at_one_cell(self):
         atom = (-0.0042, -1.8, "within the scatter", "the atoms' mass", "the square at T = 3", 2)
         self.assertEqual(answer_sentences.cell_coupling_status([("the atoms' mass", atom), ("turning", None)]),

@@ -13,9 +13,8 @@ from cases import (CLOCK_A3, CLOCK_A5, COUPLING, DEPTH_A5, PAPER_RANGE, SHAPES, 
                    T1000_BEDS, Cell, beds, beds_count, beds_text, by_period, cell_text, committed, count_range, load,
                    mean, paper_observed, select, so_far)
 from factor_tables import (BOX_ALONE, BOX_ROW, COUPLING_CELLS, COUPLING_ROWS, PROTOCOL_CELLS, PROTOCOL_FOLDERS,
-                           PROTOCOL_ROWS, box_alone_change, change_text, coupling_change, paper_box_change,
-                           paper_box_coupling,
-                           protocol_beds, protocol_change, row_where, straying)
+                           PROTOCOL_ROWS, box_alone_change, change_text, coupling_beds, coupling_change,
+                           paper_box_change, paper_box_coupling, protocol_beds, protocol_change, row_where, straying)
 from findings import RESOLVED
 from findings_table import FINDING_SOURCES, against_findings, paper_findings
 from scatter import (PAPER_SIDE, SHAPE_NAMES, beds_z_text, clock_scatter, clock_sigma, depth_sigma,
@@ -420,19 +419,39 @@ def factors_text(shape, period, paper_sign, sig, box_values):
 
 
 def coupling_toward(shape, period):
-    """[(coupling_change's change, its paper-box reading: paper_box_coupling's)] of the coupling rows that
-    move the cell toward the paper by RESOLVED standard errors in the 60 d box."""
+    """[(coupling_change's change, its paper-box reading: paper_box_coupling's, where the row by itself starts
+    the shape rising in the 60 d box: coupling_bracket_words')] of the coupling rows that move the cell
+    toward the paper by RESOLVED standard errors in the 60 d box."""
     found = []
     for _, changes in COUPLING_ROWS:
         change = coupling_change(shape, period, changes)
         if change and change[2] == "toward the paper":
-            found.append((change, paper_box_coupling(shape, period, changes)))
+            found.append((change, paper_box_coupling(shape, period, changes),
+                          coupling_bracket_words(shape, coupling_periods(shape, changes))))
     return found
 
 
-def coupling_words(change, paper_box):
+def coupling_periods(shape, changes):
+    """[(T, [V_y per bed])] of a coupling row at the shape's cells of the screen, in ascending T."""
+    runs = [(period, list(coupling_beds(shape, period, changes).values()))
+            for s, period in COUPLING_CELLS if s == shape]
+    return sorted((period, values) for period, values in runs if values)
+
+
+def coupling_bracket_words(shape, periods):
+    """Where a coupling row by itself starts the shape rising in the 60 d box, by the Table 1's rule, from
+    its cells at two periods or more (periods: coupling_periods'); "" with fewer."""
+    if len(periods) < 2:
+        return ""
+    lo, hi = findings.first_rise(periods, clock_sigma(shape))
+    each = ", ".join(f"T = {t:g} {beds_z_text(values, shape)}" for t, values in periods)
+    return f"; by itself there {each}: its bracket {bracket_text(lo, hi, periods)}, {against_paper(lo, hi, shape)}"
+
+
+def coupling_words(change, paper_box, bracket=""):
     """One coupling factor that moves a cell toward the paper, in words: its change on the 60 d box's
-    paired beds and what it gives in the paper's own box (paper_box: a PaperBoxReading, or None)."""
+    paired beds, where it starts the shape rising there (bracket: coupling_bracket_words') and what it
+    gives in the paper's own box (paper_box: a PaperBoxReading, or None)."""
     diff, z, _, name, _, paired = change
     if paper_box is None:
         box = "not run yet"
@@ -447,7 +466,7 @@ def coupling_words(change, paper_box):
         box = (f"being run, so far (t = 100-{paper_box.t_now:g}, not judged) {paper_box.vy:+.4f} against the "
                f"protocol's {paper_box.base:+.4f} on the same bed over the same window (one bed)")
     return (f"{name} moves it {diff:+.4f} ({abs(z):.1f} se, toward the paper; {beds_count([paired])} paired) in the "
-            f"60 d box; in the paper's box: {box}")
+            f"60 d box{bracket}; in the paper's box: {box}")
 
 
 def what_moved(changes):
@@ -474,7 +493,7 @@ def what_is_left(changes, on_side, unmeasured_words, coupling=()):
     toward = any(c[2] == "toward the paper" for _, c in changes)
     if coupling:
         return (f"So the protocol's factors account for {'none' if not toward else 'not all'} of the difference; "
-                "the intruder's coupling may: " + "; ".join(coupling_words(c, box) for c, box in coupling)
+                "the intruder's coupling may: " + "; ".join(coupling_words(*c) for c in coupling)
                 + f". Left beside it: {unmeasured_words}.")
     return ("So " + ("none" if not toward else "not all") + " of the difference is accounted for: what is left "
             f"is {'all of it' if not toward else 'the rest'}: {unmeasured_words}.")
