@@ -229,8 +229,9 @@ def answer_protocol(spec):
 # The coupling screen (issue 79): each factor on the factor screen's beds of the paper's protocol in the
 # 60 d box, paired bed by bed with that protocol's own run there (its `*_paper` cases; the square at
 # T = 4, the control, and the triangle at T = 4, the lattice body's other side of the paper's bracket,
-# have their baselines in COUPLING).
-COUPLING_CELLS = [("square", 3.0), ("triangle", 5.0), ("square", 4.0), ("triangle", 4.0)]
+# have their baselines in COUPLING; the triangle at T = 3, where the lattice body's bracket lies if it
+# rises at T = 4 too, has none).
+COUPLING_CELLS = [("square", 3.0), ("triangle", 5.0), ("square", 4.0), ("triangle", 4.0), ("triangle", 3.0)]
 COUPLING_BASE = dict(PAPER_PROTOCOL, **{"intruder.contact_mass": "body", "intruder.rotation": "locked",
                                         "drive.form": "displacement"})
 COUPLING_ROWS = [('the atoms\' mass in the contacts (intruder.contact_mass = "atom")', {"intruder.contact_mass": "atom"}),
@@ -366,7 +367,7 @@ def answer_coupling(spec):
         for shape, period in COUPLING_CELLS:
             values = coupling_beds(shape, period, changes)
             if not values:
-                cells.append("not run yet")
+                cells.append("not run")
                 continue
             each = ", ".join(f"{v:+.4f} (bed {seed:g})" for seed, v in sorted(values.items()))
             change = coupling_change(shape, period, changes) if changes else None
@@ -381,7 +382,7 @@ def answer_coupling(spec):
               "protocol in the 60 d box (random pour, glued 0.5 d shell, the glued disk's mass 9.88; bed = box.seed); "
               "study/sweeps/paper_depth_coupling_t1000.toml. The paper's side: not rising at T = 3 for the square "
               "(the lower end of its 3-4), rising at T = 4; rising at T = 5 for the triangle (the upper end of its 4-5), "
-              "not rising at T = 4. "
+              "not rising at T = 3-4. "
               "A change is the row's mean minus the baseline's over the beds both have, in standard errors se = sigma "
               "sqrt(1/n + 1/n), sigma " + scatter_words(shapes) + ". " + paired_scatter_words(shapes) + ". A change "
               f"moves the cell toward the paper's side when >= {RESOLVED:g} se that way)"]
