@@ -87,7 +87,7 @@ class PyCase {
     world_->enableStepProfile(run_.config.run.profile);  // as `wiggle run` does (run.profile)
     if (drive) installDrive(*drive, peakSpeed);
     world_->evaluateForces();  // the start's forces, as `wiggle run` evaluates them before its first step
-    record_.sample(world_->intruder(), world_->time());  // and its first sample, as `wiggle run` takes it
+    record_.sample(*world_);  // and its first sample, as `wiggle run` takes it
   }
 
   // A run directory's case, from its newest checkpoint (as `wiggle run --resume` takes it).
@@ -273,7 +273,8 @@ PYBIND11_MODULE(wiggle, m) {
           "trajectory",
           [](const PyCase& c) {
             using Sample = wiggle::TrajectorySample;
-            return wiggle::columnsOf<Sample>(
+            using Spin = wiggle::SpinSample;
+            py::dict columns = wiggle::columnsOf<Sample>(
                 [&c](const std::function<void(const Sample&)>& visit) {
                   for (const Sample& s : c.record().samples) visit(s);
                 },
@@ -283,9 +284,17 @@ PYBIND11_MODULE(wiggle, m) {
                  {"vx", [](const Sample& s) { return s.vx; }},
                  {"vy", [](const Sample& s) { return s.vy; }},
                  {"fy", [](const Sample& s) { return s.fy; }}});
+            if (c.record().spins.empty()) return columns;
+            const py::dict turns = wiggle::columnsOf<Spin>(
+                [&c](const std::function<void(const Spin&)>& visit) {
+                  for (const Spin& s : c.record().spins) visit(s);
+                },
+                {{"angle", [](const Spin& s) { return s.angle; }}, {"omega", [](const Spin& s) { return s.omega; }}});
+            for (const auto& [name, column] : turns) columns[name] = column;
+            return columns;
           },
           "The intruder's samples so far, every run.sample_interval from t = 0, as trajectory.csv's columns "
-          "t, x, y, vx, vy, fy (copies)")
+          "t, x, y, vx, vy, fy, and angle, omega when it may turn (copies)")
       .def_property_readonly(
           "phase_rates",
           [](const PyCase& c) {

@@ -23,7 +23,7 @@ def _pandas():
 # results.csv's own columns carry the units of docs/results-schema.json (readers.results_columns).
 LENGTH, TIME, SPEED, FORCE, STRESS = "d", "sqrt(d/g)", "sqrt(g d)", "rho d^3 g", "rho g d^2"
 UNITS = {
-    "t": TIME, "x": LENGTH, "y": LENGTH, "vx": SPEED, "vy": SPEED, "fy": FORCE,
+    "t": TIME, "x": LENGTH, "y": LENGTH, "vx": SPEED, "vy": SPEED, "fy": FORCE, "angle": "rad", "omega": "sqrt(g/d)",
     "phase_center": "10 phi / pi", "vy_mean": SPEED,
     "phase": "10 phi / pi", "phi": "1 (area fraction)", "sxx": STRESS, "sxy": STRESS, "syy": STRESS,
     "pressure": STRESS,

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
+#include <string_view>
 
 #include "core/Error.h"
 #include "core/Format.h"
@@ -12,14 +13,23 @@
 namespace wiggle {
 
 namespace {
-constexpr const char* kHeader = "t,x,y,vx,vy,fy";
+constexpr std::string_view kHeader = "t,x,y,vx,vy,fy";
+constexpr std::string_view kSpinColumns = ",angle,omega";
 }  // namespace
 
-void writeTrajectoryCsv(const std::string& path, const std::vector<TrajectorySample>& samples) {
-  std::string out = std::string(kHeader) + "\n";
-  for (const auto& s : samples)
+void writeTrajectoryCsv(const std::string& path, const std::vector<TrajectorySample>& samples,
+                        const std::vector<SpinSample>& spins) {
+  if (!spins.empty() && spins.size() != samples.size())
+    throw Error(path + ": " + std::to_string(spins.size()) + " turns for " + std::to_string(samples.size()) +
+                " samples");
+  std::string out = std::string(kHeader) + std::string(spins.empty() ? "" : kSpinColumns) + "\n";
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    const TrajectorySample& s = samples[i];
     out += formatNumber(s.t, 10) + ',' + formatNumber(s.x, 10) + ',' + formatNumber(s.y, 10) + ',' +
-           formatNumber(s.vx, 10) + ',' + formatNumber(s.vy, 10) + ',' + formatNumber(s.fy, 10) + '\n';
+           formatNumber(s.vx, 10) + ',' + formatNumber(s.vy, 10) + ',' + formatNumber(s.fy, 10);
+    if (!spins.empty()) out += ',' + formatNumber(spins[i].angle, 10) + ',' + formatNumber(spins[i].omega, 10);
+    out += '\n';
+  }
   writeFileAtomically(path, out);
 }
 
@@ -30,7 +40,8 @@ std::vector<TrajectorySample> readTrajectoryCsv(const std::string& path) {
     if (!text.empty() && text.back() == '\r') text.pop_back();
   };
   if (std::getline(in, line)) withoutCr(line);
-  if (line != kHeader) throw Error(path + ": not a trajectory.csv (its first line must be '" + kHeader + "')");
+  if (line.rfind(kHeader, 0) != 0 || (line.size() > kHeader.size() && line[kHeader.size()] != ','))
+    throw Error(path + ": not a trajectory.csv (its first line must start '" + std::string(kHeader) + "')");
   std::vector<TrajectorySample> samples;
   for (int lineNo = 2; std::getline(in, line); ++lineNo) {
     withoutCr(line);
@@ -41,9 +52,9 @@ std::vector<TrajectorySample> readTrajectoryCsv(const std::string& path) {
       char* end = nullptr;
       errno = 0;
       v[k] = std::strtod(p, &end);
-      const char expected = k < 5 ? ',' : '\0';
-      if (end == p || errno == ERANGE || !std::isfinite(v[k]) || *end != expected)
-        throw Error(path + ": line " + std::to_string(lineNo) + " is not six numbers");
+      const bool last = k == 5;
+      if (end == p || errno == ERANGE || !std::isfinite(v[k]) || (last ? *end != '\0' && *end != ',' : *end != ','))
+        throw Error(path + ": line " + std::to_string(lineNo) + " does not start with six numbers");
       p = end + (k < 5 ? 1 : 0);
     }
     if (!samples.empty() && !(v[0] > samples.back().t))

@@ -14,7 +14,8 @@ namespace wiggle {
 // refused. Version 3 added the contact law (World's parameters); version 2 files are Hertz. Version 4
 // added the intruder's mass shares (its contact mass); earlier files have 1 share (the body's mass).
 // Version 5 added whether the intruder may turn, and its turn; earlier files hold intruders that do not.
-constexpr std::uint32_t kStateFormatVersion = 5;
+// Version 6 added a checkpoint's turn at each trajectory sample (RunState::spins).
+constexpr std::uint32_t kStateFormatVersion = 6;
 constexpr std::uint32_t kOldestStateFormatVersion = 2;
 
 // A state file's payload and the format version it was written in.

@@ -108,6 +108,18 @@ class Engine(unittest.TestCase):
         np.testing.assert_array_equal(rates["samples"], self.cli_phase_rates["samples"])
         np.testing.assert_allclose(rates["vy_mean"], self.cli_phase_rates["vy_mean"], rtol=1e-9, atol=1e-12)
 
+    def test_a_turning_intruders_trajectory_has_its_turn(self):
+        # trajectory.csv's angle and omega columns, only where the intruder may turn
+        locked = wiggle.Case(self.config, threads=1)
+        self.assertNotIn("angle", locked.trajectory)
+        turning = wiggle.Case(self.config, overrides={"intruder.rotation": "free"}, threads=1)
+        turning.step(1000)
+        traj = turning.trajectory
+        self.assertEqual(len(traj["angle"]), len(traj["t"]))
+        self.assertEqual(len(traj["omega"]), len(traj["t"]))
+        self.assertEqual(traj["angle"][0], 0.0)
+        self.assertNotEqual(traj["angle"][-1], 0.0)
+
     def test_save_and_load_are_wiggle_runs_checkpoints(self):
         # Saved mid-run, the case is a run directory: `wiggle run --resume` finishes it and
         # Case.load continues it, both to wiggle run's bits.

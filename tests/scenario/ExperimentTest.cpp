@@ -131,6 +131,37 @@ TEST(Experiment, ResumedRunIsBitwiseIdenticalToAnUninterruptedOne) {
   EXPECT_EQ(rows, 20);
 }
 
+// An intruder that may turn writes its turn beside each sample (trajectory.csv's angle and omega, the
+// last angle summary.json's angle_end), and a resumed run writes it bit for bit as an uninterrupted one.
+TEST(Experiment, ATurningIntruderRecordsItsTurnAndResumesBitwise) {
+  RunConfig config = tinyConfig(scratch(""));
+  config.intruder.rotation = IntruderRotation::Free;
+  config.run.dumpInterval = 0.0;
+  config.fields.enabled = false;
+  const std::string straight = scratch("turning-straight"), interrupted = scratch("turning-interrupted");
+  const RunOutcome reference = runExperiment(prepareCase(config), quiet(straight));
+  ASSERT_EQ(reference.summary.status, RunStatus::Ok);
+  const std::string whole = readFile(straight + "/trajectory.csv");
+  EXPECT_EQ(whole.substr(0, whole.find('\n')), "t,x,y,vx,vy,fy,angle,omega");
+  std::istringstream lastRow(whole.substr(whole.rfind('\n', whole.size() - 2) + 1));
+  std::vector<double> cells;
+  for (std::string cell; std::getline(lastRow, cell, ',');) cells.push_back(std::stod(cell));
+  ASSERT_EQ(cells.size(), 8u);
+  const double lastAngle = cells[6];
+  EXPECT_NEAR(lastAngle, reference.summary.angleEnd, 1e-9 * (1.0 + std::fabs(lastAngle)));
+  EXPECT_NE(reference.summary.angleEnd, 0.0);  // it turned
+
+  RunOptions stop = quiet(interrupted);
+  stop.stopAfterSteps = 1700;
+  stop.checkpointAtStop = true;
+  ASSERT_EQ(runExperiment(prepareCase(config), stop).summary.status, RunStatus::Stopped);
+  RunOptions resume = quiet(interrupted);
+  resume.resume = true;
+  const RunOutcome resumed = runExperiment(prepareCase(config), resume);
+  EXPECT_EQ(resumed.summary.stateHash, reference.summary.stateHash);
+  EXPECT_EQ(readFile(interrupted + "/trajectory.csv"), whole);
+}
+
 // run.profile: summary.json's step_profile, whose stages sum to its step_s, within the run's wall
 // time; the same bits as without it, and no step_profile without it.
 TEST(Experiment, StepProfileOnlyWhenAskedWithTheSameBits) {

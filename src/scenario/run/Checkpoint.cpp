@@ -8,6 +8,10 @@
 
 namespace wiggle {
 
+namespace {
+constexpr std::uint32_t kFirstFormatWithSpins = 6;  // io/StateFile.h's version that added RunState::spins
+}  // namespace
+
 void RunState::save(BinaryWriter& out) const {
   out.array(samples);
   out.array(phaseSum);
@@ -17,6 +21,7 @@ void RunState::save(BinaryWriter& out) const {
   out.value(bedWallSeconds);
   out.string(bedKey);
   out.value(static_cast<std::uint8_t>(bedFromCache));
+  out.array(spins);
 }
 
 void RunState::load(BinaryReader& in) {
@@ -30,6 +35,8 @@ void RunState::load(BinaryReader& in) {
   bedWallSeconds = in.value<double>();
   bedKey = in.string();
   bedFromCache = in.value<std::uint8_t>() != 0;
+  if (in.formatVersion() >= kFirstFormatWithSpins) spins = in.array<SpinSample>();
+  if (!spins.empty() && spins.size() != samples.size()) throw Error(in.what() + " is corrupt: turns");
 }
 
 std::string checkpointPath(const std::string& runDir) { return runDir + "/checkpoint.bin"; }

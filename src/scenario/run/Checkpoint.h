@@ -21,6 +21,9 @@ inline constexpr int kPhaseBins = 20;  // 10 phi / pi in [0, 20), one bin per un
 // Everything the run loop accumulates besides the World.
 struct RunState {
   std::vector<TrajectorySample> samples;
+  // The turn at each sample of an intruder that may turn; empty when it may not, and for a run resumed
+  // from a checkpoint written before turns were kept (it then gets none: a column is whole or absent).
+  std::vector<SpinSample> spins;
   std::vector<double> phaseSum = std::vector<double>(kPhaseBins, 0.0);
   std::vector<std::uint64_t> phaseCount = std::vector<std::uint64_t>(kPhaseBins, 0);
   std::uint64_t dumpBytes = 0;     // length of dumps/dump.lammpstrj at this state
@@ -29,20 +32,23 @@ struct RunState {
   std::string bedKey;
   bool bedFromCache = false;
 
-  // A trajectory sample of the intruder now.
-  void sample(const ClumpState& intruder, double time) {
-    samples.push_back({time, intruder.x, intruder.y, intruder.vx, intruder.vy, intruder.contactFy});
+  // A trajectory sample of the world's intruder now (and its turn, when it may turn).
+  void sample(const World& world) {
+    if (world.intruderMotion().rotationFree && spins.size() == samples.size())
+      spins.push_back({world.intruderSpin().angle, world.intruderSpin().omega});
+    const ClumpState& intruder = world.intruder();
+    samples.push_back({world.time(), intruder.x, intruder.y, intruder.vx, intruder.vy, intruder.contactFy});
   }
   // What a run records of the intruder after each step (the one rule, used by `wiggle run` and the
   // Python module): its v_y in the step's phase bin once past t_i, and a sample every
   // run.sample_interval.
-  void recordStep(const RunSchedule& steps, const ClumpState& intruder, std::uint64_t step, double time) {
+  void recordStep(const RunSchedule& steps, const World& world, std::uint64_t step) {
     if (step > steps.firstMeasured) {
       const auto bin = static_cast<std::size_t>((step % steps.period) * kPhaseBins / steps.period);
-      phaseSum[bin] += intruder.vy;
+      phaseSum[bin] += world.intruder().vy;
       ++phaseCount[bin];
     }
-    if (step % steps.sampleEvery == 0) sample(intruder, time);
+    if (step % steps.sampleEvery == 0) sample(world);
   }
 
   void save(BinaryWriter& out) const;

@@ -290,7 +290,7 @@ void recordSteppingSpeed(const RunConfig& config, const World& world, const Step
 void saveProgress(const std::string& dir, const std::string& configToml, const World& world, const RunState& state,
                   const FieldObserver& fields) {
   writeCheckpoint(dir, configToml, world, state, fields);
-  writeTrajectoryCsv(dir + "/trajectory.csv", state.samples);
+  writeTrajectoryCsv(dir + "/trajectory.csv", state.samples, state.spins);
 }
 
 const char* threadChangeWords(ThreadChangeReason reason) {
@@ -380,7 +380,7 @@ RunOutcome writeRunOutputs(const Case& run, const std::string& dir, const World&
   const RunConfig& config = run.config;
   const SettleRule rule;
   const auto [rate, settled] = measureRunRates(run, state.samples, paperWindow(config.run.duration), rule);
-  writeTrajectoryCsv(dir + "/trajectory.csv", state.samples);
+  writeTrajectoryCsv(dir + "/trajectory.csv", state.samples, state.spins);
   writePhaseRates(dir + "/phase_rates.csv", state);
   if (config.fields.enabled) fields.writeCsv(dir + "/fields.csv");
   writeModel(dir + "/model.json", config, run.shape);

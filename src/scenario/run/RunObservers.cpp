@@ -16,10 +16,10 @@ void RunObservers::stepTowards(World& world, std::uint64_t end, const std::funct
   while (world.stepCount() < end) {
     std::uint64_t to = world.stepCount() + 1;
     while (!stopsAt(to) && !needsGrainsAt(to)) ++to;
-    world.runWatchingIntruder(to - world.stepCount(),
-                              [this](const ClumpState& intruder, std::uint64_t step, double time) {
-                                state_.recordStep(run_.steps, intruder, step, time);
-                              });
+    // After each step the intruder and its turn are whole (World::runWatchingIntruder).
+    world.runWatchingIntruder(to - world.stepCount(), [this, &world](const ClumpState&, std::uint64_t step, double) {
+      state_.recordStep(run_.steps, world, step);
+    });
     if (const std::size_t p = fieldPhaseAt(to)) fields_.addFrame(world, p - 1);
     if (dumpAt(to)) dumpFrame(world);
     if (stopsAt(to)) return;

@@ -22,7 +22,7 @@ class RunObservers {
       : run_(run), state_(state), fields_(fields), dumpPath_(std::move(dumpPath)) {}
 
   // The intruder's sample of the world's current step (the run's first, at t = 0).
-  void sample(const World& world) { state_.sample(world.intruder(), world.time()); }
+  void sample(const World& world) { state_.sample(world); }
   // A dump frame of the world's current step, appended to the dump file.
   void dumpFrame(const World& world);
 
