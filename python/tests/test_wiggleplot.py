@@ -120,6 +120,32 @@ class RunDataTest(DataDirs):
         from matplotlib import pyplot
         pyplot.close(figures["trajectory"])
 
+    def test_a_turning_intruders_trajectory_shows_how_far_it_turned(self):
+        figures = {}
+
+        def keep(fig, out_dir, name, formats):
+            figures[name] = fig
+            return []
+
+        from matplotlib import pyplot
+        with mock.patch.object(runplots.style, "save", keep):
+            runplots.plot_trajectory(runplots.Run(self.run_dir, quiet_report()), self.tmp, ("png",))
+            self.assertEqual(len(figures["trajectory"].axes), 1)  # locked: no turn to show
+            pyplot.close(figures["trajectory"])
+            turning = os.path.join(self.tmp, "turning")
+            synthetic.write_run(turning, with_fields=False, with_dump=False)
+            path = os.path.join(turning, "trajectory.csv")
+            with open(path) as f:
+                rows = f.read().splitlines()
+            with open(path, "w") as f:  # the columns a turning run adds: angle [rad], omega
+                turned = [f"{r},{0.01 * i:.10g},0.01" for i, r in enumerate(rows[1:])]
+                f.write("\n".join([rows[0] + ",angle,omega"] + turned) + "\n")
+            runplots.plot_trajectory(runplots.Run(turning, quiet_report()), self.tmp, ("png",))
+        turn = figures["trajectory"].axes[1]
+        self.assertEqual(turn.get_ylabel(), "turned [degrees]")
+        self.assertAlmostEqual(turn.get_lines()[0].get_ydata()[-1], np.degrees(0.01 * 400), places=9)
+        pyplot.close(figures["trajectory"])
+
     def test_phase_axes_say_what_the_phase_is_and_where_the_intruder_is(self):
         fig, ax = style.plt.subplots()
         top = style.phase_axis(ax)

@@ -203,6 +203,12 @@ def plot_trajectory(run, out_dir, formats):
                     textcoords="offset points", fontsize=7, color="0.4")
     ax.set_xlabel(style.T_LABEL)
     ax.set_ylabel(style.DY_LABEL)
+    if "angle" in run.trajectory:  # an intruder that may turn: how far it turned, on its own axis
+        turn = ax.twinx()
+        angle = np.degrees(np.asarray(run.trajectory["angle"], dtype=float))
+        turn.plot(t, angle, color="#1f78b4", lw=0.7, alpha=0.8)
+        turn.set_ylabel("turned [degrees]", color="#1f78b4")
+        turn.tick_params(axis="y", colors="#1f78b4")
     status = run.summary.get("status")
     title = run.label() + ("" if status in (None, "ok") else f" [{status}]")
     ax.set_title(title)
