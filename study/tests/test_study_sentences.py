@@ -309,24 +309,24 @@ class WhatIsLeftTest(unittest.TestCase):
     def test_the_coupling_screen_so_far(self):
         within = (0.001, 0.5, "within the scatter", "the lattice body", "the square at T = 3", 2)
         moved = (0.02, 3.0, "toward the paper", "turning", "the triangle at T = 5", 1)
-        self.assertEqual(answer_sentences.coupling_status([(within, None), (None, None)]),
+        self.assertEqual(answer_sentences.coupling_status([(within, None, ""), (None, None, "")]),
                          "its screen being run, 1 change measured so far, on 2 beds each: none moves a cell by 2 "
                          "standard errors so far; study/VALIDATION.md, \"The intruder's coupling\"")
-        self.assertEqual(answer_sentences.coupling_status([(within, None), (moved, None)]),
+        self.assertEqual(answer_sentences.coupling_status([(within, None, ""), (moved, None, "")]),
                          "its screen being run, 2 changes measured so far, on 1-2 beds each: turning moves the "
                          "triangle at T = 5 toward the paper (+0.020, 3.0 se, in the 60 d box; not run in the paper's "
                          "box yet); study/VALIDATION.md, \"The intruder's coupling\"")
         # a factor's name carries its own article: it is not doubled
         lattice = (0.11, 7.1, "toward the paper", "the lattice body", "the triangle at T = 5", 1)
         self.assertIn("each: the lattice body moves the triangle at T = 5 toward the paper (+0.110, 7.1 se",
-                      answer_sentences.coupling_status([(lattice, None)]))
+                      answer_sentences.coupling_status([(lattice, None, "")]))
         # where the paper's box has run it: how it reads there, by the rule, against the paper
         reading = factor_tables.PaperBoxReading
         sig = scatter.clock_sigma("triangle")
         self.assertIn(f"in the 60 d box; in the paper's box {5 * sig:+.3f} (1 bed, +5.0 se): rising, as the paper)",
-                      answer_sentences.coupling_status([(lattice, reading("triangle", 5.0, 5 * sig, -sig))]))
+                      answer_sentences.coupling_status([(lattice, reading("triangle", 5.0, 5 * sig, -sig), "")]))
         self.assertIn("in the 60 d box; being run in the paper's box)",
-                      answer_sentences.coupling_status([(lattice, reading("triangle", 5.0, None, None, 150.0, 1000.0))]))
+                      answer_sentences.coupling_status([(lattice, reading("triangle", 5.0, None, None, 150.0, 1000.0), "")]))
 
     def test_a_change_is_not_resolved_beyond_its_shapes_paired_runs(self):
         # made-up: the square's paired changes stray (one bed's sd of a change 0.0200, 2 dof); the triangle's do not
@@ -360,6 +360,12 @@ class WhatIsLeftTest(unittest.TestCase):
         # rising at both: below the paper's range
         words = answer_sentences.coupling_bracket_words("triangle", [(4.0, [6 * sig, 6 * sig]), (5.0, [8 * sig, 8 * sig])])
         self.assertIn(": its bracket <= 4, **no**", words)
+        self.assertEqual(answer_sentences.coupling_bracket_short("triangle", [(4.0, [6 * sig, 6 * sig]), (5.0, [8 * sig] * 2)]),
+                         ", its bracket there <= 4 (the paper's 4-5)")
+        self.assertEqual(answer_sentences.coupling_bracket_short("triangle", [(5.0, [8 * sig] * 2)]), "")
+        lattice_moves = (0.11, 10.2, "toward the paper", "the lattice body", "the triangle at T = 5", 2)
+        self.assertIn("(+0.110, 10.2 se, in the 60 d box, its bracket there <= 4 (the paper's 4-5); not run in the paper's",
+                      answer_sentences.coupling_status([(lattice_moves, None, ", its bracket there <= 4 (the paper's 4-5)")]))
         # and the words stand after the 60 d box's change in the cell's sentence
         lattice = (0.11, 10.2, "toward the paper", "the lattice body", "the triangle at T = 5", 2)
         self.assertIn("2 beds paired) in the 60 d box; by itself there T = 4 ",

@@ -340,7 +340,8 @@ def unmeasured(short=False, cell=None):
         status = cell_coupling_status([(label.split(" (")[0], coupling_change(*cell, changes))
                                        for label, changes in COUPLING_ROWS])
     else:
-        status = coupling_status([(change, paper_box_coupling(shape, period, changes) if change else None)
+        status = coupling_status([(change, paper_box_coupling(shape, period, changes) if change else None,
+                                   coupling_bracket_short(shape, coupling_periods(shape, changes)))
                                   for _, changes in COUPLING_ROWS for shape, period in COUPLING_CELLS
                                   for change in [coupling_change(shape, period, changes)]])
     if short:
@@ -360,16 +361,17 @@ def cell_coupling_status(measured):
 
 
 def coupling_status(measured):
-    """How far the coupling screen has gone, from its cells' (change, paper-box reading) (coupling_change's,
-    None for a cell not measured yet; paper_box_coupling's): how many changes, on how many beds, and which
-    move a cell by RESOLVED standard errors, with what each gives in the paper's box."""
-    changes = [(c, box) for c, box in measured if c]
-    moved = [(c, box) for c, box in changes if c[2] != "within the scatter"]
+    """How far the coupling screen has gone, from its cells' (change, paper-box reading, bracket)
+    (coupling_change's, None for a cell not measured yet; paper_box_coupling's; coupling_bracket_short's):
+    how many changes, on how many beds, and which move a cell by RESOLVED standard errors, with where the
+    factor by itself starts the shape rising and what it gives in the paper's box."""
+    changes = [(c, box, bracket) for c, box, bracket in measured if c]
+    moved = [(c, box, bracket) for c, box, bracket in changes if c[2] != "within the scatter"]
     return (f"its screen being run, {len(changes)} change{'s' if len(changes) > 1 else ''} measured so far, on "
-            f"{beds_count(c[5] for c, _ in changes)} each: "
+            f"{beds_count(c[5] for c, _, _ in changes)} each: "
             + (f"none moves a cell by {RESOLVED:g} standard errors so far" if not moved else
-               "; ".join(f"{c[3]} moves {c[4]} {c[2]} ({c[0]:+.3f}, {abs(c[1]):.1f} se, in the 60 d box; "
-                         f"{paper_box_short(box)})" for c, box in moved))
+               "; ".join(f"{c[3]} moves {c[4]} {c[2]} ({c[0]:+.3f}, {abs(c[1]):.1f} se, in the 60 d box{bracket}; "
+                         f"{paper_box_short(box)})" for c, box, bracket in moved))
             + "; study/VALIDATION.md, \"The intruder's coupling\"")
 
 
@@ -446,6 +448,15 @@ def coupling_bracket_words(shape, periods):
     lo, hi = findings.first_rise(periods, clock_sigma(shape))
     each = ", ".join(f"T = {t:g} {beds_z_text(values, shape)}" for t, values in periods)
     return f"; by itself there {each}: its bracket {bracket_text(lo, hi, periods)}, {against_paper(lo, hi, shape)}"
+
+
+def coupling_bracket_short(shape, periods):
+    """coupling_bracket_words' bracket in a few words: ', its bracket there <= 4 (the paper's 4-5)'; "" with
+    cells at fewer than two periods."""
+    if len(periods) < 2:
+        return ""
+    lo, hi = findings.first_rise(periods, clock_sigma(shape))
+    return f", its bracket there {bracket_text(lo, hi, periods)} (the paper's {paper_observed(shape)})"
 
 
 def coupling_words(change, paper_box, bracket=""):
