@@ -371,6 +371,22 @@ class WhatIsLeftTest(unittest.TestCase):
         self.assertIn("2 beds paired) in the 60 d box; by itself there T = 4 ",
                       answer_sentences.what_is_left([], False, "", [(lattice, None, words)]))
 
+    def test_the_lattice_body_by_itself_shape_by_shape(self):
+        sig = scatter.clock_sigma("triangle")
+        made_up = {"triangle": [(4.0, [0.5 * sig, 0.0]), (5.0, [8 * sig, 8 * sig])], "disk": [(2.5, [0.0])]}
+        real_periods, real_straying = factor_tables.coupling_periods, factor_tables.straying
+        factor_tables.coupling_periods = lambda shape, changes: made_up.get(shape, [])
+        factor_tables.straying = lambda shapes: []
+        try:
+            lines, _ = factor_tables.answer_lattice({})
+        finally:
+            factor_tables.coupling_periods, factor_tables.straying = real_periods, real_straying
+        rows = [line for line in lines if line.startswith("| ") and "---" not in line][1:]
+        self.assertEqual([r.split(" | ")[0] for r in rows], ["| disk (OS1)", "| triangle (OS5)"])   # shapes run, in order
+        self.assertIn("| T = 2.5 +0.000 (1 bed, +0.0 se) | none: not rising at T = 2.5 |", rows[0])
+        self.assertIn("| 4-5 | T = 4 ", rows[1])
+        self.assertIn("| 4-5 | **yes**", rows[1])   # not rising at 4, rising at 5: the paper's bracket
+
     def test_the_coupling_screen_at_one_cell(self):
         atom = (-0.0042, -1.8, "within the scatter", "the atoms' mass", "the square at T = 3", 2)
         self.assertEqual(answer_sentences.cell_coupling_status([("the atoms' mass", atom), ("turning", None)]),

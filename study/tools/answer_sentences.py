@@ -13,7 +13,7 @@ from cases import (CLOCK_A3, CLOCK_A5, COUPLING, DEPTH_A5, PAPER_RANGE, SHAPES, 
                    T1000_BEDS, Cell, beds, beds_count, beds_text, by_period, cell_text, committed, count_range, load,
                    mean, paper_observed, select, so_far)
 from factor_tables import (BOX_ALONE, BOX_ROW, COUPLING_CELLS, COUPLING_ROWS, PROTOCOL_CELLS, PROTOCOL_FOLDERS,
-                           PROTOCOL_ROWS, box_alone_change, change_text, coupling_beds, coupling_change,
+                           PROTOCOL_ROWS, box_alone_change, change_text, coupling_change, coupling_periods,
                            paper_box_change, paper_box_coupling, protocol_beds, protocol_change, row_where, straying)
 from findings import RESOLVED
 from findings_table import FINDING_SOURCES, against_findings, paper_findings
@@ -431,13 +431,6 @@ def coupling_toward(shape, period):
             found.append((change, paper_box_coupling(shape, period, changes),
                           coupling_bracket_words(shape, coupling_periods(shape, changes))))
     return found
-
-
-def coupling_periods(shape, changes):
-    """[(T, [V_y per bed])] of a coupling row at the shape's cells of the screen, in ascending T."""
-    runs = [(period, list(coupling_beds(shape, period, changes).values()))
-            for s, period in COUPLING_CELLS if s == shape]
-    return sorted((period, values) for period, values in runs if values)
 
 
 def coupling_bracket_words(shape, periods):

@@ -9,10 +9,11 @@ import math
 from dataclasses import dataclass
 
 import findings
-from cases import (COUPLING, PAPER_BOX, PAPER_RANGE, SO_FAR_FROM, T1000_BEDS, T1000_WINDOWS, beds, cell_text, chord,
-                   committed, head_lines, key_of, paper_observed, row_line, select, so_far, unfinished)
+from cases import (COUPLING, PAPER_BOX, PAPER_RANGE, SHAPES, SO_FAR_FROM, T1000_BEDS, T1000_WINDOWS, beds, cell_text,
+                   chord, committed, head_lines, key_of, paper_observed, row_line, select, so_far, unfinished)
 from findings import RESOLVED
-from scatter import PAPER_SIDE, clock_sigma, scatter_words
+from scatter import PAPER_SIDE, SHAPE_NAMES, beds_z_text, clock_sigma, scatter_words
+from table1_blocks import against_paper, bracket_text
 from table_kinds import windows
 
 # The paper's own protocol (issue 51): the preset's differences from the paper's stated protocol,
@@ -240,11 +241,24 @@ COUPLING_ROWS = [('the atoms\' mass in the contacts (intruder.contact_mass = "at
                  ('the drive read as a velocity (drive.form = "velocity")', {"drive.form": "velocity"})]
 
 
+COUPLING_SOURCES = COUPLING + ["results/paper_depth/factors_t1000"]   # the screen's cases and its baselines'
+
+
+def coupling_where(shape, changes):
+    """The keys of the coupling screen's cases of `shape` with `changes` from the paper's protocol, at any period."""
+    return dict(COUPLING_BASE, **changes, **{"intruder.shape": shape, "drive.amplitude": 5.0, "box.width": 60.0})
+
+
 def coupling_beds(shape, period, changes):
     """{seed: V_y} of the coupling screen's cell with `changes` from the paper's protocol (none: its baseline)."""
-    where = dict(COUPLING_BASE, **changes, **{"intruder.shape": shape, "drive.period": period, "drive.amplitude": 5.0,
-                                              "box.width": 60.0})
-    return protocol_beds(COUPLING + ["results/paper_depth/factors_t1000"], where)
+    return protocol_beds(COUPLING_SOURCES, dict(coupling_where(shape, changes), **{"drive.period": period}))
+
+
+def coupling_periods(shape, changes):
+    """[(T, [V_y per bed])] of a coupling row's cases of `shape` at every period the screen has run it, in
+    ascending T (on the factor screen's beds, or on a bed poured around the changed body)."""
+    ran = sorted({c.get("drive.period") for c in select(committed(COUPLING_SOURCES), coupling_where(shape, changes))})
+    return [(period, list(coupling_beds(shape, period, changes).values())) for period in ran]
 
 
 def coupling_paired(shape, period, changes):
@@ -386,12 +400,43 @@ def answer_coupling(spec):
               "A change is the row's mean minus the baseline's over the beds both have, in standard errors se = sigma "
               "sqrt(1/n + 1/n), sigma " + scatter_words(shapes) + ". " + paired_scatter_words(shapes) + ". A change "
               f"moves the cell toward the paper's side when >= {RESOLVED:g} se that way)"]
-    return lines, committed(COUPLING + ["results/paper_depth/factors_t1000"])
+    return lines, committed(COUPLING_SOURCES)
+
+
+# The lattice body by itself (issue 79): where it starts each shape rising, from every lattice case of
+# the coupling screen, whichever bed it ran on.
+LATTICE = {"intruder.surface": "lattice"}
+
+
+def answer_lattice(spec):
+    """Each shape run on the lattice body: its V_y per period in the 60 d box, where it starts rising by
+    the Table 1's rule, and that against the paper's range."""
+    lines = head_lines(["shape", "the paper's T_rising", "V_y on the lattice body, A = 5", "its bracket",
+                        "the paper's range?"])
+    shown = [shape for shape in SHAPES if coupling_periods(shape, LATTICE)]
+    stray = "".join(f"; the {shape}'s paired runs stray {sd / rule:.1f} x as far as its sigma allows ({dof} dof): its "
+                    "counts of standard errors overstate it by as much" for shape, sd, dof, rule in straying(shown))
+    for shape in SHAPES:
+        cells = coupling_periods(shape, LATTICE)
+        if not cells:
+            continue
+        lo, hi = findings.first_rise(cells, clock_sigma(shape))
+        each = "; ".join(f"T = {period:g} {beds_z_text(values, shape)}" for period, values in cells)
+        lines.append(row_line([SHAPE_NAMES[shape], paper_observed(shape), each, bracket_text(lo, hi, cells),
+                               against_paper(lo, hi, shape)]))
+    lines += ["", "(V_y over t = 100-1000 of runs to t = 1000 in the 60 d box by the paper's protocol but for the "
+              "body: the outline filled with touching 0.5 d spheres on a square lattice; on the factor screen's "
+              "beds with the lattice body in the glued shell's place (`bed.swap_intruder`), or on a bed poured "
+              "around the lattice body itself; study/sweeps/paper_depth_coupling_t1000.toml. se: standard errors "
+              "from zero by the shape's sigma, " + scatter_words(shown) + stray
+              + ". The bracket is the first period that rises and the period run below it, as in Table 1)"]
+    return lines, committed(COUPLING)
 
 
 TABLES = [
     {"name": "answer_protocol", "kind": answer_protocol, "sources": PROTOCOL_FOLDERS + T1000_BEDS},
-    {"name": "answer_coupling", "kind": answer_coupling, "sources": COUPLING + ["results/paper_depth/factors_t1000"]},
+    {"name": "answer_coupling", "kind": answer_coupling, "sources": COUPLING_SOURCES},
+    {"name": "answer_lattice", "kind": answer_lattice, "sources": COUPLING},
     # The protocol block's cases in the thirds of the paper's window, as depth_t1000_windows the preset's
     {"name": "protocol_windows", "kind": windows, "sources": T1000_BEDS + PROTOCOL_FOLDERS,
      "where": {"drive.amplitude": 5.0}, "row": protocol_row,
