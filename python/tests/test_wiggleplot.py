@@ -104,14 +104,7 @@ class RunDataTest(DataDirs):
     def test_the_trajectory_names_the_models_t_rise_and_draws_no_model_rate(self):
         # Issue 80: the model's V_y drawn on the trajectory read as a prediction of the run; only
         # where rising starts is the model's to say.
-        figures = {}
-
-        def keep(fig, out_dir, name, formats):
-            figures[name] = fig
-            return []
-
-        with mock.patch.object(runplots.style, "save", keep):
-            runplots.plot_trajectory(runplots.Run(self.run_dir, quiet_report()), self.tmp, ("png",))
+        figures = self.trajectory_figures(self.run_dir)
         ax = figures["trajectory"].axes[0]
         labels = [line.get_label() for line in ax.get_lines()]
         self.assertTrue(any("cavity model: rising" in l and "T_{rise}" in l for l in labels), labels)
@@ -120,27 +113,32 @@ class RunDataTest(DataDirs):
         from matplotlib import pyplot
         pyplot.close(figures["trajectory"])
 
-    def test_a_turning_intruders_trajectory_shows_how_far_it_turned(self):
+    def trajectory_figures(self, run_dir):
+        """{name: figure} that plot_trajectory draws for run_dir, kept instead of saved (close them)."""
         figures = {}
 
         def keep(fig, out_dir, name, formats):
             figures[name] = fig
             return []
 
-        from matplotlib import pyplot
         with mock.patch.object(runplots.style, "save", keep):
-            runplots.plot_trajectory(runplots.Run(self.run_dir, quiet_report()), self.tmp, ("png",))
-            self.assertEqual(len(figures["trajectory"].axes), 1)  # locked: no turn to show
-            pyplot.close(figures["trajectory"])
-            turning = os.path.join(self.tmp, "turning")
-            synthetic.write_run(turning, with_fields=False, with_dump=False)
-            path = os.path.join(turning, "trajectory.csv")
-            with open(path) as f:
-                rows = f.read().splitlines()
-            with open(path, "w") as f:  # the columns a turning run adds: angle [rad], omega
-                turned = [f"{r},{0.01 * i:.10g},0.01" for i, r in enumerate(rows[1:])]
-                f.write("\n".join([rows[0] + ",angle,omega"] + turned) + "\n")
-            runplots.plot_trajectory(runplots.Run(turning, quiet_report()), self.tmp, ("png",))
+            runplots.plot_trajectory(runplots.Run(run_dir, quiet_report()), self.tmp, ("png",))
+        return figures
+
+    def test_a_turning_intruders_trajectory_shows_how_far_it_turned(self):
+        from matplotlib import pyplot
+        locked = self.trajectory_figures(self.run_dir)["trajectory"]
+        self.assertEqual(len(locked.axes), 1)  # locked: no turn to show
+        pyplot.close(locked)
+        turning = os.path.join(self.tmp, "turning")
+        synthetic.write_run(turning, with_fields=False, with_dump=False)
+        path = os.path.join(turning, "trajectory.csv")
+        with open(path) as f:
+            rows = f.read().splitlines()
+        with open(path, "w") as f:  # the columns a turning run adds: angle [rad], omega
+            turned = [f"{r},{0.01 * i:.10g},0.01" for i, r in enumerate(rows[1:])]
+            f.write("\n".join([rows[0] + ",angle,omega"] + turned) + "\n")
+        figures = self.trajectory_figures(turning)
         turn = figures["trajectory"].axes[1]
         self.assertEqual(turn.get_ylabel(), "turned [degrees]")
         self.assertAlmostEqual(turn.get_lines()[0].get_ydata()[-1], np.degrees(0.01 * 400), places=9)
