@@ -2,8 +2,11 @@
 small made-up cells: which way a rate or a change goes, whether a factor moved a cell, what is left
 unexplained, how a bracket stands against the paper. The statistics behind them are findings.py's
 (test_findings.py); here only the choice of words. One bed's sigma given, as there."""
+import math
 import os
+import shutil
 import sys
+import tempfile
 import unittest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
@@ -35,6 +38,30 @@ class MadeUpCase:
 def climbing(first, second):
     """A case whose rate by the paper's rule is `first` over t = 100-500 and `second` over 500-1000."""
     return MadeUpCase({100.0: 0.0, 500.0: 400 * first, 1000.0: 400 * first + 500 * second})
+
+
+class TurningExtentTest(unittest.TestCase):
+    """How far a turning body turned, from its trajectory.csv's angle column."""
+
+    def case(self, rows, header="t,x,y,vx,vy,fy,angle,omega"):
+        folder = tempfile.mkdtemp()
+        self.addCleanup(shutil.rmtree, folder)
+        with open(os.path.join(folder, "trajectory.csv"), "w") as f:
+            f.write(header + "\n" + "".join(r + "\n" for r in rows))
+        return cases.Case("made-up", {"case": "made_up"}, folder)
+
+    def test_the_largest_turn_counts_only_inside_the_papers_window(self):
+        # 0.5 rad before t = 100 is left out; -0.2 is the largest turn inside; 0.1 the last
+        turned = self.case(["0,0,90,0,0,0,0,0", "50,0,90,0,0,0,0.5,0", "100,0,90,0,0,0,0.05,0",
+                            "500,0,90,0,0,0,-0.2,0", "1000,0,90,0,0,0,0.1,0"])
+        most, end = factor_tables.turning_extent(turned)
+        self.assertAlmostEqual(most, math.degrees(0.2))
+        self.assertAlmostEqual(end, math.degrees(0.1))
+
+    def test_a_body_that_does_not_turn_has_no_angle_to_read(self):
+        locked = self.case(["0,0,90,0,0,0", "1000,0,90,0,0,0"], header="t,x,y,vx,vy,fy")
+        with self.assertRaisesRegex(ValueError, "records no angle"):
+            locked.turn()
 
 
 class CellTextTest(unittest.TestCase):
@@ -280,6 +307,14 @@ class WhatIsLeftTest(unittest.TestCase):
                          "So the protocol's factors account for none of the difference; the intruder's coupling may: "
                          "the lattice body moves it +0.1100 (10.2 se, toward the paper; 2 beds paired) in the 60 d box; "
                          "in the paper's box: not run yet. Left beside it: the rest.")
+        # the screen's other factors at the cell follow, measured or not
+        atom = (0.0059, 0.5, "within the scatter", "the atoms' mass", "the triangle at T = 5", 2)
+        self.assertIn("in the paper's box: not run yet. The screen's other factors at this cell: the atoms' mass +0.0059 "
+                      "(0.5 se, within the scatter; 2 beds paired); not run here yet: turning. Left beside it: the rest.",
+                      answer_sentences.what_is_left([self.WITHIN], False, "the rest", [(lattice, None)],
+                                                    [("the atoms' mass", atom), ("turning", None)]))
+        self.assertIn("not run yet. Not run here yet: turning. Left",
+                      answer_sentences.what_is_left([self.WITHIN], False, "the rest", [(lattice, None)], [("turning", None)]))
         reading = factor_tables.PaperBoxReading
         # finished: judged as a cell (its side by the rule, against the paper's) and as a change of one bed a side
         sig = scatter.clock_sigma("triangle")

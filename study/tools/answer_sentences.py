@@ -337,8 +337,7 @@ def unmeasured(short=False, cell=None):
     if not done:
         status = "its screen, study/sweeps/paper_depth_coupling_t1000.toml, being run, no results committed yet"
     elif cell:
-        status = cell_coupling_status([(label.split(" (")[0], coupling_change(*cell, changes))
-                                       for label, changes in COUPLING_ROWS])
+        status = cell_coupling_status(coupling_at(cell))
     else:
         status = coupling_status([(change, paper_box_coupling(shape, period, changes) if change else None,
                                    coupling_bracket_short(shape, coupling_periods(shape, changes)))
@@ -350,11 +349,23 @@ def unmeasured(short=False, cell=None):
             f"built on a lattice, its rotation; {status}), " + UNMEASURED)
 
 
+def coupling_at(cell):
+    """[(the factor's short name, coupling_change's change at cell, (shape, period), or None)] of every
+    coupling row."""
+    return [(label.split(" (")[0], coupling_change(*cell, changes)) for label, changes in COUPLING_ROWS]
+
+
+def measured_words(measured):
+    """([each change of [(the factor's name, coupling_change's change or None)] and which way, in words],
+    [the names not run there yet])."""
+    done = [f"{name} {c[0]:+.4f} ({abs(c[1]):.1f} se, {c[2]}; {beds_count([c[5]])} paired)" for name, c in measured if c]
+    return done, [name for name, c in measured if not c]
+
+
 def cell_coupling_status(measured):
     """What the coupling screen measured at one cell, from [(the factor's name, coupling_change's change
     there or None)]: each change and which way, then the factors not run there yet."""
-    done = [f"{name} {c[0]:+.4f} ({abs(c[1]):.1f} se, {c[2]}; {beds_count([c[5]])} paired)" for name, c in measured if c]
-    left = [name for name, c in measured if not c]
+    done, left = measured_words(measured)
     return ("its screen being run, " + (f"at this cell {'; '.join(done)}" if done else "not at this cell yet")
             + (f"; not run here yet: {', '.join(left)}" if done and left else "")
             + "; study/VALIDATION.md, \"The intruder's coupling\"")
@@ -415,8 +426,9 @@ def factors_text(shape, period, paper_sign, sig, box_values):
     if box_values:
         on_side = findings.on_paper_side(box_values, sig, paper_sign)
         coupling = coupling_toward(shape, period)
+        others = [(name, c) for name, c in coupling_at((shape, period)) if not (c and c[2] == "toward the paper")]
         text += what_is_left(changes, on_side, "" if on_side else UNMEASURED if coupling else
-                             unmeasured(cell=(shape, period)), coupling)
+                             unmeasured(cell=(shape, period)), coupling, others)
     return text
 
 
@@ -486,19 +498,24 @@ def what_moved(changes):
     return ""
 
 
-def what_is_left(changes, on_side, unmeasured_words, coupling=()):
+def what_is_left(changes, on_side, unmeasured_words, coupling=(), others=()):
     """Whether a cell's changes account for the paper's box differing from the paper there: nothing to
     account for when the box's cell is on the paper's side (on_side); else none of the difference
     (no change moves it toward the paper) or not all, and what is left (unmeasured_words). Where a
     coupling factor moves the cell toward the paper (coupling: coupling_toward's), it is named as what
-    may account for the difference, with where it has been run."""
+    may account for the difference, with where it has been run, and the screen's other factors at the
+    cell after it (others: coupling_at's less those), measured or not run yet."""
     if on_side:
         return "In the paper's box by its protocol the cell is on the paper's side."
     toward = any(c[2] == "toward the paper" for _, c in changes)
     if coupling:
+        done, left = measured_words(others)
+        beside = ((f" The screen's other factors at this cell: {'; '.join(done)}" if done else "")
+                  + (f"{'; n' if done else ' N'}ot run here yet: {', '.join(left)}" if left else "")
+                  + ("." if others else ""))
         return (f"So the protocol's factors account for {'none' if not toward else 'not all'} of the difference; "
                 "the intruder's coupling may: " + "; ".join(coupling_words(*c) for c in coupling)
-                + f". Left beside it: {unmeasured_words}.")
+                + f".{beside} Left beside it: {unmeasured_words}.")
     return ("So " + ("none" if not toward else "not all") + " of the difference is accounted for: what is left "
             f"is {'all of it' if not toward else 'the rest'}: {unmeasured_words}.")
 

@@ -78,6 +78,16 @@ class Case:
             self._trajectory = [r[0] for r in rows], [r[1] for r in rows]
         return self._trajectory
 
+    def turn(self):
+        """(t, angle in radians, counter-clockwise) of trajectory.csv: the columns a turning intruder
+        (intruder.rotation = "free") records; ValueError for a case without them."""
+        with open(os.path.join(self.dir, "trajectory.csv"), newline="") as f:
+            rows = csv.DictReader(f)
+            if "angle" not in (rows.fieldnames or []):
+                raise ValueError(f"{self.source}: case {self.row['case']} records no angle (its intruder does not turn)")
+            pairs = [(float(r["t"]), float(r["angle"])) for r in rows]
+        return [t for t, _ in pairs], [a for _, a in pairs]
+
     def phase_rates(self):
         """(phase centres as 10 phi / pi, mean v_y) of phase_rates.csv, in bin order."""
         with open(os.path.join(self.dir, "phase_rates.csv"), newline="") as f:
@@ -152,6 +162,7 @@ def value_of(case, value):
     return value(case) if callable(value) else float(case.get(value))
 
 
+WINDOW_FROM = 100.0   # the paper's V_y window: from t = 100 to the run's end
 SO_FAR_FROM = 200.0   # an unfinished case is shown once its window t = 100-t_now spans this much
 
 
@@ -159,7 +170,7 @@ def so_far(case):
     """(t of an unfinished case's last committed sample, its rate so far by the paper's rule over
     t = 100 to then, or None while that window spans less than SO_FAR_FROM)."""
     t_now = case.trajectory()[0][-1]
-    return t_now, (chord(100.0, t_now)(case) if t_now - 100.0 >= SO_FAR_FROM else None)
+    return t_now, (chord(WINDOW_FROM, t_now)(case) if t_now - WINDOW_FROM >= SO_FAR_FROM else None)
 
 
 # ---- cells

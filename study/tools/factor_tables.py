@@ -9,8 +9,8 @@ import math
 from dataclasses import dataclass
 
 import findings
-from cases import (COUPLING, PAPER_BOX, PAPER_RANGE, SHAPES, SO_FAR_FROM, T1000_BEDS, T1000_WINDOWS, beds, cell_text,
-                   chord, committed, head_lines, key_of, paper_observed, row_line, select, so_far, unfinished)
+from cases import (COUPLING, PAPER_BOX, PAPER_RANGE, SHAPES, SO_FAR_FROM, T1000_BEDS, T1000_WINDOWS, WINDOW_FROM, beds,
+                   cell_text, chord, committed, head_lines, key_of, paper_observed, row_line, select, so_far, unfinished)
 from findings import RESOLVED
 from scatter import PAPER_SIDE, SHAPE_NAMES, beds_z_text, clock_sigma, scatter_words
 from table1_blocks import against_paper, bracket_text
@@ -74,7 +74,7 @@ def protocol_so_far_cell(row, shape, period):
         t_now, rate = so_far(c)
         if rate is None:
             continue
-        window = chord(100.0, t_now)
+        window = chord(WINDOW_FROM, t_now)
         beside = []
         for i, name in compared:
             keys = row_where(i, shape, period)
@@ -254,6 +254,13 @@ def coupling_beds(shape, period, changes):
     return protocol_beds(COUPLING_SOURCES, dict(coupling_where(shape, changes), **{"drive.period": period}))
 
 
+def poured_around(shape, period, changes):
+    """The beds (seeds) of a coupling row's cell poured around the changed body itself, rather than the factor
+    screen's beds with that body swapped in: no baseline was run on them, so they pair with none."""
+    where = dict(coupling_where(shape, changes), **{"drive.period": period})
+    return {c.get("box.seed") for c in select(committed(COUPLING), where) if not c.get("bed.file")}
+
+
 def coupling_periods(shape, changes):
     """[(T, [V_y per bed])] of a coupling row's cases of `shape` at every period the screen has run it, in
     ascending T (on the factor screen's beds, or on a bed poured around the changed body)."""
@@ -358,7 +365,7 @@ def paper_box_coupling(shape, period, changes):
     baseline = [b for b in select(committed(PAPER_BOX), where) if b.get("box.seed") == case.get("box.seed")]
     if rate is None or not baseline:
         return PaperBoxReading(shape, period, None, None, t_now, duration)
-    return PaperBoxReading(shape, period, rate, chord(100.0, t_now)(baseline[0]), t_now, duration)
+    return PaperBoxReading(shape, period, rate, chord(WINDOW_FROM, t_now)(baseline[0]), t_now, duration)
 
 
 def paper_box_change(reading):
@@ -368,6 +375,33 @@ def paper_box_change(reading):
     comparison = findings.Comparison(reading.shape, [reading.vy], [reading.base], paper_sign)
     diff, z, _ = findings.judged(comparison, clock_sigma(reading.shape))
     return diff, z, toward_words(z)
+
+
+TURNING = {"intruder.rotation": "free"}
+
+
+def turning_extent(case):
+    """(the largest |angle| over the paper's window, the angle at the end), in degrees from upright, of a
+    turning intruder's case."""
+    ts, angles = case.turn()
+    window = [a for t, a in zip(ts, angles) if t >= WINDOW_FROM - 1e-9]
+    return math.degrees(max(abs(a) for a in window)), math.degrees(angles[-1])
+
+
+def turning_words():
+    """How far the screen's turning bodies turned, cell by cell and bed by bed; "" while none has finished."""
+    cells = []
+    for shape, period in COUPLING_CELLS:
+        cases = beds(select(committed(COUPLING), dict(coupling_where(shape, TURNING), **{"drive.period": period})),
+                     f"turning {shape} T = {period:g}")
+        each = ", ".join(f"{most:.1f} (bed {c.get('box.seed'):g}, {end:+.1f} at the end)"
+                         for c in cases for most, end in [turning_extent(c)])
+        if each:
+            cells.append(f"the {shape} at T = {period:g} {each}")
+    if not cells:
+        return ""
+    return ("How far the turning bodies turned: the largest angle from upright over t = 100-1000, in degrees "
+            "(trajectory.csv's angle, counter-clockwise positive): " + "; ".join(cells))
 
 
 def answer_coupling(spec):
@@ -383,7 +417,9 @@ def answer_coupling(spec):
             if not values:
                 cells.append("not run")
                 continue
-            each = ", ".join(f"{v:+.4f} (bed {seed:g})" for seed, v in sorted(values.items()))
+            own = poured_around(shape, period, changes) if changes else set()
+            each = ", ".join(f"{v:+.4f} (bed {seed:g}{', poured around it' if seed in own else ''})"
+                             for seed, v in sorted(values.items()))
             change = coupling_change(shape, period, changes) if changes else None
             if not change:
                 cells.append(each)
@@ -399,7 +435,8 @@ def answer_coupling(spec):
               "not rising at T = 3-4. "
               "A change is the row's mean minus the baseline's over the beds both have, in standard errors se = sigma "
               "sqrt(1/n + 1/n), sigma " + scatter_words(shapes) + ". " + paired_scatter_words(shapes) + ". A change "
-              f"moves the cell toward the paper's side when >= {RESOLVED:g} se that way)"]
+              f"moves the cell toward the paper's side when >= {RESOLVED:g} se that way"
+              + (f". {turned}" if (turned := turning_words()) else "") + ")"]
     return lines, committed(COUPLING_SOURCES)
 
 
