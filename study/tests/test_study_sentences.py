@@ -351,6 +351,10 @@ class WhatIsLeftTest(unittest.TestCase):
                          "its screen being run, 2 changes measured so far, on 1-2 beds each: turning moves the "
                          "triangle at T = 5 toward the paper (+0.020, 3.0 se, in the 60 d box; not run in the paper's "
                          "box yet); study/VALIDATION.md, \"The intruder's coupling\"")
+        # a move away from the paper is not one the paper's box is run for: nothing said of it there
+        away = (0.013, 5.3, "away from the paper", "turning", "the square at T = 3", 2)
+        self.assertIn("each: turning moves the square at T = 3 away from the paper (+0.013, 5.3 se, in the 60 d box); "
+                      "study/VALIDATION.md", answer_sentences.coupling_status([(away, None, "")]))
         # a factor's name carries its own article: it is not doubled
         lattice = (0.11, 7.1, "toward the paper", "the lattice body", "the triangle at T = 5", 1)
         self.assertIn("each: the lattice body moves the triangle at T = 5 toward the paper (+0.110, 7.1 se",

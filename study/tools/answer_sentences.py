@@ -375,14 +375,16 @@ def coupling_status(measured):
     """How far the coupling screen has gone, from its cells' (change, paper-box reading, bracket)
     (coupling_change's, None for a cell not measured yet; paper_box_coupling's; coupling_bracket_short's):
     how many changes, on how many beds, and which move a cell by RESOLVED standard errors, with where the
-    factor by itself starts the shape rising and what it gives in the paper's box."""
+    factor by itself starts the shape rising and, for a move toward the paper (the ones the paper's box is
+    run for: issue 79, item 5), what it gives in the paper's box."""
     changes = [(c, box, bracket) for c, box, bracket in measured if c]
     moved = [(c, box, bracket) for c, box, bracket in changes if c[2] != "within the scatter"]
     return (f"its screen being run, {len(changes)} change{'s' if len(changes) > 1 else ''} measured so far, on "
             f"{beds_count(c[5] for c, _, _ in changes)} each: "
             + (f"none moves a cell by {RESOLVED:g} standard errors so far" if not moved else
-               "; ".join(f"{c[3]} moves {c[4]} {c[2]} ({c[0]:+.3f}, {abs(c[1]):.1f} se, in the 60 d box{bracket}; "
-                         f"{paper_box_short(box)})" for c, box, bracket in moved))
+               "; ".join(f"{c[3]} moves {c[4]} {c[2]} ({c[0]:+.3f}, {abs(c[1]):.1f} se, in the 60 d box{bracket}"
+                         + (f"; {paper_box_short(box)}" if c[2] == "toward the paper" else "") + ")"
+                         for c, box, bracket in moved))
             + "; study/VALIDATION.md, \"The intruder's coupling\"")
 
 

@@ -378,11 +378,13 @@ def paper_box_change(reading):
 
 
 TURNING = {"intruder.rotation": "free"}
+# After how many degrees of turning each outline (docs/SHAPES.md) is the same again.
+REPEATS_EVERY = {"square": 90, "rect_narrow": 180, "rect_wide": 180, "triangle": 120}
 
 
 def turning_extent(case):
-    """(the largest |angle| over the paper's window, the angle at the end), in degrees from upright, of a
-    turning intruder's case."""
+    """(the largest |angle| over the paper's window, the angle at the end), in degrees turned since t = 0,
+    of a turning intruder's case."""
     ts, angles = case.turn()
     window = [a for t, a in zip(ts, angles) if t >= WINDOW_FROM - 1e-9]
     return math.degrees(max(abs(a) for a in window)), math.degrees(angles[-1])
@@ -390,7 +392,7 @@ def turning_extent(case):
 
 def turning_words():
     """How far the screen's turning bodies turned, cell by cell and bed by bed; "" while none has finished."""
-    cells = []
+    cells, shapes = [], []
     for shape, period in COUPLING_CELLS:
         cases = beds(select(committed(COUPLING), dict(coupling_where(shape, TURNING), **{"drive.period": period})),
                      f"turning {shape} T = {period:g}")
@@ -398,10 +400,14 @@ def turning_words():
                          for c in cases for most, end in [turning_extent(c)])
         if each:
             cells.append(f"the {shape} at T = {period:g} {each}")
+            shapes.append(shape)
     if not cells:
         return ""
-    return ("How far the turning bodies turned: the largest angle from upright over t = 100-1000, in degrees "
-            "(trajectory.csv's angle, counter-clockwise positive): " + "; ".join(cells))
+    repeats = ", ".join(f"the {shape}'s every {REPEATS_EVERY[shape]}" for shape in dict.fromkeys(shapes)
+                        if shape in REPEATS_EVERY)
+    return ("How far the turning bodies turned: the largest angle over t = 100-1000, in degrees turned since t = 0 "
+            "(trajectory.csv's angle, counter-clockwise positive" + (f"; the outline repeats itself, {repeats}" if repeats
+                                                                    else "") + "): " + "; ".join(cells))
 
 
 def answer_coupling(spec):
