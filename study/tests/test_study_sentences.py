@@ -388,6 +388,23 @@ class WhatIsLeftTest(unittest.TestCase):
         finally:
             factor_tables.straying = real
 
+    def test_a_coupling_change_of_a_straying_shape_says_its_standard_errors_by_that_scatter(self):
+        real_straying, real_paired = factor_tables.straying, factor_tables.coupling_paired
+        try:
+            # paired changes' standard deviation 0.01: one run's 0.01 / sqrt 2; two beds each change +0.01
+            factor_tables.straying = lambda shapes: [("square", 0.01, 3, 0.0034)] if "square" in shapes else []
+            factor_tables.coupling_paired = lambda shape, period, changes: ([0.03, 0.03], [0.02, 0.02])
+            z = round(0.01 / (0.01 / 2 ** 0.5 * (1 / 2 + 1 / 2) ** 0.5), 1)
+            self.assertEqual(factor_tables.straying_words("square", 3.0, {"intruder.rotation": "free"}),
+                             f", {z:.1f} se by the scatter the square's paired runs show")
+            # a shape whose paired runs do not stray: nothing to add
+            self.assertEqual(factor_tables.straying_words("triangle", 5.0, {"intruder.rotation": "free"}), "")
+            # nothing measured yet: nothing to add
+            factor_tables.coupling_paired = lambda shape, period, changes: ([], [])
+            self.assertEqual(factor_tables.straying_words("square", 3.0, {"intruder.rotation": "free"}), "")
+        finally:
+            factor_tables.straying, factor_tables.coupling_paired = real_straying, real_paired
+
     def test_where_a_coupling_factor_by_itself_starts_the_shape_rising(self):
         sig = scatter.clock_sigma("triangle")
         # one period tells no bracket

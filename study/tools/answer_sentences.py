@@ -14,7 +14,8 @@ from cases import (CLOCK_A3, CLOCK_A5, COUPLING, DEPTH_A5, PAPER_RANGE, SHAPES, 
                    mean, paper_observed, select, so_far)
 from factor_tables import (BOX_ALONE, BOX_ROW, COUPLING_CELLS, COUPLING_ROWS, PROTOCOL_CELLS, PROTOCOL_FOLDERS,
                            PROTOCOL_ROWS, box_alone_change, change_text, coupling_change, coupling_periods,
-                           paper_box_change, paper_box_coupling, protocol_beds, protocol_change, row_where, straying)
+                           paper_box_change, paper_box_coupling, protocol_beds, protocol_change, row_where, straying,
+                           straying_words)
 from findings import RESOLVED
 from findings_table import FINDING_SOURCES, against_findings, paper_findings
 from scatter import (PAPER_SIDE, SHAPE_NAMES, beds_z_text, clock_scatter, clock_sigma, depth_sigma,
@@ -340,7 +341,8 @@ def unmeasured(short=False, cell=None):
         status = cell_coupling_status(coupling_at(cell))
     else:
         status = coupling_status([(change, paper_box_coupling(shape, period, changes) if change else None,
-                                   coupling_bracket_short(shape, coupling_periods(shape, changes)))
+                                   coupling_bracket_short(shape, coupling_periods(shape, changes))
+                                   + straying_words(shape, period, changes))
                                   for _, changes in COUPLING_ROWS for shape, period in COUPLING_CELLS
                                   for change in [coupling_change(shape, period, changes)]])
     if short:

@@ -135,6 +135,20 @@ def own_scatter_caveat(comparison, z, sig):
             f"against sigma {sig:.4f}")
 
 
+def straying_words(shape, period, changes):
+    """', N se by the scatter the shape's paired runs show' of a coupling row's change in a cell, where the
+    shape's paired runs stray more than its sigma allows (straying); "" where they do not, or before the
+    change is measured. The change's standard errors by one run's standard deviation as straying_caveat
+    takes it."""
+    found = straying([shape])
+    values, base = coupling_paired(shape, period, changes)
+    if not found or not values:
+        return ""
+    run_sd = found[0][1] / math.sqrt(2.0)
+    comparison = findings.Comparison(shape, values, base, findings.paper_side(period, PAPER_RANGE[shape]))
+    return f", {abs(findings.judged(comparison, run_sd)[1]):.1f} se by the scatter the {shape}'s paired runs show"
+
+
 def straying_caveat(comparison, z, sig):
     """The words that say a change resolved on sig is not resolved by the larger scatter its shape's paired
     runs show (straying: one run's standard deviation, the paired changes' over sqrt 2), else "". As with
