@@ -135,30 +135,37 @@ def own_scatter_caveat(comparison, z, sig):
             f"against sigma {sig:.4f}")
 
 
+def paired_runs_z(comparison):
+    """(the comparison's standard errors by one run's standard deviation as its shape's paired runs show it
+    (the paired changes' over sqrt 2), that deviation, its degrees of freedom) where those runs stray more
+    than the shape's sigma allows (straying); None where they do not."""
+    found = straying([comparison.label])
+    if not found:
+        return None
+    _, paired_sd, dof, _ = found[0]
+    run_sd = paired_sd / math.sqrt(2.0)
+    return findings.judged(comparison, run_sd)[1], run_sd, dof
+
+
 def straying_words(shape, period, changes):
     """', N se by the scatter the shape's paired runs show' of a coupling row's change in a cell, where the
-    shape's paired runs stray more than its sigma allows (straying); "" where they do not, or before the
-    change is measured. The change's standard errors by one run's standard deviation as straying_caveat
-    takes it."""
-    found = straying([shape])
+    shape's paired runs stray more than its sigma allows; "" where they do not, or before the change is
+    measured."""
     values, base = coupling_paired(shape, period, changes)
-    if not found or not values:
+    if not values:
         return ""
-    run_sd = found[0][1] / math.sqrt(2.0)
-    comparison = findings.Comparison(shape, values, base, findings.paper_side(period, PAPER_RANGE[shape]))
-    return f", {abs(findings.judged(comparison, run_sd)[1]):.1f} se by the scatter the {shape}'s paired runs show"
+    by_runs = paired_runs_z(findings.Comparison(shape, values, base, findings.paper_side(period, PAPER_RANGE[shape])))
+    return f", {abs(by_runs[0]):.1f} se by the scatter the {shape}'s paired runs show" if by_runs else ""
 
 
 def straying_caveat(comparison, z, sig):
     """The words that say a change resolved on sig is not resolved by the larger scatter its shape's paired
-    runs show (straying: one run's standard deviation, the paired changes' over sqrt 2), else "". As with
-    its own beds' scatter, a change is never shown as better known than its shape's runs show."""
-    found = straying([comparison.label])
-    if findings.resolved_side(z) == 0 or not found:
+    runs show (paired_runs_z), else "". As with its own beds' scatter, a change is never shown as better
+    known than its shape's runs show."""
+    by_runs = paired_runs_z(comparison)
+    if findings.resolved_side(z) == 0 or by_runs is None:
         return ""
-    _, paired_sd, dof, _ = found[0]
-    run_sd = paired_sd / math.sqrt(2.0)
-    z_run = findings.judged(comparison, run_sd)[1]
+    z_run, run_sd, dof = by_runs
     if findings.resolved_side(z_run) != 0:
         return ""
     return (f"{abs(z_run):.1f} se by the scatter the {comparison.label}'s paired runs show, one run's standard "
