@@ -514,9 +514,9 @@ def what_is_left(changes, on_side, unmeasured_words, coupling=(), others=()):
     toward = any(c[2] == "toward the paper" for _, c in changes)
     if coupling:
         done, left = measured_words(others)
-        beside = ((f" The screen's other factors at this cell: {'; '.join(done)}" if done else "")
-                  + (f"{'; n' if done else ' N'}ot run here yet: {', '.join(left)}" if left else "")
-                  + ("." if others else ""))
+        parts = ([f"The screen's other factors at this cell: {'; '.join(done)}"] if done else []) + \
+                ([f"{'not' if done else 'Not'} run here yet: {', '.join(left)}"] if left else [])
+        beside = f" {'; '.join(parts)}." if parts else ""
         return (f"So the protocol's factors account for {'none' if not toward else 'not all'} of the difference; "
                 "the intruder's coupling may: " + "; ".join(coupling_words(*c) for c in coupling)
                 + f".{beside} Left beside it: {unmeasured_words}.")
