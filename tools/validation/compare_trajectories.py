@@ -87,7 +87,7 @@ def draw(curves, title):
     ax.axhline(0.0, color="0.6", lw=0.5)
     if turning:
         ax_angle.axhline(0.0, color="0.6", lw=0.5)
-        ax_angle.set_ylabel("angle [degrees]")
+        ax_angle.set_ylabel("turned [degrees]")
     (ax_angle if turning else ax).set_xlabel("t [sqrt(d/g)]")
     ax.set_ylabel("y - y(0) [d]")
     ax.set_title(title)
