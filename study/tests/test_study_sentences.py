@@ -351,6 +351,10 @@ class WhatIsLeftTest(unittest.TestCase):
                          "its screen being run, 2 changes measured so far, on 1-2 beds each: turning moves the "
                          "triangle at T = 5 toward the paper (+0.020, 3.0 se, in the 60 d box; not run in the paper's "
                          "box yet); study/VALIDATION.md, \"The intruder's coupling\"")
+        # the screen run: nothing is "so far"
+        self.assertEqual(answer_sentences.coupling_status([(within, None, "")], True),
+                         "its screen run, 1 change measured, on 2 beds each: none moves a cell by 2 standard errors; "
+                         "study/VALIDATION.md, \"The intruder's coupling\"")
         # a move away from the paper is not one the paper's box is run for: nothing said of it there
         away = (0.013, 5.3, "away from the paper", "turning", "the square at T = 3", 2)
         self.assertIn("each: turning moves the square at T = 3 away from the paper (+0.013, 5.3 se, in the 60 d box); "
@@ -443,6 +447,20 @@ class WhatIsLeftTest(unittest.TestCase):
         self.assertIn("| 4-5 | T = 4 ", rows[1])
         self.assertIn("| 4-5 | **yes**", rows[1])   # not rising at 4, rising at 5: the paper's bracket
 
+    def test_the_screen_is_run_once_every_row_has_both_disputed_cells(self):
+        real = factor_tables.coupling_change
+        try:
+            # every row measured at both disputed cells, whatever else is not: run
+            factor_tables.coupling_change = lambda shape, period, changes: (
+                (0.0, 0.0, "within the scatter") if (shape, period) in factor_tables.DISPUTED_CELLS else None)
+            self.assertTrue(factor_tables.coupling_screen_run())
+            # the velocity reading not at the triangle's cell yet: still being run
+            factor_tables.coupling_change = lambda shape, period, changes: (
+                None if changes == {"drive.form": "velocity"} and shape == "triangle" else (0.0, 0.0, "within the scatter"))
+            self.assertFalse(factor_tables.coupling_screen_run())
+        finally:
+            factor_tables.coupling_change = real
+
     def test_the_coupling_screen_at_one_cell(self):
         atom = (-0.0042, -1.8, "within the scatter", "the atoms' mass", "the square at T = 3", 2)
         self.assertEqual(answer_sentences.cell_coupling_status([("the atoms' mass", atom), ("turning", None)]),
@@ -450,6 +468,9 @@ class WhatIsLeftTest(unittest.TestCase):
                          "2 beds paired); not run here yet: turning; study/VALIDATION.md, \"The intruder's coupling\"")
         self.assertEqual(answer_sentences.cell_coupling_status([("turning", None)]),
                          "its screen being run, not at this cell yet; study/VALIDATION.md, \"The intruder's coupling\"")
+        # once every row has run at both disputed cells, the screen is said to be run
+        self.assertTrue(answer_sentences.cell_coupling_status([("the atoms' mass", atom)], True).startswith(
+            "its screen run, at this cell the atoms' mass -0.0042"))
 
     def test_the_paired_changes_own_scatter_is_pooled_by_shape(self):
         # made-up screen: (V_y with the change, the baseline's) per bed, by cell and factor

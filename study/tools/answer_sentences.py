@@ -14,8 +14,8 @@ from cases import (CLOCK_A3, CLOCK_A5, COUPLING, DEPTH_A5, PAPER_RANGE, SHAPES, 
                    mean, paper_observed, select, so_far)
 from factor_tables import (BOX_ALONE, BOX_ROW, COUPLING_CELLS, COUPLING_ROWS, PROTOCOL_CELLS, PROTOCOL_FOLDERS,
                            PROTOCOL_ROWS, box_alone_change, change_text, coupling_change, coupling_periods,
-                           paper_box_change, paper_box_coupling, protocol_beds, protocol_change, row_where, straying,
-                           straying_words)
+                           coupling_screen_run, paper_box_change, paper_box_coupling, protocol_beds, protocol_change,
+                           row_where, straying, straying_words)
 from findings import RESOLVED
 from findings_table import FINDING_SOURCES, against_findings, paper_findings
 from scatter import (PAPER_SIDE, SHAPE_NAMES, beds_z_text, clock_scatter, clock_sigma, depth_sigma,
@@ -338,13 +338,13 @@ def unmeasured(short=False, cell=None):
     if not done:
         status = "its screen, study/sweeps/paper_depth_coupling_t1000.toml, being run, no results committed yet"
     elif cell:
-        status = cell_coupling_status(coupling_at(cell))
+        status = cell_coupling_status(coupling_at(cell), coupling_screen_run())
     else:
         status = coupling_status([(change, paper_box_coupling(shape, period, changes) if change else None,
                                    coupling_bracket_short(shape, coupling_periods(shape, changes))
                                    + straying_words(shape, period, changes))
                                   for _, changes in COUPLING_ROWS for shape, period in COUPLING_CELLS
-                                  for change in [coupling_change(shape, period, changes)]])
+                                  for change in [coupling_change(shape, period, changes)]], coupling_screen_run())
     if short:
         return f"how the paper's glued LAMMPS body met its grains ({status}), " + UNMEASURED_SHORT
     return ("how the paper's glued LAMMPS body met its grains (its atoms' masses in the contacts' damping, a body "
@@ -364,26 +364,34 @@ def measured_words(measured):
     return done, [name for name, c in measured if not c]
 
 
-def cell_coupling_status(measured):
+def screen_words(run):
+    """The coupling screen's state in a few words: run (coupling_screen_run's) or still being run."""
+    return "its screen run" if run else "its screen being run"
+
+
+def cell_coupling_status(measured, run=False):
     """What the coupling screen measured at one cell, from [(the factor's name, coupling_change's change
-    there or None)]: each change and which way, then the factors not run there yet."""
+    there or None)]: each change and which way, then the factors not run there yet (run:
+    coupling_screen_run's)."""
     done, left = measured_words(measured)
-    return ("its screen being run, " + (f"at this cell {'; '.join(done)}" if done else "not at this cell yet")
+    return (f"{screen_words(run)}, " + (f"at this cell {'; '.join(done)}" if done else "not at this cell yet")
             + (f"; not run here yet: {', '.join(left)}" if done and left else "")
             + "; study/VALIDATION.md, \"The intruder's coupling\"")
 
 
-def coupling_status(measured):
+def coupling_status(measured, run=False):
     """How far the coupling screen has gone, from its cells' (change, paper-box reading, bracket)
     (coupling_change's, None for a cell not measured yet; paper_box_coupling's; coupling_bracket_short's):
     how many changes, on how many beds, and which move a cell by RESOLVED standard errors, with where the
     factor by itself starts the shape rising and, for a move toward the paper (the ones the paper's box is
-    run for: issue 79, item 5), what it gives in the paper's box."""
+    run for: issue 79, item 5), what it gives in the paper's box (run: coupling_screen_run's; "so far" while
+    it is not)."""
     changes = [(c, box, bracket) for c, box, bracket in measured if c]
     moved = [(c, box, bracket) for c, box, bracket in changes if c[2] != "within the scatter"]
-    return (f"its screen being run, {len(changes)} change{'s' if len(changes) > 1 else ''} measured so far, on "
+    so_far = "" if run else " so far"
+    return (f"{screen_words(run)}, {len(changes)} change{'s' if len(changes) > 1 else ''} measured{so_far}, on "
             f"{beds_count(c[5] for c, _, _ in changes)} each: "
-            + (f"none moves a cell by {RESOLVED:g} standard errors so far" if not moved else
+            + (f"none moves a cell by {RESOLVED:g} standard errors{so_far}" if not moved else
                "; ".join(f"{c[3]} moves {c[4]} {c[2]} ({c[0]:+.3f}, {abs(c[1]):.1f} se, in the 60 d box{bracket}"
                          + (f"; {paper_box_short(box)}" if c[2] == "toward the paper" else "") + ")"
                          for c, box, bracket in moved))
