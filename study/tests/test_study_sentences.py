@@ -58,6 +58,26 @@ class TurningExtentTest(unittest.TestCase):
         self.assertAlmostEqual(most, math.degrees(0.2))
         self.assertAlmostEqual(end, math.degrees(0.1))
 
+    def test_the_rise_splits_by_how_the_body_stood(self):
+        # a triangle: apex up (0 deg) from t = 100 to 300, rising 2 d; then turned 60 deg (apex down) from 300
+        # to 500, rising 40 d; then 125 deg (5 past a whole repeat: as started) to 1000, sinking 5 d;
+        # before t = 100 (left out) it stood apex down
+        rad = math.radians
+        turned = self.case([f"0,0,90,0,0,0,{rad(60)},0", f"100,0,90,0,0,0,0,0", f"300,0,92,0,0,0,{rad(60)},0",
+                            f"500,0,132,0,0,0,{rad(125)},0", f"1000,0,127,0,0,0,{rad(125)},0"])
+        (half, rate_half), (started, rate_started) = factor_tables.orientation_rates(turned, "triangle")
+        self.assertEqual((half, started), (200.0, 700.0))
+        self.assertAlmostEqual(rate_half, 40.0 / 200.0)
+        self.assertAlmostEqual(rate_started, -3.0 / 700.0)
+        self.assertEqual(factor_tables.orientation_words(turned, "triangle", 5.0),
+                         "apex down for 200 of the window's 900, at +0.200; as started at -0.004")
+        # 200 is under 10 periods of T = 25: no rate for so short a time
+        self.assertEqual(factor_tables.orientation_words(turned, "triangle", 25.0),
+                         "apex down for 200 of the window's 900; as started at -0.004")
+        # a square a quarter turn round (90 deg) stands as it started; 45 deg is on a corner
+        self.assertEqual(factor_tables.orientation_rates(self.case(["100,0,90,0,0,0,%r,0" % rad(90),
+                                                                   "200,0,91,0,0,0,0,0"]), "square")[0], (0.0, None))
+
     def test_a_body_that_does_not_turn_has_no_angle_to_read(self):
         locked = self.case(["0,0,90,0,0,0", "1000,0,90,0,0,0"], header="t,x,y,vx,vy,fy")
         with self.assertRaisesRegex(ValueError, "records no angle"):
@@ -406,6 +426,22 @@ class WhatIsLeftTest(unittest.TestCase):
             # nothing measured yet: nothing to add
             factor_tables.coupling_paired = lambda shape, period, changes: ([], [])
             self.assertEqual(factor_tables.straying_words("square", 3.0, {"intruder.rotation": "free"}), "")
+        finally:
+            factor_tables.straying, factor_tables.coupling_paired = real_straying, real_paired
+
+    def test_a_coupling_change_is_not_resolved_beyond_its_shapes_paired_runs(self):
+        real_straying, real_paired = factor_tables.straying, factor_tables.coupling_paired
+        sig = scatter.clock_sigma("triangle")
+        try:
+            # two beds, each side paired: a change of 5 sigma, resolved by sigma (5 se)
+            factor_tables.coupling_paired = lambda shape, period, changes: ([5 * sig, 5 * sig], [0.0, 0.0])
+            factor_tables.straying = lambda shapes: []
+            self.assertEqual(factor_tables.coupling_change("triangle", 5.0, {"intruder.rotation": "free"})[2],
+                             "toward the paper")
+            # the triangle's paired runs stray: one run's sd 4 sigma, so the change is 1.25 se by them
+            factor_tables.straying = lambda shapes: [("triangle", 4 * sig * 2 ** 0.5, 3, sig * 2 ** 0.5)]
+            self.assertEqual(factor_tables.coupling_change("triangle", 5.0, {"intruder.rotation": "free"})[2],
+                             "within the scatter")
         finally:
             factor_tables.straying, factor_tables.coupling_paired = real_straying, real_paired
 

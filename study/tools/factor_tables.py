@@ -306,9 +306,11 @@ def coupling_change(shape, period, changes):
         return None
     paper_sign = findings.paper_side(period, PAPER_RANGE[shape])
     comparison = findings.Comparison(shape, values, base, paper_sign)
-    diff, z, _ = findings.judged(comparison, clock_sigma(shape))
-    # no own-scatter caveat here, as before the split: the sides are paired bed by bed (answer_coupling's note)
-    toward = toward_words(z)
+    sig = clock_sigma(shape)
+    diff, z, _ = findings.judged(comparison, sig)
+    # paired bed by bed, the sides' own beds' scatter is no yardstick (answer_coupling's note); the scatter the
+    # shape's paired changes show is, as for the protocol block's changes
+    toward = toward_words(z, straying_caveat(comparison, z, sig))
     name = next(label.split(" (")[0] for label, c in COUPLING_ROWS if c == changes)
     return diff, z, toward, name, f"the {shape} at T = {period:g}", len(values)
 
@@ -419,13 +421,54 @@ def turning_extent(case):
     return math.degrees(max(abs(a) for a in window)), math.degrees(angles[-1])
 
 
+# How each outline stands half a repeat from its start (docs/SHAPES.md's orientations): the other way it can
+# meet the grains.
+HALF_TURNED = {"square": "on a corner", "rect_narrow": "lying on its long side", "rect_wide": "standing on its short side",
+               "triangle": "apex down"}
+
+
+def orientation_rates(case, shape):
+    """[(time, rate of rise)] over the paper's window of a turning intruder's case, split by how it stood:
+    half-turned (within a quarter repeat of half a repeat from its start: HALF_TURNED), then as it started
+    (within a quarter repeat of its start); rate None for no time. Each sample interval counts where it began."""
+    ts, angles = case.turn()
+    ys = case.trajectory()[1]
+    repeat = REPEATS_EVERY[shape]
+    split = [[0.0, 0.0], [0.0, 0.0]]
+    for i in range(len(ts) - 1):
+        if ts[i] < WINDOW_FROM - 1e-9:
+            continue
+        half_turned = repeat / 4 < math.degrees(angles[i]) % repeat < 3 * repeat / 4
+        part = split[0 if half_turned else 1]
+        part[0] += ts[i + 1] - ts[i]
+        part[1] += ys[i + 1] - ys[i]
+    return [(time, rise / time if time else None) for time, rise in split]
+
+
+# A rate of rise is read over RATE_PERIODS drive periods at least: over fewer, a period's own up and down
+# moves it more than the rise it measures.
+RATE_PERIODS = 10
+
+
+def orientation_words(case, shape, period):
+    """How a turning case's rise split by how it stood, in words: 'apex down for 333 of the window's 900, at
+    +0.353; as started at -0.016' (a rate only over RATE_PERIODS drive periods or more)."""
+    (half, rate_half), (started, rate_started) = orientation_rates(case, shape)
+    shortest = RATE_PERIODS * period
+    words = f"{HALF_TURNED[shape]} for {half:.0f} of the window's {half + started:.0f}"
+    if half >= shortest:
+        words += f", at {rate_half:+.3f}"
+    return words + (f"; as started at {rate_started:+.3f}" if started >= shortest else "")
+
+
 def turning_words():
     """How far the screen's turning bodies turned, cell by cell and bed by bed; "" while none has finished."""
     cells, shapes = [], []
     for shape, period in COUPLING_CELLS:
         cases = beds(select(committed(COUPLING), dict(coupling_where(shape, TURNING), **{"drive.period": period})),
                      f"turning {shape} T = {period:g}")
-        each = ", ".join(f"{most:.1f} (bed {c.get('box.seed'):g}, {end:+.1f} at the end)"
+        each = ", ".join(f"{most:.1f} (bed {c.get('box.seed'):g}, {end:+.1f} at the end"
+                         + (f"; {orientation_words(c, shape, period)})" if shape in REPEATS_EVERY else ")")
                          for c in cases for most, end in [turning_extent(c)])
         if each:
             cells.append(f"the {shape} at T = {period:g} {each}")
@@ -436,7 +479,9 @@ def turning_words():
                         if shape in REPEATS_EVERY)
     return ("How far the turning bodies turned: the largest angle over t = 100-1000, in degrees turned since t = 0 "
             "(trajectory.csv's angle, counter-clockwise positive" + (f"; the outline repeats itself, {repeats}" if repeats
-                                                                    else "") + "): " + "; ".join(cells))
+                                                                    else "") + "), with the time it stood half-turned "
+            "(within a quarter repeat of half a repeat from its start) and its rate of rise then and the rest of the "
+            "time: " + "; ".join(cells))
 
 
 def answer_coupling(spec):
@@ -460,7 +505,8 @@ def answer_coupling(spec):
                 cells.append(each)
                 continue
             diff, z, toward, _, _, paired = change
-            cells.append(f"{each}; {diff:+.4f} ({abs(z):.1f} se, {toward}; {paired} bed{'s' if paired > 1 else ''} paired)")
+            cells.append(f"{each}; {diff:+.4f} ({abs(z):.1f} se{straying_words(shape, period, changes)}, {toward}; "
+                         f"{paired} bed{'s' if paired > 1 else ''} paired)")
         lines.append(row_line([label] + cells))
     shapes = list(dict.fromkeys(s for s, _ in COUPLING_CELLS))
     lines += ["", "(V_y over t = 100-1000 of runs to t = 1000, A = 5 d, on the factor screen's beds of the paper's "
@@ -470,7 +516,9 @@ def answer_coupling(spec):
               "not rising at T = 3-4. "
               "A change is the row's mean minus the baseline's over the beds both have, in standard errors se = sigma "
               "sqrt(1/n + 1/n), sigma " + scatter_words(shapes) + ". " + paired_scatter_words(shapes) + ". A change "
-              f"moves the cell toward the paper's side when >= {RESOLVED:g} se that way"
+              f"moves the cell toward the paper's side when >= {RESOLVED:g} se that way, also by one run's standard deviation "
+              "of its shape where the paired changes show it larger than sigma (their standard deviation over sqrt 2: "
+              "'N se by the scatter ... paired runs show')"
               + (f". {turned}" if (turned := turning_words()) else "") + ")"]
     return lines, committed(COUPLING_SOURCES)
 
