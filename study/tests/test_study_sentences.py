@@ -322,13 +322,13 @@ class WhatIsLeftTest(unittest.TestCase):
                          "So not all of the difference is accounted for: what is left is the rest: the coupling.")
 
     def test_a_coupling_factor_toward_the_paper_is_named_with_where_it_has_run(self):
-        lattice = (0.11, 10.2, "toward the paper", "the lattice body", "the triangle at T = 5", 2)
+        lattice = factor_tables.CouplingChange(0.11, 10.2, "toward the paper", "the lattice body", "the triangle at T = 5", 2)
         self.assertEqual(answer_sentences.what_is_left([self.WITHIN], False, "the rest", [(lattice, None)]),
                          "So the protocol's factors account for none of the difference; the intruder's coupling may: "
                          "the lattice body moves it +0.1100 (10.2 se, toward the paper; 2 beds paired) in the 60 d box; "
                          "in the paper's box: not run yet. Left beside it: the rest.")
         # the screen's other factors at the cell follow, measured or not
-        atom = (0.0059, 0.5, "within the scatter", "the atoms' mass", "the triangle at T = 5", 2)
+        atom = factor_tables.CouplingChange(0.0059, 0.5, "within the scatter", "the atoms' mass", "the triangle at T = 5", 2)
         self.assertIn("in the paper's box: not run yet. The screen's other factors at this cell: the atoms' mass +0.0059 "
                       "(0.5 se, within the scatter; 2 beds paired); not run here yet: turning. Left beside it: the rest.",
                       answer_sentences.what_is_left([self.WITHIN], False, "the rest", [(lattice, None)],
@@ -362,8 +362,8 @@ class WhatIsLeftTest(unittest.TestCase):
                          "In the paper's box by its protocol the cell is on the paper's side.")
 
     def test_the_coupling_screen_so_far(self):
-        within = (0.001, 0.5, "within the scatter", "the lattice body", "the square at T = 3", 2)
-        moved = (0.02, 3.0, "toward the paper", "turning", "the triangle at T = 5", 1)
+        within = factor_tables.CouplingChange(0.001, 0.5, "within the scatter", "the lattice body", "the square at T = 3", 2)
+        moved = factor_tables.CouplingChange(0.02, 3.0, "toward the paper", "turning", "the triangle at T = 5", 1)
         self.assertEqual(answer_sentences.coupling_status([(within, None, ""), (None, None, "")]),
                          "its screen being run, 1 change measured so far, on 2 beds each: none moves a cell by 2 "
                          "standard errors so far; study/VALIDATION.md, \"The intruder's coupling\"")
@@ -376,11 +376,18 @@ class WhatIsLeftTest(unittest.TestCase):
                          "its screen run, 1 change measured, on 2 beds each: none moves a cell by 2 standard errors; "
                          "study/VALIDATION.md, \"The intruder's coupling\"")
         # a move away from the paper is not one the paper's box is run for: nothing said of it there
-        away = (0.013, 5.3, "away from the paper", "turning", "the square at T = 3", 2)
+        away = factor_tables.CouplingChange(0.013, 5.3, "away from the paper", "turning", "the square at T = 3", 2)
         self.assertIn("each: turning moves the square at T = 3 away from the paper (+0.013, 5.3 se, in the 60 d box); "
                       "study/VALIDATION.md", answer_sentences.coupling_status([(away, None, "")]))
+        # resolved on sigma, not by the scatter the shape's paired runs show: said so, after the moves
+        split = factor_tables.CouplingChange(0.074, 6.8, "within the scatter", "turning", "the triangle at T = 5", 2,
+                                             ", 1.7 se by the scatter the triangle's paired runs show")
+        self.assertIn("each: turning moves the square at T = 3 away from the paper (+0.013, 5.3 se, in the 60 d box); "
+                      "turning moves the triangle at T = 5 by 6.8 se of sigma (+0.074) but 1.7 se by the scatter the "
+                      "triangle's paired runs show: not resolved; study/VALIDATION.md",
+                      answer_sentences.coupling_status([(away, None, ""), (split, None, "")]))
         # a factor's name carries its own article: it is not doubled
-        lattice = (0.11, 7.1, "toward the paper", "the lattice body", "the triangle at T = 5", 1)
+        lattice = factor_tables.CouplingChange(0.11, 7.1, "toward the paper", "the lattice body", "the triangle at T = 5", 1)
         self.assertIn("each: the lattice body moves the triangle at T = 5 toward the paper (+0.110, 7.1 se",
                       answer_sentences.coupling_status([(lattice, None, "")]))
         # where the paper's box has run it: how it reads there, by the rule, against the paper
@@ -419,13 +426,16 @@ class WhatIsLeftTest(unittest.TestCase):
             factor_tables.straying = lambda shapes: [("square", 0.01, 3, 0.0034)] if "square" in shapes else []
             factor_tables.coupling_paired = lambda shape, period, changes: ([0.03, 0.03], [0.02, 0.02])
             z = round(0.01 / (0.01 / 2 ** 0.5 * (1 / 2 + 1 / 2) ** 0.5), 1)
-            self.assertEqual(factor_tables.straying_words("square", 3.0, {"intruder.rotation": "free"}),
-                             f", {z:.1f} se by the scatter the square's paired runs show")
+            change = factor_tables.coupling_change("square", 3.0, {"intruder.rotation": "free"})
+            self.assertEqual(change.by_runs, f", {z:.1f} se by the scatter the square's paired runs show")
+            # and the words say it where the change is shown
+            self.assertIn(f"turning +0.0100 ({abs(change.z):.1f} se, {z:.1f} se by the scatter the square's paired runs show, ",
+                          answer_sentences.measured_words([("turning", change)])[0][0])
             # a shape whose paired runs do not stray: nothing to add
-            self.assertEqual(factor_tables.straying_words("triangle", 5.0, {"intruder.rotation": "free"}), "")
-            # nothing measured yet: nothing to add
+            self.assertEqual(factor_tables.coupling_change("triangle", 5.0, {"intruder.rotation": "free"}).by_runs, "")
+            # nothing measured yet: no change
             factor_tables.coupling_paired = lambda shape, period, changes: ([], [])
-            self.assertEqual(factor_tables.straying_words("square", 3.0, {"intruder.rotation": "free"}), "")
+            self.assertIsNone(factor_tables.coupling_change("square", 3.0, {"intruder.rotation": "free"}))
         finally:
             factor_tables.straying, factor_tables.coupling_paired = real_straying, real_paired
 
@@ -459,11 +469,11 @@ class WhatIsLeftTest(unittest.TestCase):
         self.assertEqual(answer_sentences.coupling_bracket_short("triangle", [(4.0, [6 * sig, 6 * sig]), (5.0, [8 * sig] * 2)]),
                          ", its bracket there <= 4 (the paper's 4-5)")
         self.assertEqual(answer_sentences.coupling_bracket_short("triangle", [(5.0, [8 * sig] * 2)]), "")
-        lattice_moves = (0.11, 10.2, "toward the paper", "the lattice body", "the triangle at T = 5", 2)
+        lattice_moves = factor_tables.CouplingChange(0.11, 10.2, "toward the paper", "the lattice body", "the triangle at T = 5", 2)
         self.assertIn("(+0.110, 10.2 se, in the 60 d box, its bracket there <= 4 (the paper's 4-5); not run in the paper's",
                       answer_sentences.coupling_status([(lattice_moves, None, ", its bracket there <= 4 (the paper's 4-5)")]))
         # and the words stand after the 60 d box's change in the cell's sentence
-        lattice = (0.11, 10.2, "toward the paper", "the lattice body", "the triangle at T = 5", 2)
+        lattice = factor_tables.CouplingChange(0.11, 10.2, "toward the paper", "the lattice body", "the triangle at T = 5", 2)
         self.assertIn("2 beds paired) in the 60 d box; by itself there T = 4 ",
                       answer_sentences.what_is_left([], False, "", [(lattice, None, words)]))
 
@@ -498,7 +508,7 @@ class WhatIsLeftTest(unittest.TestCase):
             factor_tables.coupling_change = real
 
     def test_the_coupling_screen_at_one_cell(self):
-        atom = (-0.0042, -1.8, "within the scatter", "the atoms' mass", "the square at T = 3", 2)
+        atom = factor_tables.CouplingChange(-0.0042, -1.8, "within the scatter", "the atoms' mass", "the square at T = 3", 2)
         self.assertEqual(answer_sentences.cell_coupling_status([("the atoms' mass", atom), ("turning", None)]),
                          "its screen being run, at this cell the atoms' mass -0.0042 (1.8 se, within the scatter; "
                          "2 beds paired); not run here yet: turning; study/VALIDATION.md, \"The intruder's coupling\"")

@@ -15,7 +15,7 @@ from cases import (CLOCK_A3, CLOCK_A5, COUPLING, DEPTH_A5, PAPER_RANGE, SHAPES, 
 from factor_tables import (BOX_ALONE, BOX_ROW, COUPLING_CELLS, COUPLING_ROWS, PROTOCOL_CELLS, PROTOCOL_FOLDERS,
                            PROTOCOL_ROWS, box_alone_change, change_text, coupling_change, coupling_periods,
                            coupling_screen_run, paper_box_change, paper_box_coupling, protocol_beds, protocol_change,
-                           row_where, straying, straying_words)
+                           row_where, straying)
 from findings import RESOLVED
 from findings_table import FINDING_SOURCES, against_findings, paper_findings
 from scatter import (PAPER_SIDE, SHAPE_NAMES, beds_z_text, clock_scatter, clock_sigma, depth_sigma,
@@ -341,8 +341,7 @@ def unmeasured(short=False, cell=None):
         status = cell_coupling_status(coupling_at(cell), coupling_screen_run())
     else:
         status = coupling_status([(change, paper_box_coupling(shape, period, changes) if change else None,
-                                   coupling_bracket_short(shape, coupling_periods(shape, changes))
-                                   + straying_words(shape, period, changes))
+                                   coupling_bracket_short(shape, coupling_periods(shape, changes)))
                                   for _, changes in COUPLING_ROWS for shape, period in COUPLING_CELLS
                                   for change in [coupling_change(shape, period, changes)]], coupling_screen_run())
     if short:
@@ -360,7 +359,8 @@ def coupling_at(cell):
 def measured_words(measured):
     """([each change of [(the factor's name, coupling_change's change or None)] and which way, in words],
     [the names not run there yet])."""
-    done = [f"{name} {c[0]:+.4f} ({abs(c[1]):.1f} se, {c[2]}; {beds_count([c[5]])} paired)" for name, c in measured if c]
+    done = [f"{name} {c.diff:+.4f} ({abs(c.z):.1f} se{c.by_runs}, {c.toward}; {beds_count([c.paired])} paired)"
+            for name, c in measured if c]
     return done, [name for name, c in measured if not c]
 
 
@@ -385,16 +385,19 @@ def coupling_status(measured, run=False):
     how many changes, on how many beds, and which move a cell by RESOLVED standard errors, with where the
     factor by itself starts the shape rising and, for a move toward the paper (the ones the paper's box is
     run for: issue 79, item 5), what it gives in the paper's box (run: coupling_screen_run's; "so far" while
-    it is not)."""
+    it is not); then those resolved on sigma but not by the scatter their shape's paired runs show."""
     changes = [(c, box, bracket) for c, box, bracket in measured if c]
-    moved = [(c, box, bracket) for c, box, bracket in changes if c[2] != "within the scatter"]
+    moved = [(c, box, bracket) for c, box, bracket in changes if c.toward != "within the scatter"]
     so_far = "" if run else " so far"
     return (f"{screen_words(run)}, {len(changes)} change{'s' if len(changes) > 1 else ''} measured{so_far}, on "
-            f"{beds_count(c[5] for c, _, _ in changes)} each: "
+            f"{beds_count(c.paired for c, _, _ in changes)} each: "
             + (f"none moves a cell by {RESOLVED:g} standard errors{so_far}" if not moved else
-               "; ".join(f"{c[3]} moves {c[4]} {c[2]} ({c[0]:+.3f}, {abs(c[1]):.1f} se, in the 60 d box{bracket}"
-                         + (f"; {paper_box_short(box)}" if c[2] == "toward the paper" else "") + ")"
+               "; ".join(f"{c.name} moves {c.cell} {c.toward} ({c.diff:+.3f}, {abs(c.z):.1f} se{c.by_runs}, in the 60 d "
+                         f"box{bracket}" + (f"; {paper_box_short(box)}" if c.toward == "toward the paper" else "") + ")"
                          for c, box, bracket in moved))
+            + "".join(f"; {c.name} moves {c.cell} by {abs(c.z):.1f} se of sigma ({c.diff:+.3f}) but{c.by_runs[1:]}: "
+                      "not resolved" for c, _, _ in changes if c.toward == "within the scatter" and c.by_runs
+                      and findings.resolved_side(c.z) != 0)
             + "; study/VALIDATION.md, \"The intruder's coupling\"")
 
 
@@ -438,7 +441,7 @@ def factors_text(shape, period, paper_sign, sig, box_values):
     if box_values:
         on_side = findings.on_paper_side(box_values, sig, paper_sign)
         coupling = coupling_toward(shape, period)
-        others = [(name, c) for name, c in coupling_at((shape, period)) if not (c and c[2] == "toward the paper")]
+        others = [(name, c) for name, c in coupling_at((shape, period)) if not (c and c.toward == "toward the paper")]
         text += what_is_left(changes, on_side, "" if on_side else UNMEASURED if coupling else
                              unmeasured(cell=(shape, period)), coupling, others)
     return text
@@ -451,7 +454,7 @@ def coupling_toward(shape, period):
     found = []
     for _, changes in COUPLING_ROWS:
         change = coupling_change(shape, period, changes)
-        if change and change[2] == "toward the paper":
+        if change and change.toward == "toward the paper":
             found.append((change, paper_box_coupling(shape, period, changes),
                           coupling_bracket_words(shape, coupling_periods(shape, changes))))
     return found
@@ -480,7 +483,6 @@ def coupling_words(change, paper_box, bracket=""):
     """One coupling factor that moves a cell toward the paper, in words: its change on the 60 d box's
     paired beds, where it starts the shape rising there (bracket: coupling_bracket_words') and what it
     gives in the paper's own box (paper_box: a PaperBoxReading, or None)."""
-    diff, z, _, name, _, paired = change
     if paper_box is None:
         box = "not run yet"
     elif paper_box.t_now is None:
@@ -493,8 +495,8 @@ def coupling_words(change, paper_box, bracket=""):
     else:
         box = (f"being run, so far (t = 100-{paper_box.t_now:g}, not judged) {paper_box.vy:+.4f} against the "
                f"protocol's {paper_box.base:+.4f} on the same bed over the same window (one bed)")
-    return (f"{name} moves it {diff:+.4f} ({abs(z):.1f} se, toward the paper; {beds_count([paired])} paired) in the "
-            f"60 d box{bracket}; in the paper's box: {box}")
+    return (f"{change.name} moves it {change.diff:+.4f} ({abs(change.z):.1f} se{change.by_runs}, toward the paper; "
+            f"{beds_count([change.paired])} paired) in the 60 d box{bracket}; in the paper's box: {box}")
 
 
 def what_moved(changes):

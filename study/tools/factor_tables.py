@@ -6,6 +6,7 @@ the cell against the paper's side there. The changes here are what the answer's 
 (answer_sentences.py) say of them.
 """
 import math
+from typing import NamedTuple
 from dataclasses import dataclass
 
 import findings
@@ -147,15 +148,11 @@ def paired_runs_z(comparison):
     return findings.judged(comparison, run_sd)[1], run_sd, dof
 
 
-def straying_words(shape, period, changes):
-    """', N se by the scatter the shape's paired runs show' of a coupling row's change in a cell, where the
-    shape's paired runs stray more than its sigma allows; "" where they do not, or before the change is
-    measured."""
-    values, base = coupling_paired(shape, period, changes)
-    if not values:
-        return ""
-    by_runs = paired_runs_z(findings.Comparison(shape, values, base, findings.paper_side(period, PAPER_RANGE[shape])))
-    return f", {abs(by_runs[0]):.1f} se by the scatter the {shape}'s paired runs show" if by_runs else ""
+def by_runs_words(comparison):
+    """', N se by the scatter the shape's paired runs show' of a change, where the shape's paired runs stray
+    more than its sigma allows (paired_runs_z); "" where they do not."""
+    by_runs = paired_runs_z(comparison)
+    return f", {abs(by_runs[0]):.1f} se by the scatter the {comparison.label}'s paired runs show" if by_runs else ""
 
 
 def straying_caveat(comparison, z, sig):
@@ -298,9 +295,19 @@ def coupling_paired(shape, period, changes):
     return [values[b] for b in paired], [base[b] for b in paired]
 
 
+class CouplingChange(NamedTuple):
+    """A coupling row's change in one cell, over the beds it shares with the baseline."""
+    diff: float      # the row's mean minus the baseline's
+    z: float         # in standard errors of the shape's sigma
+    toward: str      # which way it moves the cell (toward_words')
+    name: str        # the factor's short name
+    cell: str        # "the square at T = 3"
+    paired: int      # how many beds are paired
+    by_runs: str = ""   # by_runs_words' of the change, where the shape's paired runs stray
+
+
 def coupling_change(shape, period, changes):
-    """(change, z, which way, the factor's short name, the cell) of a coupling row in one cell, over the beds it
-    shares with the baseline; None while there are none."""
+    """CouplingChange of a coupling row in one cell; None while it shares no bed with the baseline."""
     values, base = coupling_paired(shape, period, changes)
     if not values:
         return None
@@ -312,7 +319,7 @@ def coupling_change(shape, period, changes):
     # shape's paired changes show is, as for the protocol block's changes
     toward = toward_words(z, straying_caveat(comparison, z, sig))
     name = next(label.split(" (")[0] for label, c in COUPLING_ROWS if c == changes)
-    return diff, z, toward, name, f"the {shape} at T = {period:g}", len(values)
+    return CouplingChange(diff, z, toward, name, f"the {shape} at T = {period:g}", len(values), by_runs_words(comparison))
 
 
 def coupling_screen_run():
@@ -504,9 +511,8 @@ def answer_coupling(spec):
             if not change:
                 cells.append(each)
                 continue
-            diff, z, toward, _, _, paired = change
-            cells.append(f"{each}; {diff:+.4f} ({abs(z):.1f} se{straying_words(shape, period, changes)}, {toward}; "
-                         f"{paired} bed{'s' if paired > 1 else ''} paired)")
+            cells.append(f"{each}; {change.diff:+.4f} ({abs(change.z):.1f} se{change.by_runs}, {change.toward}; "
+                         f"{change.paired} bed{'s' if change.paired > 1 else ''} paired)")
         lines.append(row_line([label] + cells))
     shapes = list(dict.fromkeys(s for s, _ in COUPLING_CELLS))
     lines += ["", "(V_y over t = 100-1000 of runs to t = 1000, A = 5 d, on the factor screen's beds of the paper's "
