@@ -439,6 +439,30 @@ class WhatIsLeftTest(unittest.TestCase):
         finally:
             factor_tables.straying, factor_tables.coupling_paired = real_straying, real_paired
 
+    def test_a_change_pairs_only_over_its_baselines_very_beds(self):
+        class Ran:   # a made-up case: its V_y and the key of the bed it ran on
+            def __init__(self, vy, key):
+                self.vy, self.key = vy, key
+
+            def get(self, _):
+                return self.vy
+
+            def bed_key(self):
+                return self.key
+
+        lattice = {"intruder.surface": "lattice"}
+        # bed 1 the baseline's own; seed 3 a bed of its own (poured around the body), whatever its seed; seed 4 no
+        # baseline at all
+        made_up = {(): {1: Ran(0.01, "a"), 2: Ran(0.02, "b"), 3: Ran(0.03, "c")},
+                   tuple(lattice.items()): {1: Ran(0.05, "a"), 3: Ran(0.07, "z"), 4: Ran(0.08, "y")}}
+        real = factor_tables.coupling_cases
+        factor_tables.coupling_cases = lambda shape, period, changes: made_up[tuple(changes.items())]
+        try:
+            self.assertEqual(factor_tables.shared_beds("triangle", 5.0, lattice), [1])
+            self.assertEqual(factor_tables.coupling_paired("triangle", 5.0, lattice), ([0.05], [0.01]))
+        finally:
+            factor_tables.coupling_cases = real
+
     def test_a_coupling_change_is_not_resolved_beyond_its_shapes_paired_runs(self):
         real_straying, real_paired = factor_tables.straying, factor_tables.coupling_paired
         sig = scatter.clock_sigma("triangle")

@@ -70,6 +70,12 @@ class Case:
             node = node[part]
         return node
 
+    def bed_key(self):
+        """The key of the bed the case ran on (summary.json's bed_key): two cases ran on the same bed when
+        their keys are equal, whatever their seeds."""
+        with open(os.path.join(self.dir, "summary.json")) as f:
+            return json.load(f)["bed_key"]
+
     def trajectory(self):
         """(t, y) of trajectory.csv."""
         if self._trajectory is None:

@@ -269,16 +269,30 @@ def coupling_where(shape, changes):
     return dict(COUPLING_BASE, **changes, **{"intruder.shape": shape, "drive.amplitude": 5.0, "box.width": 60.0})
 
 
+def coupling_cases(shape, period, changes):
+    """{seed: case} of the coupling screen's cell with `changes` from the paper's protocol (none: its baseline)."""
+    where = dict(coupling_where(shape, changes), **{"drive.period": period})
+    present = committed(COUPLING_SOURCES)
+    return {c.get("box.seed"): c for c in beds(select(present, where), f"{present} {where}")}
+
+
 def coupling_beds(shape, period, changes):
     """{seed: V_y} of the coupling screen's cell with `changes` from the paper's protocol (none: its baseline)."""
-    return protocol_beds(COUPLING_SOURCES, dict(coupling_where(shape, changes), **{"drive.period": period}))
+    return {seed: float(c.get("vy")) for seed, c in coupling_cases(shape, period, changes).items()}
+
+
+def shared_beds(shape, period, changes):
+    """The seeds on which a coupling row's case ran on its baseline's very bed (the same bed key): the beds
+    its change pairs over."""
+    cases, base = coupling_cases(shape, period, changes), coupling_cases(shape, period, {})
+    return sorted(seed for seed in set(cases) & set(base) if cases[seed].bed_key() == base[seed].bed_key())
 
 
 def poured_around(shape, period, changes):
-    """The beds (seeds) of a coupling row's cell poured around the changed body itself, rather than the factor
-    screen's beds with that body swapped in: no baseline was run on them, so they pair with none."""
-    where = dict(coupling_where(shape, changes), **{"drive.period": period})
-    return {c.get("box.seed") for c in select(committed(COUPLING), where) if not c.get("bed.file")}
+    """The beds (seeds) of a coupling row's cell poured around the changed body itself, rather than a baseline's
+    bed (at any period) with that body swapped in: no baseline ran on them, so they pair with none."""
+    baseline_beds = {c.bed_key() for c in select(committed(COUPLING_SOURCES), coupling_where(shape, {}))}
+    return {seed for seed, c in coupling_cases(shape, period, changes).items() if c.bed_key() not in baseline_beds}
 
 
 def coupling_periods(shape, changes):
@@ -289,9 +303,9 @@ def coupling_periods(shape, changes):
 
 
 def coupling_paired(shape, period, changes):
-    """([V_y with `changes`], [the baseline's V_y]) over the beds both have, in bed order."""
+    """([V_y with `changes`], [the baseline's V_y]) over the beds both ran on (shared_beds), in bed order."""
     values, base = coupling_beds(shape, period, changes), coupling_beds(shape, period, {})
-    paired = sorted(set(values) & set(base))
+    paired = shared_beds(shape, period, changes)
     return [values[b] for b in paired], [base[b] for b in paired]
 
 
