@@ -518,8 +518,9 @@ class WhatIsLeftTest(unittest.TestCase):
         self.assertIn("| 4-5 | **yes**", rows[1])   # not rising at 4, rising at 5: the paper's bracket
 
     def test_the_screen_is_run_once_every_row_has_both_disputed_cells(self):
-        real = factor_tables.coupling_change
+        real, real_waiting = factor_tables.coupling_change, factor_tables.disputed_cases_waiting
         try:
+            factor_tables.disputed_cases_waiting = lambda: []
             # every row measured at both disputed cells, whatever else is not: run
             factor_tables.coupling_change = lambda shape, period, changes: (
                 (0.0, 0.0, "within the scatter") if (shape, period) in factor_tables.DISPUTED_CELLS else None)
@@ -528,8 +529,13 @@ class WhatIsLeftTest(unittest.TestCase):
             factor_tables.coupling_change = lambda shape, period, changes: (
                 None if changes == {"drive.form": "velocity"} and shape == "triangle" else (0.0, 0.0, "within the scatter"))
             self.assertFalse(factor_tables.coupling_screen_run())
+            # every row measured, but a case at a disputed cell still to finish: still being run
+            factor_tables.coupling_change = lambda shape, period, changes: (0.0, 0.0, "within the scatter")
+            self.assertTrue(factor_tables.coupling_screen_run())
+            factor_tables.disputed_cases_waiting = lambda: ["triangle_T5_free_s4"]
+            self.assertFalse(factor_tables.coupling_screen_run())
         finally:
-            factor_tables.coupling_change = real
+            factor_tables.coupling_change, factor_tables.disputed_cases_waiting = real, real_waiting
 
     def test_the_coupling_screen_at_one_cell(self):
         atom = factor_tables.CouplingChange(-0.0042, -1.8, "within the scatter", "the atoms' mass", "the square at T = 3", 2)

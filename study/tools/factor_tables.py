@@ -11,7 +11,8 @@ from dataclasses import dataclass
 
 import findings
 from cases import (COUPLING, PAPER_BOX, PAPER_RANGE, SHAPES, SO_FAR_FROM, T1000_BEDS, T1000_WINDOWS, WINDOW_FROM, beds,
-                   cell_text, chord, committed, head_lines, key_of, paper_observed, row_line, select, so_far, unfinished)
+                   cases_of, cell_text, chord, committed, head_lines, key_of, paper_observed, row_line, select, so_far,
+                   unfinished)
 from findings import RESOLVED
 from scatter import PAPER_SIDE, SHAPE_NAMES, beds_z_text, clock_sigma, scatter_words
 from table1_blocks import against_paper, bracket_text
@@ -336,10 +337,18 @@ def coupling_change(shape, period, changes):
     return CouplingChange(diff, z, toward, name, f"the {shape} at T = {period:g}", len(values), by_runs_words(comparison))
 
 
+def disputed_cases_waiting():
+    """The names of the coupling screen's cases at a disputed cell that have not finished (in its results.csv,
+    pending, running or carried part-way)."""
+    return [c.row["case"] for source in committed(COUPLING) for c in cases_of(source, finished=False)
+            if (c.get("intruder.shape"), c.get("drive.period")) in DISPUTED_CELLS]
+
+
 def coupling_screen_run():
-    """Whether every coupling row has its change measured at both disputed cells: the screen is run, not
-    being run (its other cells follow the rows that move a disputed cell)."""
-    return all(coupling_change(shape, period, changes) for _, changes in COUPLING_ROWS for shape, period in DISPUTED_CELLS)
+    """Whether every coupling row has its change measured at both disputed cells and no case there is still to
+    finish: the screen is run, not being run (its other cells follow the rows that move a disputed cell)."""
+    return (all(coupling_change(shape, period, changes) for _, changes in COUPLING_ROWS for shape, period in DISPUTED_CELLS)
+            and not disputed_cases_waiting())
 
 
 def paired_scatter(shape):
