@@ -439,6 +439,27 @@ class WhatIsLeftTest(unittest.TestCase):
         finally:
             factor_tables.straying, factor_tables.coupling_paired = real_straying, real_paired
 
+    def test_the_change_that_makes_most_of_a_shapes_paired_scatter_is_named(self):
+        real = factor_tables.paired_changes
+        try:
+            # turning's two beds split (sum of squares 2 x 0.075^2); the atoms' mass's agree (2 x 0.001^2); one bed
+            # tells nothing
+            factor_tables.paired_changes = lambda shape: {("turning", "the triangle at T = 5"): [-0.0035, 0.1465],
+                                                          ("the atoms' mass", "the triangle at T = 5"): [0.005, 0.007],
+                                                          ("the lattice body", "the triangle at T = 4"): [0.1]}
+            name, cell, share = factor_tables.largest_share("triangle")
+            self.assertEqual((name, cell), ("turning", "the triangle at T = 5"))
+            self.assertAlmostEqual(share, 2 * 0.075 ** 2 / (2 * 0.075 ** 2 + 2 * 0.001 ** 2))
+            self.assertEqual(answer_sentences.most_of_it("triangle"), ", 100% of it from turning at the triangle at T = 5")
+            # no change makes more than half of it: nothing named
+            factor_tables.paired_changes = lambda shape: {("a", "x"): [0.0, 0.002], ("b", "y"): [0.0, 0.002]}
+            self.assertEqual(answer_sentences.most_of_it("triangle"), "")
+            # no change of two beds: nothing to share
+            factor_tables.paired_changes = lambda shape: {("a", "x"): [0.01]}
+            self.assertIsNone(factor_tables.largest_share("triangle"))
+        finally:
+            factor_tables.paired_changes = real
+
     def test_a_change_pairs_only_over_its_baselines_very_beds(self):
         class Ran:   # a made-up case: its V_y and the key of the bed it ran on
             def __init__(self, vy, key):
@@ -586,8 +607,8 @@ class WhatIsLeftTest(unittest.TestCase):
             self.assertAlmostEqual(rule, 0.0024 * 2 ** 0.5)
             self.assertIn("; the square's is 3.8 x the rule's sigma sqrt 2 (0.0034): its changes' counts of standard "
                           "errors overstate them by as much", factor_tables.paired_scatter_words(["square", "triangle"]))
-            self.assertIn("the square's paired runs on one bed stray 3.8 x as far as its sigma allows (1 dof)",
-                          answer_sentences.straying_note())
+            self.assertIn("the square's paired runs on one bed stray 3.8 x as far as its sigma allows (1 dof, 100% of "
+                          "it from the lattice body at the square at T = 3)", answer_sentences.straying_note())
             sigmas["square"] = 0.01   # a sigma that allows the spread: nothing named
             self.assertEqual(factor_tables.straying(["square", "triangle"]), [])
             self.assertEqual(answer_sentences.straying_note(), "")

@@ -334,7 +334,8 @@ def coupling_change(shape, period, changes):
     # shape's paired changes show is, as for the protocol block's changes
     toward = toward_words(z, straying_caveat(comparison, z, sig))
     name = next(label.split(" (")[0] for label, c in COUPLING_ROWS if c == changes)
-    return CouplingChange(diff, z, toward, name, f"the {shape} at T = {period:g}", len(values), by_runs_words(comparison))
+    return CouplingChange(diff, z, toward, name, f"the {shape} at T = {period:g}", len(values),
+                          by_runs_words(comparison))
 
 
 def disputed_cases_waiting():
@@ -347,18 +348,36 @@ def disputed_cases_waiting():
 def coupling_screen_run():
     """Whether every coupling row has its change measured at both disputed cells and no case there is still to
     finish: the screen is run, not being run (its other cells follow the rows that move a disputed cell)."""
-    return (all(coupling_change(shape, period, changes) for _, changes in COUPLING_ROWS for shape, period in DISPUTED_CELLS)
-            and not disputed_cases_waiting())
+    measured = all(coupling_change(shape, period, changes)
+                   for _, changes in COUPLING_ROWS for shape, period in DISPUTED_CELLS)
+    return measured and not disputed_cases_waiting()
+
+
+def paired_changes(shape):
+    """{(the factor's short name, the cell): [its change on each paired bed]} of `shape`'s coupling changes."""
+    return {(label.split(" (")[0], f"the {shape} at T = {period:g}"):
+            [a - b for a, b in zip(*coupling_paired(shape, period, changes))]
+            for s, period in COUPLING_CELLS if s == shape for label, changes in COUPLING_ROWS}
 
 
 def paired_scatter(shape):
     """(one bed's standard deviation of a paired change, its degrees of freedom) of `shape`, pooled over the
     coupling screen's changes measured on two beds or more: how far one bed's change strays from the
     cell's mean change. dof 0 while no change has two beds."""
-    groups = [[a - b for a, b in zip(*coupling_paired(s, period, changes))]
-              for s, period in COUPLING_CELLS if s == shape for _, changes in COUPLING_ROWS]
-    sigma, dof, _ = findings.pooled_sd(groups)
+    sigma, dof, _ = findings.pooled_sd(list(paired_changes(shape).values()))
     return sigma, dof
+
+
+def largest_share(shape):
+    """(the factor's short name, the cell, its share) of the change whose beds' spread makes the largest share
+    of `shape`'s pooled paired scatter (its sum of squares); None while no change has two beds."""
+    squares = {key: sum((x - findings.mean(d)) ** 2 for x in d)
+               for key, d in paired_changes(shape).items() if len(d) >= 2}
+    total = sum(squares.values())
+    if not total:
+        return None
+    (name, cell), most = max(squares.items(), key=lambda item: item[1])
+    return name, cell, most / total
 
 
 def rule_change_sd(shape):
@@ -453,8 +472,8 @@ def turning_extent(case):
 
 # How each outline stands half a repeat from its start (docs/SHAPES.md's orientations): the other way it can
 # meet the grains.
-HALF_TURNED = {"square": "on a corner", "rect_narrow": "lying on its long side", "rect_wide": "standing on its short side",
-               "triangle": "apex down"}
+HALF_TURNED = {"square": "on a corner", "rect_narrow": "lying on its long side",
+               "rect_wide": "standing on its short side", "triangle": "apex down"}
 
 
 def orientation_rates(case, shape):
