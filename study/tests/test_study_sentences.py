@@ -450,10 +450,10 @@ class WhatIsLeftTest(unittest.TestCase):
             name, cell, share = factor_tables.largest_share("triangle")
             self.assertEqual((name, cell), ("turning", "the triangle at T = 5"))
             self.assertAlmostEqual(share, 2 * 0.075 ** 2 / (2 * 0.075 ** 2 + 2 * 0.001 ** 2))
-            self.assertEqual(answer_sentences.most_of_it("triangle"), ", 100% of it from turning at the triangle at T = 5")
+            self.assertEqual(factor_tables.most_of_it("triangle"), ", 100% of it from turning at the triangle at T = 5")
             # no change makes more than half of it: nothing named
             factor_tables.paired_changes = lambda shape: {("a", "x"): [0.0, 0.002], ("b", "y"): [0.0, 0.002]}
-            self.assertEqual(answer_sentences.most_of_it("triangle"), "")
+            self.assertEqual(factor_tables.most_of_it("triangle"), "")
             # no change of two beds: nothing to share
             factor_tables.paired_changes = lambda shape: {("a", "x"): [0.01]}
             self.assertIsNone(factor_tables.largest_share("triangle"))
@@ -586,7 +586,9 @@ class WhatIsLeftTest(unittest.TestCase):
             # squares (0.0005^2 x 2) + (0.0015^2 x 2) over 1 + 1 degrees of freedom
             self.assertEqual(dof, 2)
             self.assertAlmostEqual(sigma, ((0.0005 ** 2 * 2 + 0.0015 ** 2 * 2) / 2) ** 0.5)
-            self.assertIn("square 0.0000 (1 dof), triangle 0.0016 (2 dof), disk not measured yet; the rule takes",
+            # the lattice pair's squares are 0.0015^2 x 2 of the whole: 90 %
+            self.assertIn("square 0.0000 (1 dof), triangle 0.0016 (2 dof, 90% of it from the lattice body at the "
+                          "triangle at T = 5), disk not measured yet; the rule takes",
                           factor_tables.paired_scatter_words(["square", "triangle", "disk"]))
         finally:
             factor_tables.coupling_paired = real

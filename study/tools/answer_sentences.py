@@ -14,7 +14,7 @@ from cases import (CLOCK_A3, CLOCK_A5, COUPLING, DEPTH_A5, PAPER_RANGE, SHAPES, 
                    mean, paper_observed, select, so_far)
 from factor_tables import (BOX_ALONE, BOX_ROW, COUPLING_CELLS, COUPLING_ROWS, PROTOCOL_CELLS, PROTOCOL_FOLDERS,
                            PROTOCOL_ROWS, box_alone_change, change_text, coupling_change, coupling_periods,
-                           coupling_screen_run, largest_share, paper_box_change, paper_box_coupling, protocol_beds,
+                           coupling_screen_run, most_of_it, paper_box_change, paper_box_coupling, protocol_beds,
                            protocol_change, row_where, straying)
 from findings import RESOLVED
 from findings_table import FINDING_SOURCES, against_findings, paper_findings
@@ -150,16 +150,6 @@ def bracket_kind(lo, hi, paper_range):
     if hi is None:
         return "never rises"
     return "differs" if verdict.startswith("**no") else "not placed"
-
-
-def most_of_it(shape):
-    """', N % of it from <factor> at <cell>' where one change's two beds make most of a shape's paired scatter
-    (its sum of squares), "" where none does: one pair that splits is not a scatter every change shares."""
-    largest = largest_share(shape)
-    if largest is None or largest[2] <= 0.5:
-        return ""
-    name, cell, share = largest
-    return f", {share:.0%} of it from {name} at {cell}"
 
 
 def straying_note():

@@ -380,6 +380,16 @@ def largest_share(shape):
     return name, cell, most / total
 
 
+def most_of_it(shape):
+    """', N % of it from <factor> at <cell>' where one change's two beds make most of a shape's paired scatter
+    (its sum of squares), "" where none does: one pair that splits is not a scatter every change shares."""
+    largest = largest_share(shape)
+    if largest is None or largest[2] <= 0.5:
+        return ""
+    name, cell, share = largest
+    return f", {share:.0%} of it from {name} at {cell}"
+
+
 def rule_change_sd(shape):
     """One bed's standard deviation of a change between two runs as the rule has it: sigma sqrt 2, sigma the
     shape's (the two runs independent)."""
@@ -398,7 +408,7 @@ def paired_scatter_words(shapes):
     smaller: a few pairs tell little, and a change of the body on the same bed may stray as far as another bed),
     and where it is the larger, that the rule's standard errors understate it."""
     measured = [(shape, *paired_scatter(shape)) for shape in shapes]
-    each = ", ".join(f"{shape} {sigma:.4f} ({dof} dof)" if dof else f"{shape} not measured yet"
+    each = ", ".join(f"{shape} {sigma:.4f} ({dof} dof{most_of_it(shape)})" if dof else f"{shape} not measured yet"
                      for shape, sigma, dof in measured)
     larger = "; ".join(f"the {shape}'s is {sd / rule:.1f} x the rule's sigma sqrt 2 ({rule:.4f}): its changes' counts "
                        "of standard errors overstate them by as much" for shape, sd, _, rule in straying(shapes))
