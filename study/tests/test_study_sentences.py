@@ -70,10 +70,16 @@ class TurningExtentTest(unittest.TestCase):
         self.assertAlmostEqual(rate_half, 40.0 / 200.0)
         self.assertAlmostEqual(rate_started, -3.0 / 700.0)
         self.assertEqual(factor_tables.orientation_words(turned, "triangle", 5.0),
-                         "apex down for 200 of the window's 900, at +0.200; as started at -0.004")
+                         "apex down for 200 of the window's 900 (first for a whole period from t = 0), at +0.200; as started at -0.004")
         # 200 is under 10 periods of T = 25: no rate for so short a time
         self.assertEqual(factor_tables.orientation_words(turned, "triangle", 25.0),
-                         "apex down for 200 of the window's 900; as started at -0.004")
+                         "apex down for 200 of the window's 900 (first for a whole period from t = 0); as started at -0.004")
+        # when it first held half-turned for a whole period, counted from t = 0, before the window too: a
+        # swing of less than a period half-turned (t = 100-102 at T = 5) is a rock, not a turn
+        later = self.case(["0,0,90,0,0,0,0,0", f"100,0,90,0,0,0,{rad(40)},0", f"102,0,90,0,0,0,{rad(10)},0",
+                           f"650,0,90,0,0,0,{rad(-50)},0", f"653,0,90,0,0,0,{rad(-70)},0", f"655,0,90,0,0,0,{rad(-60)},0"])
+        self.assertEqual(factor_tables.first_half_turned(later, "triangle", 5.0), 650.0)
+        self.assertIsNone(factor_tables.first_half_turned(later, "triangle", 6.0))
         # a square a quarter turn round (90 deg) stands as it started; 45 deg is on a corner
         self.assertEqual(factor_tables.orientation_rates(self.case(["100,0,90,0,0,0,%r,0" % rad(90),
                                                                    "200,0,91,0,0,0,0,0"]), "square")[0], (0.0, None))
@@ -82,6 +88,33 @@ class TurningExtentTest(unittest.TestCase):
         locked = self.case(["0,0,90,0,0,0", "1000,0,90,0,0,0"], header="t,x,y,vx,vy,fy")
         with self.assertRaisesRegex(ValueError, "records no angle"):
             locked.turn()
+
+
+class ScatterCasesTest(unittest.TestCase):
+    """Which coupling cases count in the clock's scatter: its new pours of a locked body only."""
+
+    def test_only_the_coupling_screens_new_pours_of_a_locked_body_count(self):
+        class Ran:   # a made-up case: its name, whether it poured its own bed, its coupling keys
+            def __init__(self, name, own, **keys):
+                self.row, self.own = {"case": name}, own
+                self.keys = dict(scatter.LOCKED_BODY, **{k.replace("__", "."): v for k, v in keys.items()})
+
+            def get(self, key):
+                return self.keys[key]
+
+            def pours_own_bed(self):
+                return self.own
+
+        made_up = [Ran("baseline_s4", True), Ran("atom", False, intruder__contact_mass="atom"),
+                   Ran("free_s4", True, intruder__rotation="free"), Ran("velocity_s4", True, drive__form="velocity"),
+                   Ran("swapped", False)]
+        real = scatter.load
+        scatter.load = lambda source: made_up
+        try:
+            self.assertEqual([c.row["case"] for c in scatter.scatter_cases(scatter.COUPLING[0])], ["baseline_s4"])
+            self.assertEqual(len(scatter.scatter_cases("results/paper_depth/factors_t1000")), len(made_up))
+        finally:
+            scatter.load = real
 
 
 class CellTextTest(unittest.TestCase):

@@ -76,6 +76,13 @@ class Case:
         with open(os.path.join(self.dir, "summary.json")) as f:
             return json.load(f)["bed_key"]
 
+    def pours_own_bed(self):
+        """Whether the case poured its own bed, rather than ran on a committed one (bed.file)."""
+        try:
+            return not self.get("bed.file")
+        except KeyError:
+            return True
+
     def trajectory(self):
         """(t, y) of trajectory.csv."""
         if self._trajectory is None:

@@ -486,19 +486,40 @@ HALF_TURNED = {"square": "on a corner", "rect_narrow": "lying on its long side",
                "rect_wide": "standing on its short side", "triangle": "apex down"}
 
 
+def half_turned(angle, shape):
+    """Whether an angle (radians turned since the start) stands the outline half-turned: within a quarter
+    repeat of half a repeat from its start (HALF_TURNED)."""
+    repeat = REPEATS_EVERY[shape]
+    return repeat / 4 < math.degrees(angle) % repeat < 3 * repeat / 4
+
+
+def first_half_turned(case, shape, period):
+    """When a turning intruder's case first stood half-turned for a whole drive period on end (from t = 0), or
+    None: a turn it holds, not a rock within one swing of the drive. Each sample interval counts where it
+    began, as in orientation_rates."""
+    ts, angles = case.turn()
+    since = None
+    for i in range(len(ts) - 1):
+        if not half_turned(angles[i], shape):
+            since = None
+            continue
+        since = ts[i] if since is None else since
+        if ts[i + 1] - since >= period - 1e-9:
+            return since
+    return None
+
+
 def orientation_rates(case, shape):
     """[(time, rate of rise)] over the paper's window of a turning intruder's case, split by how it stood:
     half-turned (within a quarter repeat of half a repeat from its start: HALF_TURNED), then as it started
     (within a quarter repeat of its start); rate None for no time. Each sample interval counts where it began."""
     ts, angles = case.turn()
     ys = case.trajectory()[1]
-    repeat = REPEATS_EVERY[shape]
     split = [[0.0, 0.0], [0.0, 0.0]]
     for i in range(len(ts) - 1):
         if ts[i] < WINDOW_FROM - 1e-9:
             continue
-        half_turned = repeat / 4 < math.degrees(angles[i]) % repeat < 3 * repeat / 4
-        part = split[0 if half_turned else 1]
+        part = split[0 if half_turned(angles[i], shape) else 1]
         part[0] += ts[i + 1] - ts[i]
         part[1] += ys[i + 1] - ys[i]
     return [(time, rise / time if time else None) for time, rise in split]
@@ -510,11 +531,14 @@ RATE_PERIODS = 10
 
 
 def orientation_words(case, shape, period):
-    """How a turning case's rise split by how it stood, in words: 'apex down for 333 of the window's 900, at
-    +0.353; as started at -0.016' (a rate only over RATE_PERIODS drive periods or more)."""
+    """How a turning case's rise split by how it stood, in words: 'apex down for 333 of the window's 900 (first
+    for a whole period from t = 195), at +0.353; as started at -0.016' (a rate only over RATE_PERIODS drive periods or more)."""
     (half, rate_half), (started, rate_started) = orientation_rates(case, shape)
     shortest = RATE_PERIODS * period
     words = f"{HALF_TURNED[shape]} for {half:.0f} of the window's {half + started:.0f}"
+    first = first_half_turned(case, shape, period)
+    if first is not None:
+        words += f" (first for a whole period from t = {first:.0f})"
     if half >= shortest:
         words += f", at {rate_half:+.3f}"
     return words + (f"; as started at {rate_started:+.3f}" if started >= shortest else "")
@@ -573,7 +597,9 @@ def answer_coupling(spec):
               "(the lower end of its 3-4), rising at T = 4; rising at T = 5 for the triangle (the upper end of its 4-5), "
               "not rising at T = 3-4. "
               "A change is the row's mean minus the baseline's over the beds both have, in standard errors se = sigma "
-              "sqrt(1/n + 1/n), sigma " + scatter_words(shapes) + ". " + paired_scatter_words(shapes) + ". A change "
+              "sqrt(1/n + 1/n), sigma " + scatter_words(shapes) + f" (from {findings.OWN_SCATTER_BEDS} beds on, a side's own "
+              "standard deviation takes sigma's place in its se where larger, as everywhere on this page). "
+              + paired_scatter_words(shapes) + ". A change "
               f"moves the cell toward the paper's side when >= {RESOLVED:g} se that way, also by one run's standard deviation "
               "of its shape where the paired changes show it larger than sigma (their standard deviation over sqrt 2: "
               "'N se by the scatter ... paired runs show')"

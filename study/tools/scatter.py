@@ -9,7 +9,7 @@ put into the words the blocks share.
 import functools
 
 import findings
-from cases import (CLOCK_A5, PAPER_RANGE, SHAPES, Cell, beds, beds_count, committed, load, mean)
+from cases import (CLOCK_A5, COUPLING, PAPER_RANGE, SHAPES, Cell, beds, beds_count, committed, load, mean)
 from findings import RESOLVED
 
 
@@ -51,14 +51,25 @@ def short_name(shape):
 
 # One bed's scatter by the paper's clock, shape by shape (issue 79): pooled over the shape's cells of
 # two beds or more among the clock's runs in the 60 d box on beds poured for them: Table 1's
-# (CLOCK_A5) and the factor screen's (each of its rows a new pour). Left out: the glued mass's runs
-# (results/paper_depth/mass_t1000), on the baseline's own beds, whose deviations from their mean
-# repeat the baseline's beds' (counted twice they would count as independent); the paper's 300 d box,
-# one bed a cell. A shape without a cell of two beds takes the pool over every shape's cells
-# (findings.shape_scatter), and the text says so.
-CLOCK_SCATTER = CLOCK_A5 + ["results/paper_depth/factors_t1000"]
+# (CLOCK_A5), the factor screen's (each of its rows a new pour) and the coupling screen's new pours of
+# a locked body (its baseline's extra beds: those cases of COUPLING with no bed.file and the coupling
+# keys at LOCKED_BODY; its other cases ran on the screen's beds, or turn, whose scatter is their own).
+# Left out: the glued mass's runs (results/paper_depth/mass_t1000), on the baseline's own beds, whose
+# deviations from their mean repeat the baseline's beds' (counted twice they would count as
+# independent); the paper's 300 d box, one bed a cell. A shape without a cell of two beds takes the
+# pool over every shape's cells (findings.shape_scatter), and the text says so.
+CLOCK_SCATTER = CLOCK_A5 + ["results/paper_depth/factors_t1000"] + COUPLING
 SCATTER_KEYS = ("intruder.shape", "drive.amplitude", "drive.period", "intruder.surface", "bed.pour",
                 "intruder.mass_rule", "box.width")   # what makes a cell besides its bed
+LOCKED_BODY = {"intruder.contact_mass": "body", "intruder.rotation": "locked", "drive.form": "displacement"}
+
+
+def scatter_cases(source):
+    """The finished cases of a source that count in the clock's scatter: every one, but of the coupling
+    screen only its new pours of a locked body (CLOCK_SCATTER's note)."""
+    if source not in COUPLING:
+        return load(source)
+    return [c for c in load(source) if c.pours_own_bed() and all(c.get(k) == v for k, v in LOCKED_BODY.items())]
 
 
 @functools.lru_cache(maxsize=None)
@@ -66,7 +77,7 @@ def clock_scatter():
     """{shape: findings.Scatter}: one bed's V_y standard deviation by the paper's clock per shape."""
     groups = {}
     for source in committed(CLOCK_SCATTER):
-        for c in load(source):
+        for c in scatter_cases(source):
             groups.setdefault(tuple(c.get(k) for k in SCATTER_KEYS), []).append(c)
     cells = {shape: [] for shape in SHAPES}
     for key in sorted(groups, key=str):
@@ -92,7 +103,8 @@ def scatter_words(shapes):
     dofs = sorted({scatter[s].dof for s in shapes})
     student = ", ".join(f"{findings.t_critical(d):.2f} se for {d} dof" for d in dofs)
     return ("one bed's standard deviation of the shape by the paper's clock, pooled over the shape's cells "
-            "of two beds or more (Table 1's runs and the factor screen's new pours in the 60 d box; the glued "
+            "of two beds or more (Table 1's runs, the factor screen's new pours and the coupling screen's new pours "
+            "of the locked body in the 60 d box; the glued "
             "mass's runs, on the baseline's own beds, left out; dof: its degrees of freedom, the beds less one "
             "per cell): " + ", ".join(f"{short_name(s)} {scatter_text(s)}" for s in shapes)
             + f". The rule stays {RESOLVED:g} se whatever the dof; with so few it is a weaker test than it reads "
