@@ -14,7 +14,7 @@ from cases import (COUPLING, PAPER_BOX, PAPER_RANGE, SHAPES, SO_FAR_FROM, T1000_
                    cases_of, cell_text, chord, committed, head_lines, key_of, paper_observed, row_line, select, so_far,
                    unfinished)
 from findings import RESOLVED
-from scatter import PAPER_SIDE, SHAPE_NAMES, beds_z_text, clock_sigma, scatter_words
+from scatter import LOCKED_BODY, PAPER_SIDE, SHAPE_NAMES, beds_z_text, clock_sigma, scatter_words
 from table1_blocks import against_paper, bracket_text
 from table_kinds import windows
 
@@ -252,8 +252,7 @@ def answer_protocol(spec):
 # have their baselines in COUPLING; the triangle at T = 3, where the lattice body's bracket lies if it
 # rises at T = 4 too, has none).
 COUPLING_CELLS = [("square", 3.0), ("triangle", 5.0), ("square", 4.0), ("triangle", 4.0), ("triangle", 3.0)]
-COUPLING_BASE = dict(PAPER_PROTOCOL, **{"intruder.contact_mass": "body", "intruder.rotation": "locked",
-                                        "drive.form": "displacement"})
+COUPLING_BASE = dict(PAPER_PROTOCOL, **LOCKED_BODY)
 COUPLING_ROWS = [('the atoms\' mass in the contacts (intruder.contact_mass = "atom")', {"intruder.contact_mass": "atom"}),
                  ('the lattice body (intruder.surface = "lattice", on the same bed)', {"intruder.surface": "lattice"}),
                  ('turning (intruder.rotation = "free")', {"intruder.rotation": "free"}),
@@ -532,7 +531,7 @@ RATE_PERIODS = 10
 
 def orientation_words(case, shape, period):
     """How a turning case's rise split by how it stood, in words: 'apex down for 333 of the window's 900 (first
-    for a whole period from t = 195), at +0.353; as started at -0.016' (a rate only over RATE_PERIODS drive periods or more)."""
+    for a whole period from t = 200), at +0.353; as started at -0.016' (a rate only over RATE_PERIODS drive periods or more)."""
     (half, rate_half), (started, rate_started) = orientation_rates(case, shape)
     shortest = RATE_PERIODS * period
     words = f"{HALF_TURNED[shape]} for {half:.0f} of the window's {half + started:.0f}"
