@@ -418,42 +418,60 @@ class Coordinator {
   // Measured over the finished cases this task counts (this session and earlier ones), or the cost model's.
   double nsPerParticleStep() const { return sweepNsPerParticleStep(results_, only_, plan_.speed.ns); }
 
-  // A running case's wall seconds left: its own estimate (progress.json, from the pace of its
-  // own steps) once it has one; before that, or from a wiggle that writes none, the cost estimate
-  // less the time it has run (which reaches 0 and stays there when the case is slower than the
-  // estimate: a resumed case, a busy machine).
-  double runningCaseSecondsLeft(std::size_t c, double ns) const {
+  // A running case's wall seconds left by its own estimate (progress.json, from the pace of its own
+  // steps), once it has one.
+  std::optional<double> runningCaseOwnSecondsLeft(std::size_t c) const {
     const std::optional<RunProgress> progress = readRunProgress(plan_.cases[c].dir);
     if (progress && progress->etaSeconds >= 0.0) return progress->etaSeconds;
+    return std::nullopt;
+  }
+
+  // The cost estimate less the time it has run, for a running case without an estimate of its own
+  // (just started, or a wiggle that writes none): it reaches 0 and stays there when the case is
+  // slower than the estimate (a resumed case, a busy machine).
+  double runningCaseModelSecondsLeft(std::size_t c, double ns) const {
     const auto it = running_.find(SweepTask{SweepTask::Kind::Case, c}.encode());
     const double elapsed = it == running_.end() ? 0.0 : monotonicSeconds() - it->second;
     return std::max(0.0, estimatedRunSeconds(plan_.spec.cases[c].config, ns) - elapsed);
   }
 
+  // The ETA says what it rests on: the ns per particle-step of the cost model (or of this sweep's
+  // finished cases) when any part of it does, else the running cases' own pace, so that a machine
+  // slower than the cost table's does not read as running at the table's speed.
   std::string statusLine() const {
     const double ns = nsPerParticleStep();
     double remaining = 0.0;  // wall seconds of work left, summed over tasks
+    bool byModel = false;    // some of it from ns rather than a running case's own pace
     std::size_t left = 0, running = 0;
     for (std::size_t c = 0; c < plan_.cases.size(); ++c) {
       const RunConfig& config = plan_.spec.cases[c].config;
       if (!started_[c]) {
         ++left;
         remaining += estimatedRunSeconds(config, ns);
+        byModel = true;
       } else if (results_[c].status == CaseStatus::Running) {
         ++running;
-        remaining += runningCaseSecondsLeft(c, ns);
+        if (const std::optional<double> own = runningCaseOwnSecondsLeft(c)) {
+          remaining += *own;
+        } else {
+          remaining += runningCaseModelSecondsLeft(c, ns);
+          byModel = true;
+        }
       }
     }
     for (const std::size_t b : ownBeds_) {
       if (bedState_[b] == BedState::Waiting || bedState_[b] == BedState::Running) {
         remaining += plan_.beds[b].estimatedSeconds * ns / plan_.speed.ns;  // planned at that speed
+        byModel = true;
       }
     }
     std::string line = "[sweep] " + std::to_string(countStatus(CaseStatus::Ok)) + " done, " + std::to_string(running) +
                        " running, " + std::to_string(countStatus(CaseStatus::Failed)) + " failed, " + std::to_string(left) + " left";
     if (!ownBeds_.empty()) line += ", beds " + std::to_string(bedsMade_) + "/" + std::to_string(ownBeds_.size());
-    line += "  ETA " + formatDuration(remaining / concurrency_) + " (" + formatNumber(ns, 3) + " ns/particle-step" +
-            (countStatus(CaseStatus::Ok) == 0 ? ", estimated)" : ")");
+    line += "  ETA " + formatDuration(remaining / concurrency_) +
+            (byModel ? " (" + formatNumber(ns, 3) + " ns/particle-step" +
+                           (countStatus(CaseStatus::Ok) == 0 ? ", estimated)" : ")")
+                     : " (the running cases' own pace)");
     return line;
   }
 
