@@ -399,17 +399,24 @@ class Coordinator {
       writeTables(results_);
       return;
     }
-    // One case of several processes': the table is rebuilt from every case directory, under a lock,
-    // so that the last process to write has seen every case that finished before it (each writes
-    // its summary.json before it takes the lock).
+    // One case of several processes': the table is rebuilt under a lock, so that the last process to
+    // write has seen every other case as its own process left it: finished, from its summary.json
+    // (written before that process takes the lock); failed or interrupted, from the row that process
+    // wrote, which this process's view from its start predates.
     FileLock lock(plan_.outDir + "/.results.lock", false, true, "results.csv is being rewritten");
     std::vector<CaseResult> table = results_;
+    const std::map<std::string, CaseResult> written = readUnfinishedRows(plan_.outDir);
     for (std::size_t c = 0; c < table.size(); ++c) {
-      if (c == *only_ || !fs::exists(plan_.cases[c].dir + "/summary.json")) continue;
-      try {
-        table[c] = readCaseSummary(plan_.cases[c].dir);
-      } catch (const Error&) {
-        // Being written by its own process, or torn: it shows as before.
+      if (c == *only_) continue;
+      if (fs::exists(plan_.cases[c].dir + "/summary.json")) {
+        try {
+          table[c] = readCaseSummary(plan_.cases[c].dir);
+        } catch (const Error&) {
+          // Being written by its own process, or torn: it shows as before.
+        }
+      } else if (const auto row = written.find(plan_.spec.cases[c].name);
+                 row != written.end() && table[c].status == CaseStatus::Pending && table[c].error.empty()) {
+        table[c] = row->second;  // this process knows nothing of it since it read the plan
       }
     }
     writeTables(table);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include "core/Error.h"
@@ -250,6 +251,34 @@ std::vector<std::vector<std::string>> parseCsv(const std::string& text) {
     rows.push_back(std::move(row));
   }
   return rows;
+}
+
+std::map<std::string, CaseResult> readUnfinishedRows(const std::string& sweepDir) {
+  const std::string path = sweepDir + "/results.csv";
+  std::map<std::string, CaseResult> unfinished;
+  try {
+    if (!std::filesystem::exists(path)) return {};
+    const std::vector<std::vector<std::string>> rows = parseCsv(readFile(path));
+    if (rows.empty()) return {};
+    const std::vector<std::string>& header = rows.front();
+    const auto column = [&](const char* name) {
+      const auto it = std::find(header.begin(), header.end(), name);
+      if (it == header.end()) throw Error(path + ": no column '" + name + "'");
+      return static_cast<std::size_t>(it - header.begin());
+    };
+    const std::size_t nameAt = column("case"), statusAt = column("status"), errorAt = column("error");
+    for (std::size_t r = 1; r < rows.size(); ++r) {
+      const std::vector<std::string>& row = rows[r];
+      if (row.size() != header.size()) throw Error(path + ": row " + std::to_string(r + 1) + " is short");
+      CaseResult result;
+      result.status = caseStatusNamed(row[statusAt], path + ": row " + std::to_string(r + 1));
+      result.error = row[errorAt];
+      if (result.status != CaseStatus::Ok) unfinished[row[nameAt]] = std::move(result);
+    }
+  } catch (const Error&) {
+    return {};  // torn or foreign: the caller's own view stands
+  }
+  return unfinished;
 }
 
 void refreshSettledColumns(const std::string& sweepDir) {

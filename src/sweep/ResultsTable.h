@@ -12,6 +12,7 @@
 // Numbers of a case that is not ok are empty cells. Cells holding a comma, quote or newline are
 // quoted as RFC 4180 says.
 #include <array>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -128,6 +129,12 @@ std::string csvRow(const std::vector<std::string>& cells);
 
 // The rows of a CSV text (RFC 4180: quoted cells may hold commas, quotes and newlines).
 std::vector<std::vector<std::string>> parseCsv(const std::string& text);
+
+// The cases that sweepDir/results.csv shows unfinished (failed, running or pending), by case name,
+// with the status and error their row holds. A task of `sweep --case` writes its case's failure or
+// interruption there and nowhere else, so another task rewriting the table takes these rows over.
+// Empty when the file is missing or is not a results table that reads whole.
+std::map<std::string, CaseResult> readUnfinishedRows(const std::string& sweepDir);
 
 // Brings the vy_settled and t_settled cells of sweepDir/results.csv up to date with each ok case's
 // summary.json (after `wiggle rate --write`), inserting the two columns after vy_slope in a file

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -63,7 +64,8 @@ class CoordinatorTest : public ::testing::Test {
     ::unsetenv("FAKE_LOG");
   }
 
-  SweepOutcome sweep() {
+  // The whole sweep, or with `only` one case of it as `sweep --case` runs it.
+  SweepOutcome sweep(std::optional<std::size_t> only = std::nullopt) {
     SweepPlan plan = makeSweepPlan(loadSweepSpec(dir_ / "sweep.toml"), dir_ / "out");
     SweepOptions options;
     options.outDir = dir_ / "out";
@@ -71,7 +73,18 @@ class CoordinatorTest : public ::testing::Test {
     options.logToStderr = false;
     options.handleSignals = false;
     fs::create_directories(dir_ / "out/cases");
-    return coordinateSweep(plan, SweepRunSettings{2, 1, fake_}, options, nullptr, std::nullopt);
+    return coordinateSweep(plan, SweepRunSettings{2, 1, fake_}, options, nullptr, only);
+  }
+
+  // results.csv's status and error of each case, by case name.
+  std::map<std::string, std::pair<std::string, std::string>> tableRows() {
+    const auto rows = parseCsv(readFile(dir_ / "out/results.csv"));
+    const auto& header = rows.at(0);
+    const auto column = [&](const char* name) { return std::find(header.begin(), header.end(), name) - header.begin(); };
+    std::map<std::string, std::pair<std::string, std::string>> byCase;
+    for (std::size_t r = 1; r < rows.size(); ++r)
+      byCase[rows[r][column("case")]] = {rows[r][column("status")], rows[r][column("error")]};
+    return byCase;
   }
 
   // The stand-in's log: how many times each case started, and the most that ran at once.
@@ -124,6 +137,18 @@ TEST_F(CoordinatorTest, ASecondSweepRunsOnlyWhatDidNotFinish) {
   EXPECT_EQ(again.ok, 4u);
   EXPECT_EQ(again.failed, 1u);
   EXPECT_EQ(starts().first, (std::map<std::string, int>{{"period=2", 1}}));
+}
+
+// Two array tasks in one directory, one after the other: the second started after the first's
+// case failed, and rewrites the table; the failure, which only the first task's row records, stays.
+TEST_F(CoordinatorTest, ACaseTaskKeepsTheFailureAnotherTaskWroteOfItsCase) {
+  EXPECT_EQ(sweep(1).failed, 1u);  // period=2
+  EXPECT_EQ(tableRows().at("period=2"), std::make_pair(std::string("failed"), std::string("the run blew up at t = 3")));
+  EXPECT_EQ(sweep(0).ok, 1u);  // period=1
+  const auto rows = tableRows();
+  EXPECT_EQ(rows.at("period=1").first, "ok");
+  EXPECT_EQ(rows.at("period=2"), std::make_pair(std::string("failed"), std::string("the run blew up at t = 3")));
+  EXPECT_EQ(rows.at("period=3"), std::make_pair(std::string("pending"), std::string()));
 }
 
 }  // namespace
