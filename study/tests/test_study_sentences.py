@@ -452,6 +452,42 @@ class WhatIsLeftTest(unittest.TestCase):
         finally:
             factor_tables.straying = real
 
+    def test_every_case_begun_in_the_papers_box_has_a_row_and_the_others_are_named(self):
+        # made-up: one finished case, one carried part-way, one not begun, and one of no coupling row
+        class Case:
+            def __init__(self, name, shape, period, **keys):
+                self.row, self.keys = {"case": name}, {"intruder.shape": shape, "drive.period": period, **keys}
+
+            def get(self, key):
+                return self.keys.get(key)
+
+        done = (Case("t5", "triangle", 5.0, **{"intruder.surface": "lattice"}),)
+        carried = [Case("s3", "square", 3.0, **{"intruder.surface": "lattice"}), Case("s4", "square", 4.0)]
+        waiting = Case("t4", "triangle", 4.0, **{"intruder.surface": "lattice"})
+        reading = factor_tables.PaperBoxReading
+        sig = scatter.clock_sigma("triangle")
+        readings = {("triangle", 5.0): reading("triangle", 5.0, 5 * sig, -sig),
+                    ("square", 3.0): reading("square", 3.0, 0.06, 0.09, 364.9, 1000.0)}
+        fakes = {"committed": lambda folders: ["folder"], "load": lambda folder: done,
+                 "unfinished": lambda folder: carried, "cases_of": lambda folder, finished: tuple(carried) + (waiting,),
+                 "paper_box_coupling": lambda shape, period, changes: readings[(shape, period)]}
+        real = {name: getattr(answer_sentences, name) for name in fakes}
+        try:
+            for name, fake in fakes.items():
+                setattr(answer_sentences, name, fake)
+            lines, sources = answer_sentences.answer_paper_box_coupling({})
+        finally:
+            for name, value in real.items():
+                setattr(answer_sentences, name, value)
+        self.assertEqual(sources, ["folder"])
+        rows = [line for line in lines[2:] if line.startswith("|")]
+        self.assertEqual(len(rows), 2)
+        self.assertTrue(rows[0].startswith(f"| triangle (OS5) | 5 | the lattice body | V_y {5 * sig:+.3f} (1 bed, +5.0 se), "
+                                           "rising, as the paper; against the protocol's"), rows[0])
+        self.assertEqual(rows[1], "| square (OS2) | 3 | the lattice body | being run, so far (t = 100-364.9, not judged) "
+                                  "+0.0600 against the protocol's +0.0900 on the same bed over the same window (one bed) |")
+        self.assertTrue(lines[-1].endswith("; not begun yet: the triangle at T = 4)"), lines[-1])
+
     def test_a_coupling_change_of_a_straying_shape_says_its_standard_errors_by_that_scatter(self):
         real_straying, real_paired = factor_tables.straying, factor_tables.coupling_paired
         try:

@@ -11,9 +11,9 @@ import textwrap
 import findings
 from cases import (CLOCK_A3, CLOCK_A5, COUPLING, DEPTH_A5, PAPER_RANGE, SHAPES, SMALL_TODAY, SMALL_TODAY_WHERE,
                    T1000_BEDS, Cell, beds, beds_count, beds_text, by_period, cell_text, committed, count_range, load,
-                   mean, paper_observed, select, so_far)
-from factor_tables import (BOX_ALONE, BOX_ROW, COUPLING_CELLS, COUPLING_ROWS, PROTOCOL_CELLS, PROTOCOL_FOLDERS,
-                           PROTOCOL_ROWS, box_alone_change, change_text, coupling_change, coupling_periods,
+                   cases_of, head_lines, mean, paper_observed, row_line, select, so_far, unfinished)
+from factor_tables import (BOX_ALONE, BOX_ROW, COUPLING_CELLS, COUPLING_ROWS, PAPER_BOX_COUPLING, PROTOCOL_CELLS,
+                           PROTOCOL_FOLDERS, PROTOCOL_ROWS, box_alone_change, change_text, coupling_change, coupling_periods,
                            coupling_screen_run, most_of_it, paper_box_change, paper_box_coupling, protocol_beds,
                            protocol_change, row_where, straying)
 from findings import RESOLVED
@@ -483,20 +483,48 @@ def coupling_words(change, paper_box, bracket=""):
     """One coupling factor that moves a cell toward the paper, in words: its change on the 60 d box's
     paired beds, where it starts the shape rising there (bracket: coupling_bracket_words') and what it
     gives in the paper's own box (paper_box: a PaperBoxReading, or None)."""
-    if paper_box is None:
-        box = "not run yet"
-    elif paper_box.t_now is None:
-        shape, period = paper_box.shape, paper_box.period
-        box_diff, box_z, box_toward = paper_box_change(paper_box)
-        box = (f"V_y {beds_z_text([paper_box.vy], shape)}, {paper_reading([paper_box.vy], shape, period)}; against "
-               f"the protocol's {paper_box.base:+.4f} on the same bed, {box_diff:+.4f} ({abs(box_z):.1f} se, {box_toward})")
-    elif paper_box.vy is None:
-        box = f"being run (t = {paper_box.t_now:g} of {paper_box.duration:g} committed)"
-    else:
-        box = (f"being run, so far (t = 100-{paper_box.t_now:g}, not judged) {paper_box.vy:+.4f} against the "
-               f"protocol's {paper_box.base:+.4f} on the same bed over the same window (one bed)")
     return (f"{change.name} moves it {change.diff:+.4f} ({abs(change.z):.1f} se{change.by_runs}, toward the paper; "
-            f"{beds_count([change.paired])} paired) in the 60 d box{bracket}; in the paper's box: {box}")
+            f"{beds_count([change.paired])} paired) in the 60 d box{bracket}; in the paper's box: "
+            f"{paper_box_words(paper_box)}")
+
+
+def paper_box_words(reading):
+    """What a coupling factor gives in the paper's own box, against the protocol on the same bed (reading: a
+    PaperBoxReading, or None): judged once finished, else how far it has run and its rate so far."""
+    if reading is None:
+        return "not run yet"
+    if reading.t_now is None:
+        diff, z, toward = paper_box_change(reading)
+        return (f"V_y {beds_z_text([reading.vy], reading.shape)}, {paper_reading([reading.vy], reading.shape, reading.period)}; "
+                f"against the protocol's {reading.base:+.4f} on the same bed, {diff:+.4f} ({abs(z):.1f} se, {toward})")
+    if reading.vy is None:
+        return f"being run (t = {reading.t_now:g} of {reading.duration:g} committed)"
+    return (f"being run, so far (t = 100-{reading.t_now:g}, not judged) {reading.vy:+.4f} against the "
+            f"protocol's {reading.base:+.4f} on the same bed over the same window (one bed)")
+
+
+def answer_paper_box_coupling(spec):
+    """Every case run in the paper's own box for a coupling factor (issue 79, item 5), cell by cell, in
+    paper_box_words' words; then the cases of those sweeps not begun yet."""
+    lines = head_lines(["shape", "T", "what changes", "in the paper's box, against the protocol on the same bed"])
+    waiting = []
+    for folder in committed(PAPER_BOX_COUPLING):
+        begun = load(folder) + tuple(unfinished(folder))
+        for case in begun:
+            shape, period = case.get("intruder.shape"), float(case.get("drive.period"))
+            for label, changes in COUPLING_ROWS:
+                if all(case.get(k) == v for k, v in changes.items()):
+                    lines.append(row_line([SHAPE_NAMES[shape], f"{period:g}", label.split(" (")[0],
+                                           paper_box_words(paper_box_coupling(shape, period, changes))]))
+        names = {c.row["case"] for c in begun}
+        waiting += [f"the {c.get('intruder.shape')} at T = {float(c.get('drive.period')):g}"
+                    for c in cases_of(folder, finished=False) if c.row["case"] not in names]
+    lines += ["", "(V_y by the paper's rule over t = 100-1000 in the paper's 300 d box by its protocol, one bed a "
+              "side: the paper box's own bed of the shape, the changed body in the glued shell's place; se: standard "
+              "errors by the shape's sigma, as the per-shape answer's; a case not finished is shown by its rate so "
+              "far over t = 100 to its last committed sample once that spans 200, and not judged"
+              + (f"; not begun yet: {', '.join(waiting)}" if waiting else "") + ")"]
+    return lines, committed(PAPER_BOX_COUPLING)
 
 
 def what_moved(changes):
@@ -586,5 +614,6 @@ TABLES = [
     {"name": "readme_answer", "kind": readme_answer, "sources": CLOCK_A5 + PROTOCOL_FOLDERS, "bare": True},
     {"name": "study_answer", "kind": readme_answer, "sources": CLOCK_A5 + PROTOCOL_FOLDERS, "bare": True,
      "within": "study/"},
+    {"name": "answer_paper_box_coupling", "kind": answer_paper_box_coupling, "sources": PAPER_BOX_COUPLING},
     {"name": "depth_drive_form_words", "kind": drive_form_words, "sources": ["results/paper_depth/velocity"], "bare": True},
 ]
