@@ -17,7 +17,8 @@ and is declared in the TABLES of the module that makes it, by what it makes:
     findings_table.py    study/FINDINGS.md's table of the paper's findings, its evidence, the answer's verdicts
     table1_blocks.py     the answer's Table 1 by the paper's clock and Table 1 in the paper's own box
     factor_tables.py     the protocol block and the coupling screen
-    answer_sentences.py  the answer's sentences and the paragraph of README.md and study/README.md
+    answer_sentences.py  the answer's sentences, the paragraph of README.md and study/README.md, and the
+                         table of the coupling factors' cases in the paper's own box
 
 on cases.py (the committed results read as cases and cells), table_kinds.py (pivot, listing, ...)
 and scatter.py (one bed's sigma and a cell in its standard errors). The statistics are findings.py's,
